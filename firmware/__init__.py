@@ -1,0 +1,1 @@
+"""kinefuse.firmware: C sources for the sensor units (generated filters under generated/)."""

@@ -1,0 +1,1 @@
+"""kinefuse.host: the host tool (command line, data readers, stream decoding, benchmarks)."""

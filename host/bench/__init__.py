@@ -1,0 +1,1 @@
+"""kinefuse bench ... benchmarks."""
