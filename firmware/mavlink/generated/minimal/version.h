@@ -1,0 +1,14 @@
+/** @file
+ *  @brief MAVLink comm protocol built from minimal.xml
+ *  @see http://mavlink.org
+ */
+#pragma once
+ 
+#ifndef MAVLINK_VERSION_H
+#define MAVLINK_VERSION_H
+
+#define MAVLINK_BUILD_DATE "Mon Nov 23 2026"
+#define MAVLINK_WIRE_PROTOCOL_VERSION "2.0"
+#define MAVLINK_MAX_DIALECT_PAYLOAD_SIZE 9
+ 
+#endif // MAVLINK_VERSION_H
