@@ -1,0 +1,237 @@
+"""Declarative scenarios and the simulation run.
+
+A scenario is a JSON-friendly dict (or the :class:`Scenario` dataclass) so the same
+description drives the Python models, the host SIL and QEMU runs::
+
+    {
+      "name": "slow_rotation", "description": "...", "seed": 0,
+      "motion": {"kind": "body" | "gait" | "hinge", ...},   # see segments.py, gait.py, hinge.py
+      "sensor": {"preset": "metamotionr", "rate_hz": 100, "mag_rate_hz": 20,
+                 "gyr": {"bias_dps": [1, 1, 1]}, "acc": {...}, "mag": {...}},
+      "sensor_overrides": {"distal": {...}},   # per-sensor changes on top of "sensor"
+      "earth": {"g": 9.81, "field_uT": 49, "dip_deg": 64, "declination_deg": 0},
+      "timing": {"jitter_s": 0, "stamp_jitter_s": 0, "stamp_resolution_s": 0,
+                 "clock_drift_ppm": 0, "drop_prob": 0, "dup_prob": 0, "gaps_s": []},
+      "disturbances": [{"type": "field_scale", ...}, ...],   # see disturbances.py
+      "duration_s": null                       # default: the motion's duration
+    }
+
+:func:`run` returns one :class:`Recording` per sensor; :func:`simulate` one recording.
+Randomness: ``numpy.random.SeedSequence(seed)`` spawns independent streams for the motion,
+the disturbances and each sensor (timing, gyr, acc, mag), so the same seed gives identical
+arrays and the streams do not shift when a scenario gains a sensor or a disturbance.
+"""
+from __future__ import annotations
+
+import copy
+import json
+from dataclasses import asdict, dataclass, field
+
+import numpy as np
+
+from . import quat as Q
+from .disturbances import Disturbances
+from .earth import Earth
+from .gait import gait_rig
+from .hinge import hinge_rig
+from .presets import preset
+from .recording import Recording
+from .rig import Rig, body_rig
+from .segments import SpecError, take
+from .timing import Timing, sample_count
+
+RIGS = {"body": body_rig, "gait": gait_rig, "hinge": hinge_rig}
+
+
+@dataclass
+class Scenario:
+    name: str
+    motion: dict
+    description: str = ""
+    sensor: dict = field(default_factory=lambda: {"preset": "metamotionr"})
+    sensor_overrides: dict = field(default_factory=dict)
+    earth: dict = field(default_factory=dict)
+    timing: dict = field(default_factory=dict)
+    disturbances: list = field(default_factory=list)
+    duration_s: float | None = None
+    seed: int = 0
+
+    @classmethod
+    def from_dict(cls, d: dict) -> "Scenario":
+        take(d, "scenario", ["name", "motion"], list(cls.__dataclass_fields__))
+        sc = cls(**copy.deepcopy(d))
+        sc.validate()
+        return sc
+
+    @classmethod
+    def from_json(cls, text: str) -> "Scenario":
+        try:
+            d = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise SpecError(f"scenario JSON: {exc}") from None
+        return cls.from_dict(d)
+
+    def to_dict(self) -> dict:
+        return copy.deepcopy(asdict(self))
+
+    def to_json(self, indent: int | None = 2) -> str:
+        return json.dumps(self.to_dict(), indent=indent)
+
+    def replace(self, **changes) -> "Scenario":
+        d = self.to_dict()
+        d.update(copy.deepcopy(changes))
+        return Scenario.from_dict(d)
+
+    def validate(self) -> None:
+        """Build everything once (cheap): raises SpecError with a one-line message."""
+        build(self)
+
+
+@dataclass
+class Built:
+    rig: Rig
+    sensors: dict          # sensor name → SensorModel
+    earth: Earth
+    timing: Timing
+    disturbances: Disturbances
+    duration: float
+
+
+def _streams(seed: int):
+    root = np.random.SeedSequence(int(seed))
+    motion, dist, sensors = root.spawn(3)
+    return motion, dist, sensors
+
+
+def build(sc: Scenario) -> Built:
+    if not isinstance(sc.motion, dict) or sc.motion.get("kind") not in RIGS:
+        got = sc.motion.get("kind") if isinstance(sc.motion, dict) else sc.motion
+        raise SpecError(f"motion.kind: unknown {got!r}; known: {', '.join(RIGS)}")
+    ss_motion, ss_dist, _ = _streams(sc.seed)
+    rig = RIGS[sc.motion["kind"]](sc.motion, np.random.default_rng(ss_motion))
+    base = dict(sc.sensor or {})
+    model = preset(base.get("preset", "metamotionr")).updated(base, "sensor")
+    if not isinstance(sc.sensor_overrides, dict):
+        raise SpecError("sensor_overrides: expected an object {sensor name: overrides}")
+    unknown = sorted(set(sc.sensor_overrides) - set(rig.tracks))
+    if unknown:
+        raise SpecError(f"sensor_overrides: no sensor named {', '.join(unknown)}; "
+                        f"this rig has {', '.join(rig.tracks)}")
+    sensors = {}
+    for name in rig.tracks:
+        ov = dict(sc.sensor_overrides.get(name, {}))
+        if "preset" in ov:
+            raise SpecError(f"sensor_overrides.{name}: a per-sensor preset is not supported")
+        sensors[name] = model.updated(ov, f"sensor_overrides.{name}")
+    duration = rig.duration if sc.duration_s is None else float(sc.duration_s)
+    if not duration > 0:
+        raise SpecError("duration_s: must be > 0")
+    return Built(rig, sensors, Earth.from_dict(sc.earth), Timing.from_dict(sc.timing),
+                 Disturbances.from_list(sc.disturbances, np.random.default_rng(ss_dist)), duration)
+
+
+def run(scenario, seed: int | None = None, **changes) -> dict:
+    """Simulate every sensor of ``scenario`` (a Scenario, a dict or a library name).
+
+    ``seed`` and any other Scenario field given as keyword (e.g. ``sensor={...}``) override
+    the scenario's.  Returns {sensor name: Recording}.
+    """
+    sc = as_scenario(scenario)
+    if seed is not None:
+        changes["seed"] = int(seed)
+    if changes:
+        sc = sc.replace(**changes)
+    b = build(sc)
+    _, _, ss_sensors = _streams(sc.seed)
+    per_sensor = ss_sensors.spawn(len(b.rig.tracks))
+    return {name: _simulate_sensor(sc, b, name, track, ss)
+            for (name, track), ss in zip(b.rig.tracks.items(), per_sensor)}
+
+
+def simulate(scenario, seed: int | None = None, sensor: str | None = None, **changes) -> Recording:
+    """One sensor's Recording; ``sensor`` names it when the rig has several."""
+    sc = as_scenario(scenario)
+    recs = run(sc, seed, **changes)
+    if sensor is None:
+        if len(recs) != 1:
+            raise SpecError(f"scenario {sc.name!r} has sensors {', '.join(recs)}; pass sensor=")
+        return next(iter(recs.values()))
+    if sensor not in recs:
+        raise SpecError(f"scenario {sc.name!r} has no sensor {sensor!r}; it has {', '.join(recs)}")
+    return recs[sensor]
+
+
+def as_scenario(x) -> Scenario:
+    if isinstance(x, Scenario):
+        return x
+    if isinstance(x, dict):
+        return Scenario.from_dict(x)
+    if isinstance(x, str):
+        from .library import scenario as named
+        return named(x)
+    raise SpecError(f"expected a Scenario, dict or scenario name, got {type(x).__name__}")
+
+
+def _simulate_sensor(sc: Scenario, b: Built, name: str, track, ss) -> Recording:
+    model = b.sensors[name]
+    timing_ss, gyr_ss, acc_ss, mag_ss = ss.spawn(4)
+    trng = np.random.default_rng(timing_ss)
+    fs, fm = model.rate_hz, model.mag_rate
+    n = sample_count(b.duration, fs)
+    m = sample_count(b.duration, fm)
+    # draw order is fixed: instants, mag instants, stamps, delivery
+    t_true = b.timing.instants(n, fs, trng)
+    t_mag = b.timing.instants(m, fm, trng)
+    stamps = b.timing.stamps(t_true, trng)
+    src = b.timing.delivered(n, fs, trng)
+
+    k = track.evaluate(t_true)
+    g_up = b.earth.gravity_up
+    f_earth = k.a + g_up
+    acc_true = Q.rotate_inv(k.q, f_earth)
+    gyr_true = k.w
+    d_acc, d_gyr, inertial_on = b.disturbances.inertial_add(t_true)
+    gyr = model.gyr.apply(gyr_true + d_gyr, t_true, fs, np.random.default_rng(gyr_ss))
+    acc = model.acc.apply(acc_true + d_acc, t_true, fs, np.random.default_rng(acc_ss))
+
+    # magnetometer at its own instants, then held at the acc/gyro samples
+    km = track.evaluate(t_mag)
+    field_e = b.earth.field
+    m_body = Q.rotate_inv(km.q, field_e + b.disturbances.mag_earth_add(t_mag, km.p, field_e))
+    m_body = b.disturbances.mag_body_apply(t_mag, m_body)
+    mag_samples = model.mag.apply(m_body, t_mag, fm, np.random.default_rng(mag_ss))
+    j = np.searchsorted(t_mag, t_true, side="right") - 1   # latest mag sample taken by then
+    j = np.maximum(j, 0)
+    mag = mag_samples[j]
+
+    mag_true = Q.rotate_inv(k.q, np.broadcast_to(field_e, k.q.shape[:-1] + (3,)))
+    mag_dist = b.disturbances.mag_mask(t_true, k.p, field_e)
+    moving = b.rig.moving(t_true)
+
+    # emitted stream
+    js = j[src]
+    valid = np.ones(len(src), dtype=bool)
+    valid[1:] = js[1:] != js[:-1]
+    if not model.mag.present:
+        valid[:] = False
+    t_out = stamps[src]
+    dt = np.empty(len(src))
+    if len(src):
+        dt[0] = 1.0 / fs
+        dt[1:] = np.diff(t_out)
+    truth = {"gyr_true": gyr_true[src], "acc_true": acc_true[src], "mag_true": mag_true[src],
+             "mag_disturbed": mag_dist[src], "acc_disturbed": inertial_on[src]}
+    for jn, sig in b.rig.joints.items():
+        truth[jn] = sig(t_true)[0][src]
+    meta = {
+        "scenario": sc.name, "sensor": name, "seed": int(sc.seed), "preset": model.name,
+        "rate_hz": fs, "mag_rate_hz": fm, "duration_s": b.duration,
+        "units": {"t": "s", "gyr": "rad/s", "acc": "m/s^2", "mag": "uT", "q_true": "w,x,y,z sensor->earth ENU",
+                  "pos_true": "m ENU", "joint angles": "rad"},
+        "lsb": {"acc": model.acc.lsb, "gyr": model.gyr.lsb, "mag": model.mag.lsb},
+        "earth": b.earth.to_dict(), "sensor_model": model.to_dict(), "rig": b.rig.info,
+        "scenario_spec": sc.to_dict(),
+    }
+    return Recording(t=t_out, dt=dt, gyr=gyr[src], acc=acc[src], mag=mag[src], mag_valid=valid,
+                     q_true=k.q[src], movement=moving[src], pos_true=k.p[src], t_true=t_true[src],
+                     index=src.astype(np.int64), truth=truth, meta=meta)

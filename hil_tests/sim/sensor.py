@@ -1,0 +1,187 @@
+"""Sensor error model, one instance per channel (gyroscope, accelerometer, magnetometer).
+
+For true input x (sensor frame, SI: rad/s, m/s², µT) at sample instants t:
+
+    mag only:  x ← soft_iron · x + hard_iron
+    y = misalignment · diag(scale) · x + bias + b_rw(t) + n,     n ~ N(0, σ²)
+    y ← clip(y, −range, +range);   y ← lsb · round(y / lsb)  (then kept inside ±range)
+
+* σ is the per-axis white-noise standard deviation measured at ``noise_ref_rate_hz``; at
+  another output rate f it becomes σ·√(f / f_ref) (constant noise density, i.e. the sensor's
+  bandwidth follows its output rate).  ``noise_ref_rate_hz = None`` keeps σ fixed.
+* b_rw is a bias random walk with σ_rw (unit/√s): increments N(0, σ_rw²·Δt).
+* All randomness comes from the numpy Generator handed in: same seed, same arrays.
+
+Dict form (scenario files) names units in the keys:
+  gyr: noise_dps, bias_dps, bias_rw_dps_per_rt_s, range_dps, lsb_dps
+  acc: noise_mg, bias_mg, bias_rw_mg_per_rt_s, range_g, lsb_mg
+  mag: noise_uT, bias_uT, bias_rw_uT_per_rt_s, range_uT, lsb_uT, hard_iron_uT, soft_iron, present
+  all: scale (per-axis factor, 1 = exact), misalignment (3×3), noise_ref_rate_hz
+A scalar is broadcast to the three axes.  1 g (unit) = 9.80665 m/s² (standard gravity).
+"""
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .segments import SpecError, take
+
+G_N = 9.80665  # m/s² per g, the unit (independent of the simulated local gravity)
+
+# key suffix → (internal field, factor from the dict unit to SI)
+_UNITS = {
+    "gyr": {"dps": np.pi / 180.0, "range": ("range_dps", np.pi / 180.0)},
+    "acc": {"mg": G_N / 1000.0, "range": ("range_g", G_N)},
+    "mag": {"uT": 1.0, "range": ("range_uT", 1.0)},
+}
+
+
+def _v3(x, where):
+    v = np.broadcast_to(np.asarray(x, dtype=float), (3,)).copy()
+    if np.any(np.isnan(v)):
+        raise SpecError(f"{where}: NaN not allowed")
+    return v
+
+
+@dataclass
+class ChannelModel:
+    """Error model of one 3-axis channel, SI units of that channel (rad/s, m/s², µT)."""
+    kind: str                                   # "gyr", "acc" or "mag"
+    noise_std: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    noise_ref_rate_hz: float | None = None
+    bias: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    bias_rw: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    scale: np.ndarray = field(default_factory=lambda: np.ones(3))
+    misalignment: np.ndarray = field(default_factory=lambda: np.eye(3))
+    range: np.ndarray = field(default_factory=lambda: np.full(3, np.inf))
+    lsb: float = 0.0
+    hard_iron: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    soft_iron: np.ndarray = field(default_factory=lambda: np.eye(3))
+    present: bool = True
+
+    def noise_at(self, rate_hz: float) -> np.ndarray:
+        """Per-axis white-noise std (SI) at output rate ``rate_hz``."""
+        if self.noise_ref_rate_hz is None:
+            return self.noise_std.copy()
+        return self.noise_std * np.sqrt(rate_hz / self.noise_ref_rate_hz)
+
+    def apply(self, x: np.ndarray, t: np.ndarray, rate_hz: float, rng: np.random.Generator) -> np.ndarray:
+        """Measured values for true input x (N,3) at instants t (N,), SI units."""
+        x = np.asarray(x, dtype=float)
+        n = len(x)
+        # draw every random stream unconditionally, in a fixed order, so that switching one
+        # error term on or off does not change the others' realisation
+        white = rng.standard_normal((n, 3))
+        steps = rng.standard_normal((n, 3))
+        if not self.present:
+            return np.full((n, 3), np.nan)
+        if self.kind == "mag":
+            x = x @ self.soft_iron.T + self.hard_iron
+        y = (x * self.scale) @ self.misalignment.T + self.bias
+        if np.any(self.bias_rw):
+            dt = np.diff(np.asarray(t, dtype=float), prepend=float(t[0]) if n else 0.0)
+            y = y + np.cumsum(steps * np.sqrt(np.maximum(dt, 0.0))[:, None], axis=0) * self.bias_rw
+        y = y + white * self.noise_at(rate_hz)
+        y = np.clip(y, -self.range, self.range)
+        if self.lsb > 0:
+            top = np.floor(self.range / self.lsb)
+            y = np.clip(np.round(y / self.lsb), -top, top) * self.lsb
+        return y
+
+    # ---- dict form -----------------------------------------------------------------
+    def updated(self, d: dict, where: str) -> "ChannelModel":
+        """A copy with the dict-form overrides applied (units named in the keys)."""
+        u = _UNITS[self.kind]
+        unit = next(k for k in u if k != "range")
+        f = u[unit]
+        rkey, rf = u["range"]
+        keys = {f"noise_{unit}": ("noise_std", f), f"bias_{unit}": ("bias", f),
+                f"bias_rw_{unit}_per_rt_s": ("bias_rw", f), rkey: ("range", rf),
+                f"lsb_{unit}": ("lsb", f), "scale": ("scale", 1.0)}
+        extra = ["misalignment", "noise_ref_rate_hz"]
+        if self.kind == "mag":
+            keys["hard_iron_uT"] = ("hard_iron", 1.0)
+            extra += ["soft_iron", "present"]
+        take(d, where, [], list(keys) + extra)
+        c = copy.deepcopy(self)
+        for k, v in d.items():
+            w = f"{where}.{k}"
+            if k in keys:
+                name, fac = keys[k]
+                if name == "lsb":
+                    c.lsb = float(v) * fac
+                    if c.lsb < 0:
+                        raise SpecError(f"{w}: must be >= 0")
+                else:
+                    val = _v3(v, w) * fac
+                    if name in ("range",) and np.any(val <= 0):
+                        raise SpecError(f"{w}: must be > 0")
+                    setattr(c, name, val)
+            elif k in ("misalignment", "soft_iron"):
+                m = np.asarray(v, dtype=float)
+                if m.shape != (3, 3) or not np.all(np.isfinite(m)):
+                    raise SpecError(f"{w}: expected a finite 3×3 matrix")
+                setattr(c, k, m)
+            elif k == "noise_ref_rate_hz":
+                c.noise_ref_rate_hz = None if v is None else float(v)
+            elif k == "present":
+                c.present = bool(v)
+        return c
+
+    def to_dict(self) -> dict:
+        """Dict form (units named in the keys); inverse of ``updated`` on a blank channel."""
+        u = _UNITS[self.kind]
+        unit = next(k for k in u if k != "range")
+        f = u[unit]
+        rkey, rf = u["range"]
+
+        def lst(a, fac):
+            return [float(x) / fac if np.isfinite(x) else None for x in np.asarray(a)]
+        d = {f"noise_{unit}": lst(self.noise_std, f), "noise_ref_rate_hz": self.noise_ref_rate_hz,
+             f"bias_{unit}": lst(self.bias, f), f"bias_rw_{unit}_per_rt_s": lst(self.bias_rw, f),
+             "scale": lst(self.scale, 1.0), "misalignment": self.misalignment.tolist(),
+             rkey: lst(self.range, rf), f"lsb_{unit}": self.lsb / f}
+        if self.kind == "mag":
+            d.update(hard_iron_uT=lst(self.hard_iron, 1.0), soft_iron=self.soft_iron.tolist(),
+                     present=self.present)
+        return d
+
+
+@dataclass
+class SensorModel:
+    """A complete IMU: three channels plus its output rates (Hz)."""
+    name: str
+    gyr: ChannelModel
+    acc: ChannelModel
+    mag: ChannelModel
+    rate_hz: float = 100.0          # accelerometer and gyroscope
+    mag_rate_hz: float | None = None  # magnetometer (held between its samples); None = rate_hz
+    source: str = ""
+
+    def updated(self, d: dict | None, where: str = "sensor") -> "SensorModel":
+        d = dict(d or {})
+        take(d, where, [], ["preset", "gyr", "acc", "mag", "rate_hz", "mag_rate_hz"])
+        c = copy.deepcopy(self)
+        for ch in ("gyr", "acc", "mag"):
+            if ch in d:
+                setattr(c, ch, getattr(c, ch).updated(d[ch], f"{where}.{ch}"))
+        for k in ("rate_hz", "mag_rate_hz"):
+            if k in d and d[k] is not None:
+                try:
+                    v = float(d[k])
+                except (TypeError, ValueError):
+                    raise SpecError(f"{where}.{k}: expected a number") from None
+                if not (v > 0 and np.isfinite(v)):
+                    raise SpecError(f"{where}.{k}: must be > 0")
+                setattr(c, k, v)
+        return c
+
+    @property
+    def mag_rate(self) -> float:
+        return self.rate_hz if self.mag_rate_hz is None else self.mag_rate_hz
+
+    def to_dict(self) -> dict:
+        return {"preset": self.name, "rate_hz": self.rate_hz, "mag_rate_hz": self.mag_rate_hz,
+                "gyr": self.gyr.to_dict(), "acc": self.acc.to_dict(), "mag": self.mag.to_dict()}
