@@ -21,6 +21,7 @@ COMMAND_MODULES = [
     "kinefuse.host.commands.demo_cmd",
     "kinefuse.host.commands.plot_cmd",
     "kinefuse.host.commands.codegen_cmd",
+    "kinefuse.hil_tests.sim.cli_cmd",
 ]
 # Modules providing `kinefuse bench <name>` sub-commands.
 BENCH_MODULES = [

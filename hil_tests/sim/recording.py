@@ -32,9 +32,9 @@ from kinefuse.host.errors import KinefuseError
 
 _ARRAYS = ("t", "dt", "gyr", "acc", "mag", "mag_valid", "q_true", "movement", "pos_true", "t_true", "index")
 
-# C layout of firmware/app/kf_hal.h's kf_raw_sample (field order and sizes)
+# C layout of firmware/app/kf_hal.h's kf_raw_sample (field order, sizes, padding: 24 bytes)
 RAW_DTYPE = np.dtype([("time_us", "<u4"), ("acc", "<i2", (3,)), ("gyr", "<i2", (3,)),
-                      ("mag", "<i2", (3,)), ("mag_valid", "u1")])
+                      ("mag", "<i2", (3,)), ("mag_valid", "u1")], align=True)
 
 
 @dataclass
@@ -94,7 +94,7 @@ class Recording:
             if not q > 0:
                 raise KinefuseError(f"no LSB for {ch}: the sensor model has none; pass lsb={{'{ch}': ...}}")
             c = np.round(x / q)
-            if np.any(np.abs(c) > 32767) or np.any(np.isnan(c)):
+            if np.any(c > 32767) or np.any(c < -32768) or np.any(np.isnan(c)):
                 raise KinefuseError(f"{ch} does not fit int16 counts with LSB {q:g}")
             out[ch] = c.astype(np.int16)
         out["mag_valid"] = self.mag_valid.astype(np.uint8)

@@ -4,7 +4,8 @@ For true input x (sensor frame, SI: rad/s, m/s², µT) at sample instants t:
 
     mag only:  x ← soft_iron · x + hard_iron
     y = misalignment · diag(scale) · x + bias + b_rw(t) + n,     n ~ N(0, σ²)
-    y ← clip(y, −range, +range);   y ← lsb · round(y / lsb)  (then kept inside ±range)
+    y ← clip(y, −range, +range);   y ← lsb · round(y / lsb), counts kept inside ±range and
+                                    inside the signed ``bits``-bit word (16: −32768…32767)
 
 * σ is the per-axis white-noise standard deviation measured at ``noise_ref_rate_hz``; at
   another output rate f it becomes σ·√(f / f_ref) (constant noise density, i.e. the sensor's
@@ -16,7 +17,7 @@ Dict form (scenario files) names units in the keys:
   gyr: noise_dps, bias_dps, bias_rw_dps_per_rt_s, range_dps, lsb_dps
   acc: noise_mg, bias_mg, bias_rw_mg_per_rt_s, range_g, lsb_mg
   mag: noise_uT, bias_uT, bias_rw_uT_per_rt_s, range_uT, lsb_uT, hard_iron_uT, soft_iron, present
-  all: scale (per-axis factor, 1 = exact), misalignment (3×3), noise_ref_rate_hz
+  all: scale (per-axis factor, 1 = exact), misalignment (3×3), noise_ref_rate_hz, bits
 A scalar is broadcast to the three axes.  1 g (unit) = 9.80665 m/s² (standard gravity).
 """
 from __future__ import annotations
@@ -57,6 +58,7 @@ class ChannelModel:
     misalignment: np.ndarray = field(default_factory=lambda: np.eye(3))
     range: np.ndarray = field(default_factory=lambda: np.full(3, np.inf))
     lsb: float = 0.0
+    bits: int = 16                              # signed output word when lsb > 0
     hard_iron: np.ndarray = field(default_factory=lambda: np.zeros(3))
     soft_iron: np.ndarray = field(default_factory=lambda: np.eye(3))
     present: bool = True
@@ -86,8 +88,11 @@ class ChannelModel:
         y = y + white * self.noise_at(rate_hz)
         y = np.clip(y, -self.range, self.range)
         if self.lsb > 0:
-            top = np.floor(self.range / self.lsb)
-            y = np.clip(np.round(y / self.lsb), -top, top) * self.lsb
+            # the count range is the smaller of the full scale and the signed output word
+            word = float(2 ** (self.bits - 1))
+            top = np.minimum(np.floor(self.range / self.lsb), word - 1)
+            bottom = np.minimum(np.floor(self.range / self.lsb), word)
+            y = np.clip(np.round(y / self.lsb), -bottom, top) * self.lsb
         return y
 
     # ---- dict form -----------------------------------------------------------------
@@ -100,7 +105,7 @@ class ChannelModel:
         keys = {f"noise_{unit}": ("noise_std", f), f"bias_{unit}": ("bias", f),
                 f"bias_rw_{unit}_per_rt_s": ("bias_rw", f), rkey: ("range", rf),
                 f"lsb_{unit}": ("lsb", f), "scale": ("scale", 1.0)}
-        extra = ["misalignment", "noise_ref_rate_hz"]
+        extra = ["misalignment", "noise_ref_rate_hz", "bits"]
         if self.kind == "mag":
             keys["hard_iron_uT"] = ("hard_iron", 1.0)
             extra += ["soft_iron", "present"]
@@ -124,6 +129,10 @@ class ChannelModel:
                 if m.shape != (3, 3) or not np.all(np.isfinite(m)):
                     raise SpecError(f"{w}: expected a finite 3×3 matrix")
                 setattr(c, k, m)
+            elif k == "bits":
+                c.bits = int(v)
+                if not 2 <= c.bits <= 32:
+                    raise SpecError(f"{w}: must be in 2..32")
             elif k == "noise_ref_rate_hz":
                 c.noise_ref_rate_hz = None if v is None else float(v)
             elif k == "present":
@@ -142,7 +151,7 @@ class ChannelModel:
         d = {f"noise_{unit}": lst(self.noise_std, f), "noise_ref_rate_hz": self.noise_ref_rate_hz,
              f"bias_{unit}": lst(self.bias, f), f"bias_rw_{unit}_per_rt_s": lst(self.bias_rw, f),
              "scale": lst(self.scale, 1.0), "misalignment": self.misalignment.tolist(),
-             rkey: lst(self.range, rf), f"lsb_{unit}": self.lsb / f}
+             rkey: lst(self.range, rf), f"lsb_{unit}": self.lsb / f, "bits": self.bits}
         if self.kind == "mag":
             d.update(hard_iron_uT=lst(self.hard_iron, 1.0), soft_iron=self.soft_iron.tolist(),
                      present=self.present)
