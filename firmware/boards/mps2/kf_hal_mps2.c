@@ -1,0 +1,125 @@
+/*
+ * kf_hal_mps2.c - firmware/app/kf_hal.h on QEMU MPS2 (AN385 / AN386).
+ *
+ * UART0 is the link to the host (QEMU's first -serial: pty or TCP).  The microsecond clock
+ * is SysTick on the 25 MHz CPU clock with a 1 ms interrupt, because QEMU has no DWT CYCCNT;
+ * under QEMU it follows host time, so it measures nothing about the emulated CPU's speed.
+ * Storage is RAM in .noinit: it survives kf_hal_reboot() but not a power cycle (a new QEMU).
+ * The board's state lives in this file's statics: one board, one instance.
+ */
+#include <stdint.h>
+#include <string.h>
+
+#include "kf_hal.h"
+#include "mps2.h"
+#include "uart_cmsdk.h"
+
+#define KF_UART_BAUD       115200u
+#define KF_TICKS_PER_MS    (MPS2_SYSCLK_HZ / 1000u)
+#define KF_TICKS_PER_US    (MPS2_SYSCLK_HZ / 1000000u)
+#define KF_STORAGE_BYTES   4096u
+#define KF_STORAGE_MAGIC   0x4B465354u   /* "KFST": storage was initialised since power-up */
+
+typedef struct {
+    uint32_t magic;
+    uint8_t bytes[KF_STORAGE_BYTES];
+} kf_mps2_storage;
+
+static volatile uint32_t g_millis;   /* incremented by SysTick_Handler */
+static kf_mps2_storage g_storage __attribute__((section(".noinit")));
+
+#define KF_UART0 ((kf_cmsdk_uart_regs *)MPS2_UART0_BASE)
+
+void SysTick_Handler(void)
+{
+    g_millis = g_millis + 1u;
+}
+
+void kf_hal_init(void)
+{
+    kf_cmsdk_uart_init(KF_UART0, MPS2_SYSCLK_HZ, KF_UART_BAUD);
+
+    g_millis = 0u;
+    SCS_SYST_CSR = 0u;
+    SCS_SYST_RVR = KF_TICKS_PER_MS - 1u;
+    SCS_SYST_CVR = 0u;
+    SCS_SYST_CSR = SYST_CSR_CLKSOURCE | SYST_CSR_TICKINT | SYST_CSR_ENABLE;
+
+    if (g_storage.magic != KF_STORAGE_MAGIC) {
+        memset(g_storage.bytes, 0xFF, sizeof g_storage.bytes);   /* like erased flash */
+        g_storage.magic = KF_STORAGE_MAGIC;
+    }
+}
+
+uint32_t kf_hal_micros(void)
+{
+    uint32_t ms;
+    uint32_t ticks_left;
+    /* Re-read when the 1 ms interrupt fired between reading the two halves. */
+    do {
+        ms = g_millis;
+        ticks_left = SCS_SYST_CVR;
+    } while (ms != g_millis);
+    uint32_t elapsed = (KF_TICKS_PER_MS - 1u) - ticks_left;
+    return ms * 1000u + elapsed / KF_TICKS_PER_US;
+}
+
+int32_t kf_hal_uart_read(uint8_t *buf, int32_t max)
+{
+    int32_t n = 0;
+    while (n < max && kf_cmsdk_uart_getc(KF_UART0, &buf[n]) != 0) {
+        n++;
+    }
+    return n;
+}
+
+int32_t kf_hal_uart_write(const uint8_t *buf, int32_t len)
+{
+    for (int32_t i = 0; i < len; i++) {
+        kf_cmsdk_uart_putc(KF_UART0, buf[i]);
+    }
+    return len < 0 ? 0 : len;
+}
+
+int kf_hal_sensor_read(kf_raw_sample *out)
+{
+    (void)out;   /* no sensor on this board: samples come over the link */
+    return 0;
+}
+
+uint32_t kf_hal_storage_size(void)
+{
+    return KF_STORAGE_BYTES;
+}
+
+static int storage_range_ok(uint32_t offset, uint32_t len)
+{
+    return offset <= KF_STORAGE_BYTES && len <= KF_STORAGE_BYTES - offset;
+}
+
+int kf_hal_storage_read(uint32_t offset, void *buf, uint32_t len)
+{
+    if (!storage_range_ok(offset, len) || (buf == 0 && len != 0u)) {
+        return -1;
+    }
+    memcpy(buf, &g_storage.bytes[offset], len);
+    return 0;
+}
+
+int kf_hal_storage_write(uint32_t offset, const void *buf, uint32_t len)
+{
+    if (!storage_range_ok(offset, len) || (buf == 0 && len != 0u)) {
+        return -1;
+    }
+    memcpy(&g_storage.bytes[offset], buf, len);
+    return 0;
+}
+
+void kf_hal_reboot(void)
+{
+    __asm__ volatile("dsb" ::: "memory");
+    SCS_AIRCR = AIRCR_VECTKEY | AIRCR_SYSRESETREQ;
+    __asm__ volatile("dsb" ::: "memory");
+    for (;;) {
+    }
+}
