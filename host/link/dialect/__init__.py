@@ -42,7 +42,9 @@ def dialect_hash(mod=None) -> int:
     h = hashlib.sha256()
     for msgid in sorted(mod.mavlink_map):
         c = mod.mavlink_map[msgid]
-        fields = ";".join(f"{t}:{n}:{a}" for n, t, a in zip(c.fieldnames, c.fieldtypes, c.array_lengths))
+        types = dict(zip(c.fieldnames, c.fieldtypes))        # fieldtypes: XML order
+        lengths = dict(zip(c.ordered_fieldnames, c.array_lengths))  # array_lengths: wire order
+        fields = ";".join(f"{types[n]}:{n}:{lengths[n]}" for n in c.ordered_fieldnames)
         h.update(f"{msgid}:{c.msgname}:{c.crc_extra}:{fields}\n".encode())
     return int.from_bytes(h.digest()[:4], "big")
 
