@@ -1,0 +1,247 @@
+"""How an estimator is declared, traced and run as the float64 reference.
+
+An estimator is a class with
+
+* ``name`` and a docstring,
+* ``inputs``: an :class:`InputSpec` (the per-sample input record; shared specs such as the IMU
+  sample let the firmware feed any filter),
+* ``params``: :class:`Param` (runtime settings with units, defaults and allowed ranges),
+* ``state``: :class:`Var` (the filter state, with its physical range and initial value),
+* ``outputs``: :class:`Var`,
+* ``step(self, x, u, p)``: one filter step written with :mod:`kinefuse.codegen.scalar`.  ``x``,
+  ``u`` and ``p`` give attribute access to state, inputs and parameters (a scalar for size-1
+  variables, a tuple otherwise); it returns ``(next_state: dict, outputs: dict)``.
+
+Ranges are part of the contract: they are what the fixed-point path derives its Q formats from,
+and values outside an input's range are rejected by the filters.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+from types import SimpleNamespace
+from typing import Any, ClassVar
+
+import numpy as np
+
+from kinefuse.codegen.ir import BOOL, INT, REAL, Graph
+from kinefuse.codegen.scalar import Sym
+
+
+@dataclasses.dataclass(frozen=True)
+class Var:
+    """A typed, ranged variable: a field of the input record, a state variable or an output."""
+    name: str
+    size: int = 1
+    lo: float = -1.0
+    hi: float = 1.0
+    unit: str = ""
+    doc: str = ""
+    type: str = REAL
+    init: Any = 0.0          # initial value (state only): scalar or tuple of `size`
+
+    def init_values(self) -> tuple:
+        v = self.init if isinstance(self.init, (tuple, list)) else (self.init,) * self.size
+        if len(v) != self.size:
+            raise ValueError(f"{self.name}: init has {len(v)} values, size is {self.size}")
+        return tuple(v)
+
+
+@dataclasses.dataclass(frozen=True)
+class Param:
+    """A runtime parameter with physical meaning."""
+    name: str
+    default: float
+    unit: str
+    lo: float
+    hi: float
+    doc: str
+    type: str = REAL
+
+    def as_var(self) -> Var:
+        return Var(self.name, 1, self.lo, self.hi, self.unit, self.doc, self.type, self.default)
+
+
+@dataclasses.dataclass(frozen=True)
+class InputSpec:
+    """The input record of one step.  Specs with the same name must be identical (they become one
+    C struct that several filters share)."""
+    name: str
+    fields: tuple[Var, ...]
+    doc: str = ""
+
+    def field(self, name: str) -> Var:
+        for f in self.fields:
+            if f.name == name:
+                return f
+        raise KeyError(name)
+
+
+class Estimator:
+    """Base class of every estimator (see module docstring)."""
+
+    name: ClassVar[str] = ""
+    title: ClassVar[str] = ""
+    inputs: ClassVar[InputSpec]
+    params: ClassVar[tuple[Param, ...]] = ()
+    state: ClassVar[tuple[Var, ...]] = ()
+    outputs: ClassVar[tuple[Var, ...]] = ()
+    # name -> {param: value}: published parameter sets users can ask for by name
+    presets: ClassVar[dict[str, dict[str, float]]] = {}
+
+    def step(self, x, u, p):  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    # -- helpers ----------------------------------------------------------------------------
+    @classmethod
+    def param(cls, name: str) -> Param:
+        for p in cls.params:
+            if p.name == name:
+                return p
+        raise KeyError(name)
+
+    @classmethod
+    def default_params(cls) -> dict[str, float]:
+        return {p.name: p.default for p in cls.params}
+
+    @classmethod
+    def resolve_params(cls, overrides: dict[str, float] | None = None,
+                       preset: str | None = None) -> dict[str, float]:
+        """Defaults, then a preset, then explicit overrides; every value range-checked."""
+        values = cls.default_params()
+        if preset is not None:
+            if preset not in cls.presets:
+                raise ValueError(f"{cls.name} has no preset {preset!r} "
+                                 f"(available: {', '.join(cls.presets) or 'none'})")
+            values.update(cls.presets[preset])
+        for k, v in (overrides or {}).items():
+            if k not in values:
+                raise ValueError(f"{cls.name} has no parameter {k!r} "
+                                 f"(parameters: {', '.join(values) or 'none'})")
+            values[k] = v
+        for p in cls.params:
+            v = values[p.name]
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and p.lo <= v <= p.hi):
+                raise ValueError(f"{cls.name}: parameter {p.name}={v!r} outside "
+                                 f"[{p.lo:g}, {p.hi:g}] {p.unit}")
+        return values
+
+
+def _ns(vars_: tuple[Var, ...], values: dict[str, tuple]) -> SimpleNamespace:
+    return SimpleNamespace(**{v.name: values[v.name][0] if v.size == 1 else tuple(values[v.name])
+                              for v in vars_})
+
+
+def _flatten(est_name: str, what: str, decl: tuple[Var, ...], got: dict) -> dict[str, tuple]:
+    missing = [v.name for v in decl if v.name not in got]
+    extra = [k for k in got if k not in {v.name for v in decl}]
+    if missing or extra:
+        raise ValueError(f"{est_name}.step: {what} mismatch (missing {missing}, unexpected {extra})")
+    out = {}
+    for v in decl:
+        val = got[v.name]
+        vals = tuple(val) if isinstance(val, (tuple, list)) else (val,)
+        if len(vals) != v.size:
+            raise ValueError(f"{est_name}.step: {what} {v.name} has {len(vals)} values, "
+                             f"declared size {v.size}")
+        out[v.name] = vals
+    return out
+
+
+def trace(est: Estimator) -> Graph:
+    """Record one step of `est` as a raw (unoptimised) graph."""
+    g = Graph(est.name)
+
+    def leaves(kind, decl):
+        return {v.name: tuple(Sym(g, g.input(kind, v.name, i, v.type)) for i in range(v.size))
+                for v in decl}
+
+    u = leaves("input", est.inputs.fields)
+    p = leaves("param", tuple(p.as_var() for p in est.params))
+    x = leaves("state", est.state)
+    nx, y = est.step(_ns(est.state, x), _ns(est.inputs.fields, u),
+                     _ns(tuple(q.as_var() for q in est.params), p))
+    for kind, decl, got in (("state", est.state, nx), ("output", est.outputs, y)):
+        flat = _flatten(est.name, kind, decl, got)
+        for v in decl:
+            for i, val in enumerate(flat[v.name]):
+                g.set_result(kind, v.name, i, _as_node(g, val, v.type, f"{kind} {v.name}"))
+    g.check()
+    return g
+
+
+def _as_node(g: Graph, val, type_: str, what: str):
+    if isinstance(val, Sym):
+        if val.type != type_:
+            raise TypeError(f"{what}: declared {type_}, step returned {val.type}")
+        return val.n
+    if type_ == BOOL:
+        return g.const(bool(val), BOOL)
+    if type_ == INT:
+        return g.const(int(val), INT)
+    return g.const(float(val), REAL)
+
+
+def initial_state(est: Estimator) -> dict[str, tuple]:
+    return {v.name: v.init_values() for v in est.state}
+
+
+def run_reference(est: Estimator, inputs: dict[str, np.ndarray], params: dict[str, float] | None = None,
+                  state: dict[str, tuple] | None = None):
+    """Run the estimator's Python code on Python floats (float64): the reference.
+
+    inputs: field name -> array of shape (N,) or (N, size).  Returns (outputs, final_state) with
+    outputs as field name -> array (N, size) (float64, or int64/bool for int/bool outputs).
+    """
+    prm = est.resolve_params(params)
+    pvals = {k: (float(v),) for k, v in prm.items()}
+    pns = _ns(tuple(q.as_var() for q in est.params), pvals)
+    cols = {}
+    n = None
+    for f in est.inputs.fields:
+        a = np.asarray(inputs[f.name])
+        a = a.reshape(len(a), -1)
+        if a.shape[1] != f.size:
+            raise ValueError(f"input {f.name}: expected {f.size} columns, got {a.shape[1]}")
+        n = len(a) if n is None else n
+        if len(a) != n:
+            raise ValueError("inputs differ in length")
+        conv = (lambda c: [bool(v) for v in c]) if f.type == BOOL else \
+               (lambda c: [int(v) for v in c]) if f.type == INT else (lambda c: c.tolist())
+        cols[f.name] = [conv(a[:, i].astype(np.float64) if f.type == REAL else a[:, i])
+                        for i in range(f.size)]
+    st = dict(state) if state is not None else initial_state(est)
+    outs = {v.name: [[] for _ in range(v.size)] for v in est.outputs}
+    in_fields = est.inputs.fields
+    for k in range(n or 0):
+        u = SimpleNamespace(**{f.name: cols[f.name][0][k] if f.size == 1
+                               else tuple(c[k] for c in cols[f.name]) for f in in_fields})
+        nx, y = est.step(_ns(est.state, st), u, pns)
+        st = _flatten(est.name, "state", est.state, nx)
+        yf = _flatten(est.name, "output", est.outputs, y)
+        for v in est.outputs:
+            for i, val in enumerate(yf[v.name]):
+                outs[v.name][i].append(val)
+    dtype = {REAL: np.float64, INT: np.int64, BOOL: np.bool_}
+    result = {v.name: np.array(outs[v.name], dtype=dtype[v.type]).T.reshape(n or 0, v.size)
+              for v in est.outputs}
+    return result, st
+
+
+class Interface:
+    """The declared interface of an estimator as the number systems see it."""
+
+    def __init__(self, est: Estimator):
+        self.est = est
+        self.where = est.name
+
+    def all_vars(self) -> list[tuple[str, Var]]:
+        e = self.est
+        return ([("input", v) for v in e.inputs.fields]
+                + [("param", p.as_var()) for p in e.params]
+                + [("state", v) for v in e.state]
+                + [("output", v) for v in e.outputs])
+
+    def leaf_ranges(self) -> dict[tuple[str, str], tuple[float, float]]:
+        return {(k, v.name): (float(v.lo), float(v.hi)) for k, v in self.all_vars()
+                if k != "output"}

@@ -1,0 +1,19 @@
+"""The estimators' reference code.  Every estimator listed here is generated to float32 C,
+fixed-point C and their Python models by `kinefuse codegen`."""
+from __future__ import annotations
+
+from kinefuse.codegen.estimator import Estimator
+from kinefuse.codegen.estimators.madgwick import Madgwick
+
+# Registry order = order in `kinefuse filters`.
+ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
+    Madgwick,
+)}
+
+
+def get(name: str) -> Estimator:
+    """An instance of the registered estimator `name` (ValueError naming the choices if unknown)."""
+    try:
+        return ESTIMATORS[name]()
+    except KeyError:
+        raise ValueError(f"unknown filter {name!r} (available: {', '.join(ESTIMATORS)})") from None

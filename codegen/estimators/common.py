@@ -1,0 +1,133 @@
+"""What every orientation filter shares: the IMU sample record, its validation, and the
+initial orientation from one accelerometer (+ magnetometer) sample.
+
+Frames: the sensor frame is the IMU's own; the earth frame is East-North-Up (z up, y towards
+magnetic north).  Orientation quaternions (w, x, y, z) map sensor to earth.  At rest the
+accelerometer reads +g along the sensor's 'up' direction (specific force).
+"""
+from __future__ import annotations
+
+import math
+
+from kinefuse.codegen.estimator import InputSpec, Var
+from kinefuse.codegen.ir import BOOL, INT
+from kinefuse.codegen.linalg import Quat, Vec3, vselect
+from kinefuse.codegen.scalar import (all_of, any_of, assume, fabs, fmax, logical_and, logical_not,
+                                     rsqrt, select)
+
+G = 9.81                                   # m/s^2, standard gravity used for ranges
+GYR_MAX = 2000.0 * math.pi / 180.0         # rad/s  (+-2000 deg/s full scale)
+ACC_MAX = 16.0 * 9.80665                   # m/s^2  (+-16 g full scale)
+MAG_MAX = 4900.0                           # uT     (+-4900 uT full scale)
+DT_MAX = 1.0                               # s      (longest step accepted)
+
+IMU = InputSpec("imu", (
+    Var("gyr", 3, -GYR_MAX, GYR_MAX, "rad/s", "angular rate, sensor frame"),
+    Var("acc", 3, -ACC_MAX, ACC_MAX, "m/s^2",
+        "specific force, sensor frame (+g upward at rest)"),
+    Var("mag", 3, -MAG_MAX, MAG_MAX, "uT", "magnetic field, sensor frame"),
+    Var("mag_valid", 1, 0, 1, "", "1 when mag holds a new sample (the magnetometer may be "
+        "slower than the gyroscope)", BOOL),
+    Var("dt", 1, 0.0, DT_MAX, "s", "time since the previous sample (per-sample: jitter and "
+        "gaps are real)"),
+), doc="One IMU sample.  A sample with a non-finite or out-of-range gyroscope, accelerometer or "
+       "time step is rejected (the filter state is kept and a counter increments); an invalid "
+       "magnetometer reading is ignored for that sample and counted too.")
+
+# state and outputs every orientation filter has
+Q_STATE = Var("q", 4, -1.0, 1.0, "", "orientation quaternion (w, x, y, z), sensor to earth (ENU)",
+              init=(1.0, 0.0, 0.0, 0.0))
+INITIALISED = Var("initialised", 1, 0, 1, "", "1 once the orientation was set from a sample",
+                  BOOL, init=False)
+REJECTED = Var("rejected", 1, 0, 2 ** 31 - 1, "samples",
+               "samples (or magnetometer readings) rejected as non-finite or out of range",
+               INT, init=0)
+Q_OUT = Var("q", 4, -1.0, 1.0, "", "orientation quaternion (w, x, y, z), sensor to earth (ENU)")
+
+
+def within(v, limit: float):
+    """True when every component is finite and |v_i| <= limit (NaN compares false)."""
+    return all_of(*(fabs(c) <= limit for c in v))
+
+
+class SampleCheck:
+    """Validation of one IMU sample."""
+
+    def __init__(self, u):
+        self.gyr = Vec3(*u.gyr)
+        self.acc = Vec3(*u.acc)
+        self.mag = Vec3(*u.mag)
+        self.dt = u.dt
+        core = all_of(within(self.gyr, GYR_MAX), within(self.acc, ACC_MAX),
+                      u.dt > 0.0, u.dt <= DT_MAX)
+        mag_ok = within(self.mag, MAG_MAX)
+        self.ok = core                                     # the sample can be used
+        self.use_mag = all_of(core, u.mag_valid, mag_ok)   # ... and its magnetometer reading
+        self.bad = logical_not(all_of(core, logical_not(logical_and(u.mag_valid,
+                                                                    logical_not(mag_ok)))))
+
+
+ACC_NORM_MIN_SQ = 1.0    # (m/s^2)^2: below |a| = 1 m/s^2 (free fall) gravity is not observable
+MAG_NORM_MIN_SQ = 1.0    # uT^2
+
+
+def initial_quaternion(acc: Vec3, mag: Vec3, use_mag):
+    """Orientation from gravity (+ magnetic north when use_mag): the TRIAD construction.
+
+    up = a/|a|, east = (m x up)/|m x up|, north = up x east; the rotation matrix sensor->earth has
+    the rows (east, north, up).  Without a magnetometer the heading is chosen so the sensor's x
+    axis points east as far as possible.  Returns (q, ok) where ok is false when the
+    accelerometer is too small or the field is (nearly) parallel to gravity.
+    """
+    up, a2 = acc.normalized(1e-6)
+    # heading reference: the magnetometer, or the sensor's y axis when there is none
+    ref = vselect(use_mag, mag, Vec3(0.0, 1.0, 0.0))
+    e_raw = ref.cross(up)
+    e2 = e_raw.norm_sq()
+    r2 = ref.norm_sq()
+    # |m x up|^2 / |m|^2 = sin^2 of the angle between field and vertical
+    degenerate = e2 <= 1e-4 * r2
+    east, _ = e_raw.normalized(1e-12)
+    east = vselect(degenerate, Vec3(1.0, 0.0, 0.0), east)
+    north = up.cross(east)
+    q = quat_from_rows(east, north, up)
+    ok = logical_and(a2 >= ACC_NORM_MIN_SQ, logical_not(logical_and(use_mag, degenerate)))
+    return q, ok
+
+
+def quat_from_rows(r0: Vec3, r1: Vec3, r2: Vec3) -> Quat:
+    """Unit quaternion of the rotation matrix with rows r0, r1, r2 (Shepperd's method: the
+    largest of the four candidate denominators is used, so nothing divides by ~0)."""
+    m00, m01, m02 = r0
+    m10, m11, m12 = r1
+    m20, m21, m22 = r2
+    tr = m00 + m11 + m22
+    # 4 w^2 = 1 + tr, 4 x^2 = 1 + m00 - m11 - m22, ...
+    cw = 1.0 + tr
+    cx = 1.0 + m00 - m11 - m22
+    cy = 1.0 - m00 + m11 - m22
+    cz = 1.0 - m00 - m11 + m22
+    use_w = all_of(cw >= cx, cw >= cy, cw >= cz)
+    use_x = all_of(logical_not(use_w), cx >= cy, cx >= cz)
+    use_y = all_of(logical_not(use_w), logical_not(use_x), cy >= cz)
+    use_z = logical_not(any_of(use_w, use_x, use_y))
+    c = select(use_w, cw, select(use_x, cx, select(use_y, cy, cz)))
+    # the largest of the four is >= 1 (they sum to 4), so the floor never binds for a rotation
+    s = rsqrt(fmax(c, 0.25))           # 1 / sqrt(c)
+    half = 0.5 * c * s                 # the chosen component, sqrt(c) / 2
+    k = 0.5 * s                        # 1 / (4 * chosen component)
+    d_wx = (m21 - m12) * k
+    d_wy = (m02 - m20) * k
+    d_wz = (m10 - m01) * k
+    d_xy = (m01 + m10) * k
+    d_xz = (m02 + m20) * k
+    d_yz = (m12 + m21) * k
+    w = select(use_w, half, select(use_x, d_wx, select(use_y, d_wy, d_wz)))
+    x = select(use_x, half, select(use_w, d_wx, select(use_y, d_xy, d_xz)))
+    y = select(use_y, half, select(use_w, d_wy, select(use_x, d_xy, d_yz)))
+    z = select(use_z, half, select(use_w, d_wz, select(use_x, d_xz, d_yz)))
+    q = Quat(assume(w, -1.0, 1.0), assume(x, -1.0, 1.0), assume(y, -1.0, 1.0),
+             assume(z, -1.0, 1.0))
+    # keep w >= 0 (the same rotation either way; a canonical sign helps comparisons)
+    flip = q.w < 0.0
+    return Quat(*(select(flip, -c_, c_) for c_ in q))

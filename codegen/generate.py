@@ -1,0 +1,97 @@
+"""Regenerate firmware/generated/ from the estimators' reference code (`kinefuse codegen`), or
+check that the committed files are up to date (`kinefuse codegen --check`, run in CI)."""
+from __future__ import annotations
+
+import functools
+import shutil
+from pathlib import Path
+
+from kinefuse.codegen import estimators
+from kinefuse.codegen.emit import SYSTEMS, Lowered, c_header, c_input_header, c_source, py_model
+from kinefuse.codegen.estimator import trace
+from kinefuse.codegen.ir import Graph
+from kinefuse.codegen.passes import optimize
+from kinefuse.codegen.runtime import RUNTIME_DIR
+
+REPO_ROOT = Path(__file__).resolve().parent.parent
+GENERATED_DIR = REPO_ROOT / "firmware" / "generated"
+
+
+@functools.lru_cache(maxsize=None)
+def graph_of(name: str) -> Graph:
+    """The optimised graph of one step of estimator `name`."""
+    return optimize(trace(estimators.get(name)))
+
+
+@functools.lru_cache(maxsize=None)
+def lowered(name: str, system: str) -> Lowered:
+    return Lowered(estimators.get(name), graph_of(name), system)
+
+
+def source_file(name: str) -> str:
+    mod = type(estimators.get(name)).__module__.rsplit(".", 1)[-1]
+    return f"codegen/estimators/{mod}.py"
+
+
+def render_all(names: list[str] | None = None) -> dict[str, str]:
+    """Relative path (under firmware/generated) -> file text, for every estimator and system."""
+    files: dict[str, str] = {
+        "__init__.py": '"""Generated filters (C sources and their Python models)."""\n',
+        "models/__init__.py": '"""Bit-exact Python models of the generated C."""\n',
+        "kf_fixed.h": (RUNTIME_DIR / "kf_fixed.h").read_text(),
+    }
+    rows = []
+    for name in names or list(estimators.ESTIMATORS):
+        src = source_file(name)
+        for system in SYSTEMS:
+            lo = lowered(name, system)
+            P = lo.prefix
+            files[f"{P}.h"] = c_header(lo, src)
+            files[f"{P}.c"] = c_source(lo, src)
+            files[f"models/{P}.py"] = py_model(lo, src)
+            files[f"kf_{lo.est.inputs.name}_{system}.h"] = c_input_header(lo)
+            rows.append((name, system, lo.op_summary()))
+    files["OPS.md"] = _ops_table(rows)
+    return files
+
+
+def _ops_table(rows) -> str:
+    lines = ["# Generated filters: operations per update", "",
+             "Produced by `kinefuse codegen` (do not edit).  Counts are graph operations after",
+             "constant folding, common-subexpression elimination and dead-code removal.", "",
+             "| filter | number system | operations per update |", "|---|---|---|"]
+    lines += [f"| {n} | {s} | {o} |" for n, s, o in rows]
+    return "\n".join(lines) + "\n"
+
+
+def write(out_dir: Path = GENERATED_DIR, names: list[str] | None = None) -> list[str]:
+    """Write every generated file; remove stale generated C/model files.  Returns paths written."""
+    files = render_all(names)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    (out_dir / "models").mkdir(exist_ok=True)
+    written = []
+    for rel, text in files.items():
+        path = out_dir / rel
+        if not path.exists() or path.read_text() != text:
+            path.write_text(text)
+            written.append(rel)
+    if names is None:
+        for path in list(out_dir.glob("*.[ch]")) + list((out_dir / "models").glob("*.py")):
+            rel = str(path.relative_to(out_dir))
+            if rel not in files:
+                path.unlink()
+                written.append(f"(removed) {rel}")
+    return written
+
+
+def check(out_dir: Path = GENERATED_DIR) -> list[str]:
+    """Paths that differ from what the generator produces now (empty: up to date)."""
+    files = render_all()
+    stale = [rel for rel, text in files.items()
+             if not (out_dir / rel).exists() or (out_dir / rel).read_text() != text]
+    extra = [str(p.relative_to(out_dir)) for p in
+             list(out_dir.glob("*.[ch]")) + list((out_dir / "models").glob("*.py"))
+             if str(p.relative_to(out_dir)) not in files]
+    return stale + [f"{e} (not produced by the generator)" for e in extra]
+
+

@@ -1,0 +1,139 @@
+"""Small vector and quaternion helpers written with the scalar interface.
+
+They read as mathematics and run unchanged on floats (reference) and traced values.  The order of
+operations written here *is* the order of the generated C, so every formula is spelled out.
+
+Conventions: quaternions are (w, x, y, z), Hamilton product, and an orientation quaternion q maps
+sensor-frame vectors to the earth frame: v_earth = q ⊗ v_sensor ⊗ q*.
+"""
+from __future__ import annotations
+
+from kinefuse.codegen.scalar import assume, rnorm, select
+
+
+class Vec3(tuple):
+    """A 3-vector of scalars."""
+
+    __slots__ = ()
+
+    def __new__(cls, x, y, z):
+        return tuple.__new__(cls, (x, y, z))
+
+    x = property(lambda s: s[0])
+    y = property(lambda s: s[1])
+    z = property(lambda s: s[2])
+
+    def __add__(self, o):
+        return Vec3(self[0] + o[0], self[1] + o[1], self[2] + o[2])
+
+    def __sub__(self, o):
+        return Vec3(self[0] - o[0], self[1] - o[1], self[2] - o[2])
+
+    def __neg__(self):
+        return Vec3(-self[0], -self[1], -self[2])
+
+    def __mul__(self, k):
+        """Scale by a scalar."""
+        return Vec3(self[0] * k, self[1] * k, self[2] * k)
+
+    __rmul__ = __mul__
+
+    def dot(self, o):
+        return self[0] * o[0] + self[1] * o[1] + self[2] * o[2]
+
+    def cross(self, o):
+        return Vec3(self[1] * o[2] - self[2] * o[1],
+                    self[2] * o[0] - self[0] * o[2],
+                    self[0] * o[1] - self[1] * o[0])
+
+    def norm_sq(self):
+        return self[0] * self[0] + self[1] * self[1] + self[2] * self[2]
+
+    def normalized(self, eps: float):
+        """(unit vector, squared norm).  The squared norm is floored at eps before 1/sqrt, so the
+        result is finite for a zero vector (callers reject such samples)."""
+        k, n2 = rnorm(self, eps)
+        return Vec3(*(assume(c * k, -1.0, 1.0) for c in self)), n2
+
+
+def vselect(cond, a, b):
+    """Element-wise select of two equally long tuples (Vec3 or Quat)."""
+    return type(a)(*(select(cond, x, y) for x, y in zip(a, b)))
+
+
+class Quat(tuple):
+    """A quaternion (w, x, y, z)."""
+
+    __slots__ = ()
+
+    def __new__(cls, w, x, y, z):
+        return tuple.__new__(cls, (w, x, y, z))
+
+    w = property(lambda s: s[0])
+    x = property(lambda s: s[1])
+    y = property(lambda s: s[2])
+    z = property(lambda s: s[3])
+
+    @property
+    def vec(self) -> Vec3:
+        return Vec3(self[1], self[2], self[3])
+
+    def __mul__(self, o):
+        """Hamilton product self ⊗ o."""
+        aw, ax, ay, az = self
+        bw, bx, by, bz = o
+        return Quat(aw * bw - ax * bx - ay * by - az * bz,
+                    aw * bx + ax * bw + ay * bz - az * by,
+                    aw * by - ax * bz + ay * bw + az * bx,
+                    aw * bz + ax * by - ay * bx + az * bw)
+
+    def __add__(self, o):
+        return Quat(self[0] + o[0], self[1] + o[1], self[2] + o[2], self[3] + o[3])
+
+    def __sub__(self, o):
+        return Quat(self[0] - o[0], self[1] - o[1], self[2] - o[2], self[3] - o[3])
+
+    def scale(self, k):
+        return Quat(self[0] * k, self[1] * k, self[2] * k, self[3] * k)
+
+    def conj(self):
+        return Quat(self[0], -self[1], -self[2], -self[3])
+
+    def dot(self, o):
+        return self[0] * o[0] + self[1] * o[1] + self[2] * o[2] + self[3] * o[3]
+
+    def norm_sq(self):
+        return self[0] * self[0] + self[1] * self[1] + self[2] * self[2] + self[3] * self[3]
+
+    def normalized(self, eps: float = 1e-6):
+        """Unit quaternion (components assumed within [-1, 1])."""
+        k, _ = rnorm(self, eps)
+        return Quat(*(assume(c * k, -1.0, 1.0) for c in self))
+
+    def rotate(self, v: Vec3) -> Vec3:
+        """q ⊗ v ⊗ q*  (sensor → earth for an orientation quaternion)."""
+        w, x, y, z = self
+        # t = 2 q_v × v ;  v' = v + w t + q_v × t
+        tx = 2.0 * (y * v[2] - z * v[1])
+        ty = 2.0 * (z * v[0] - x * v[2])
+        tz = 2.0 * (x * v[1] - y * v[0])
+        return Vec3(v[0] + w * tx + (y * tz - z * ty),
+                    v[1] + w * ty + (z * tx - x * tz),
+                    v[2] + w * tz + (x * ty - y * tx))
+
+    def rotate_inv(self, v: Vec3) -> Vec3:
+        """q* ⊗ v ⊗ q  (earth → sensor)."""
+        return self.conj().rotate(v)
+
+    def earth_z_in_sensor(self) -> Vec3:
+        """Third row of the rotation matrix: the earth's vertical axis in sensor coordinates."""
+        w, x, y, z = self
+        return Vec3(2.0 * (x * z - w * y),
+                    2.0 * (y * z + w * x),
+                    w * w - x * x - y * y + z * z)
+
+
+def quat_from_rotvec_small(hx, hy, hz) -> Quat:
+    """Unnormalised quaternion of a small rotation with half-angle vector (hx, hy, hz):
+    (1, h).  Callers normalise; exact to second order, which is what a strapdown step needs."""
+    return Quat(1.0, hx, hy, hz)

@@ -1,0 +1,217 @@
+"""A tiny statement language between the number systems and the target languages.
+
+A number system (:mod:`kinefuse.codegen.float32`, :mod:`kinefuse.codegen.fixed`) lowers each
+graph node to :class:`Assign` statements over the expressions below; the renderers here print
+them as C99, as scalar Python (the per-sample model loop) or as vectorised numpy (input-only parts
+of a step, computed for all samples at once).  Because C and both Python forms are printed from
+the same statements, the models mirror the C one to one.
+
+Value kinds (``Assign.kind``): ``f32`` binary32, ``i32``/``i64`` signed integers, ``bool``,
+``dyn`` a (mantissa, exponent) pair of the fixed-point path.
+"""
+from __future__ import annotations
+
+import dataclasses
+from typing import Union
+
+import numpy as np
+
+
+# -- expressions -------------------------------------------------------------------------------
+
+@dataclasses.dataclass(frozen=True)
+class Var:
+    name: str
+
+
+@dataclasses.dataclass(frozen=True)
+class F32:
+    """A binary32 literal (the value must be exactly representable)."""
+    value: float
+
+
+@dataclasses.dataclass(frozen=True)
+class Int:
+    value: int
+
+
+@dataclasses.dataclass(frozen=True)
+class Bin:
+    op: str   # + - * / < <= == && ||
+    a: "Expr"
+    b: "Expr"
+
+
+@dataclasses.dataclass(frozen=True)
+class Un:
+    op: str   # - !
+    a: "Expr"
+
+
+@dataclasses.dataclass(frozen=True)
+class Sel:
+    c: "Expr"
+    a: "Expr"
+    b: "Expr"
+
+
+@dataclasses.dataclass(frozen=True)
+class Call:
+    """A runtime helper present in both languages (C: kf_fixed.h / libm; Python: runtime)."""
+    fn: str
+    args: tuple
+
+
+@dataclasses.dataclass(frozen=True)
+class Wide:
+    """Widen to int64 (C cast; no-op in Python)."""
+    a: "Expr"
+
+
+@dataclasses.dataclass(frozen=True)
+class Narrow:
+    """Narrow an int64 known to fit to int32 (C cast; no-op in Python)."""
+    a: "Expr"
+
+
+@dataclasses.dataclass(frozen=True)
+class Shl:
+    """a * 2**k for k >= 0 on int64 (written as a multiplication in C: no UB for negative a)."""
+    a: "Expr"
+    k: int
+
+
+@dataclasses.dataclass(frozen=True)
+class RshRound:
+    """floor((a + 2**(k-1)) / 2**k), k >= 1: rounding right shift (round half up)."""
+    a: "Expr"
+    k: int
+
+
+@dataclasses.dataclass(frozen=True)
+class Field:
+    """Member access of a dyn value: .m (mantissa) or .e (exponent)."""
+    a: "Expr"
+    name: str
+
+
+Expr = Union[Var, F32, Int, Bin, Un, Sel, Call, Wide, Narrow, Shl, RshRound, Field]
+
+
+@dataclasses.dataclass(frozen=True)
+class Assign:
+    name: str
+    kind: str          # f32 | i32 | i64 | bool | dyn
+    expr: Expr
+    comment: str = ""
+
+
+# -- C ------------------------------------------------------------------------------------------
+
+C_TYPES = {"f32": "float", "i32": "int32_t", "i64": "int64_t", "bool": "int", "dyn": "kf_dyn"}
+
+
+def f32_hex(value: float) -> str:
+    """Exact binary32 literal: hex float with an f suffix (decimal would round twice)."""
+    v = float(np.float32(value))
+    if v != v:
+        return "(0.0f / 0.0f)"
+    if v in (float("inf"), float("-inf")):
+        return ("-" if v < 0 else "") + "(1.0f / 0.0f)"
+    if v == 0.0:
+        return "-0.0f" if str(v).startswith("-") else "0.0f"
+    return v.hex() + "f"
+
+
+def c_int(v: int) -> str:
+    if -(2 ** 31) < v < 2 ** 31:
+        return str(v)
+    return f"INT64_C({v})"
+
+
+def render_c(e: Expr) -> str:
+    if isinstance(e, Var):
+        return e.name
+    if isinstance(e, F32):
+        return f32_hex(e.value)
+    if isinstance(e, Int):
+        return c_int(e.value)
+    if isinstance(e, Bin):
+        return f"({render_c(e.a)} {e.op} {render_c(e.b)})"
+    if isinstance(e, Un):
+        return f"({e.op}{render_c(e.a)})"
+    if isinstance(e, Sel):
+        return f"({render_c(e.c)} ? {render_c(e.a)} : {render_c(e.b)})"
+    if isinstance(e, Call):
+        return f"{e.fn}({', '.join(render_c(a) for a in e.args)})"
+    if isinstance(e, Wide):
+        return f"((int64_t){render_c(e.a)})"
+    if isinstance(e, Narrow):
+        return f"((int32_t){render_c(e.a)})"
+    if isinstance(e, Shl):
+        return render_c(e.a) if e.k == 0 else f"({render_c(e.a)} * {c_int(1 << e.k)})"
+    if isinstance(e, RshRound):
+        return f"(({render_c(e.a)} + {c_int(1 << (e.k - 1))}) >> {e.k})"
+    if isinstance(e, Field):
+        return f"{render_c(e.a)}.{e.name}"
+    raise TypeError(e)
+
+
+def render_c_assign(s: Assign, indent: str = "    ") -> str:
+    line = f"{indent}const {C_TYPES[s.kind]} {s.name} = {render_c(s.expr)};"
+    if s.comment:
+        line += f"  /* {s.comment} */"
+    return line
+
+
+# -- Python -------------------------------------------------------------------------------------
+
+PY_C_OPS = {"&&": "and", "||": "or"}
+
+
+def render_py(e: Expr, vector: bool = False, consts: dict | None = None) -> str:
+    """Python text of an expression.  Scalars: numpy float32 / Python int values.  vector=True:
+    numpy arrays (every sample at once).  consts collects binary32 literals (name -> value) that
+    the model binds once, so the loop does not rebuild them."""
+    r = lambda x: render_py(x, vector, consts)  # noqa: E731
+    if isinstance(e, Var):
+        return e.name
+    if isinstance(e, F32):
+        v = float(np.float32(e.value))
+        key = "K_" + (v.hex().replace("-", "m").replace(".", "_").replace("+", "p")
+                      if v == v else "nan")
+        if consts is not None:
+            consts[key] = v
+        return key
+    if isinstance(e, Int):
+        return str(e.value)
+    if isinstance(e, Bin):
+        op = e.op
+        if op in PY_C_OPS:
+            op = ("&" if op == "&&" else "|") if vector else PY_C_OPS[op]
+        return f"({r(e.a)} {op} {r(e.b)})"
+    if isinstance(e, Un):
+        if e.op == "!":
+            return f"(~{r(e.a)})" if vector else f"(not {r(e.a)})"
+        return f"({e.op}{r(e.a)})"
+    if isinstance(e, Sel):
+        if vector:
+            return f"_where({r(e.c)}, {r(e.a)}, {r(e.b)})"
+        return f"({r(e.a)} if {r(e.c)} else {r(e.b)})"
+    if isinstance(e, Call):
+        fn = e.fn + ("_v" if vector else "")
+        return f"rt.{fn}({', '.join(r(a) for a in e.args)})"
+    if isinstance(e, (Wide, Narrow)):
+        return r(e.a)
+    if isinstance(e, Shl):
+        return r(e.a) if e.k == 0 else f"({r(e.a)} << {e.k})"
+    if isinstance(e, RshRound):
+        return f"(({r(e.a)} + {1 << (e.k - 1)}) >> {e.k})"
+    if isinstance(e, Field):
+        return f"{r(e.a)}[{0 if e.name == 'm' else 1}]"
+    raise TypeError(e)
+
+
+def render_py_assign(s: Assign, vector: bool = False, consts: dict | None = None,
+                     indent: str = "") -> str:
+    return f"{indent}{s.name} = {render_py(s.expr, vector, consts)}"

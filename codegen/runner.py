@@ -1,0 +1,203 @@
+"""Run an estimator in any of its implementations on arrays of samples.
+
+* ``ref``       the estimator's Python code on float64 (the reference);
+* ``f32-model`` / ``q-model``  the generated Python models (bit-exact with the C);
+* ``f32`` / ``q``              the generated C, compiled on the host (cffi batch entry point).
+
+Host values are float64 arrays.  Encoding to the number system (binary32 rounding, or Q-format
+raw integers with round-half-away and saturation) happens once, here, and the same encoded
+values feed the C and the model, so their outputs can be compared bit for bit.
+"""
+from __future__ import annotations
+
+import dataclasses
+import importlib
+
+import numpy as np
+
+from kinefuse.codegen import estimators
+from kinefuse.codegen.estimator import run_reference
+from kinefuse.codegen.runtime import q as qrt
+
+IMPLS = ("ref", "f32", "q", "f32-model", "q-model")
+
+
+@dataclasses.dataclass
+class Encoded:
+    """Inputs/params/state in a number system's storage values."""
+    inputs: dict[str, np.ndarray]      # name -> (N, size) float32 / int64 / bool
+    params: dict[str, object]          # name -> scalar
+    n: int
+
+
+class ModelInfo:
+    """Interface metadata of a generated filter (from its generated Python model)."""
+
+    def __init__(self, name: str, system: str):
+        self.name, self.system = name, system
+        try:
+            self.mod = importlib.import_module(f"kinefuse.firmware.generated.models.{name}_{system}")
+        except ModuleNotFoundError as exc:
+            raise RuntimeError(f"no generated model for {name} ({system}); run `kinefuse codegen`") \
+                from exc
+        self.fields = self.mod.FIELDS
+        self.formats = getattr(self.mod, "FORMATS", {})
+
+    def encode_values(self, kind: str, name: str, typ: str, values) -> np.ndarray:
+        values = np.asarray(values)
+        if typ == "bool":
+            return values.astype(bool)
+        if typ == "int":
+            return values.astype(np.int64)
+        if self.system == "f32":
+            return values.astype(np.float64).astype(np.float32)
+        frac, lo, hi = self.formats[f"{kind}.{name}"]
+        return qrt.q_from_float_v(values.astype(np.float64), frac, lo, hi)
+
+    def decode_values(self, kind: str, name: str, typ: str, values) -> np.ndarray:
+        values = np.asarray(values)
+        if typ != "real":
+            return values
+        if self.system == "f32":
+            return values.astype(np.float32).astype(np.float64)
+        frac = self.formats[f"{kind}.{name}"][0]
+        return np.ldexp(values.astype(np.float64), -frac)
+
+    def encode(self, inputs: dict[str, np.ndarray], params: dict[str, float]) -> Encoded:
+        enc, n = {}, None
+        for name, size, typ in self.fields["input"]:
+            if name not in inputs:
+                raise ValueError(f"{self.name}: missing input {name!r}")
+            a = np.asarray(inputs[name])
+            a = a.reshape(len(a), -1)
+            if a.shape[1] != size:
+                raise ValueError(f"{self.name}: input {name} needs {size} columns, got {a.shape[1]}")
+            n = len(a) if n is None else n
+            if len(a) != n:
+                raise ValueError(f"{self.name}: inputs differ in length")
+            enc[name] = self.encode_values("input", name, typ, a)
+        prm = {}
+        for name, size, typ in self.fields["param"]:
+            prm[name] = self.encode_values("param", name, typ, [params[name]])[0]
+        return Encoded(enc, prm, n or 0)
+
+    def initial_state(self) -> dict[str, list]:
+        out = {}
+        for name, size, typ in self.fields["state"]:
+            vals = self.encode_values("state", name, typ, list(self.mod.STATE_INIT[name]))
+            out[name] = [v.item() if typ != "real" or self.system == "q" else v for v in vals]
+        return out
+
+
+class ModelRunner(ModelInfo):
+    """The generated Python model."""
+
+    def run_encoded(self, e: Encoded) -> dict[str, np.ndarray]:
+        inputs = {k: [v[:, i] for i in range(v.shape[1])] for k, v in e.inputs.items()}
+        params = {k: [v.item() if self.system == "q" else v] for k, v in e.params.items()}
+        outs, _ = self.mod.run(inputs, params, self.initial_state(), e.n)
+        res = {}
+        for name, size, typ in self.fields["output"]:
+            dt = np.float32 if (typ == "real" and self.system == "f32") else \
+                bool if typ == "bool" else np.int64
+            cols = [np.asarray(c, dtype=dt).reshape(-1) for c in outs[name]]
+            res[name] = np.stack(cols, axis=1) if cols else np.zeros((e.n, 0), dt)
+        return res
+
+
+class CRunner(ModelInfo):
+    """The generated C built on the host (one C call runs the whole recording)."""
+
+    def __init__(self, name: str, system: str):
+        super().__init__(name, system)
+        from kinefuse.codegen.build import build_filter
+        self.ffi, self.lib = build_filter(name, system)
+        self.P = f"{name}_{system}"
+        est = estimators.get(name)
+        self.in_type = f"kf_{est.inputs.name}_input_{system}"
+
+    def _dtype(self, ctype: str, kind: str) -> np.dtype:
+        ffi = self.ffi
+        names, formats, offsets = [], [], []
+        for name, size, typ in self.fields[kind]:
+            base = {"real": np.float32 if self.system == "f32" else np.int32,
+                    "bool": np.uint8, "int": np.int32}[typ]
+            names.append(name)
+            formats.append((base, (size,)) if size > 1 else base)
+            offsets.append(ffi.offsetof(ctype, name))
+        return np.dtype({"names": names, "formats": formats, "offsets": offsets,
+                         "itemsize": ffi.sizeof(ctype)})
+
+    def run_encoded(self, e: Encoded) -> dict[str, np.ndarray]:
+        ffi, lib, P = self.ffi, self.lib, self.P
+        in_dt = self._dtype(self.in_type, "input")
+        out_dt = self._dtype(f"{P}_output", "output")
+        rec = np.zeros(e.n, dtype=in_dt)
+        for name, size, typ in self.fields["input"]:
+            v = e.inputs[name]
+            rec[name] = (v.reshape(e.n) if size == 1 else v).astype(in_dt[name].base)
+        out = np.zeros(e.n, dtype=out_dt)
+        params = ffi.new(f"{P}_params *")
+        for name, size, typ in self.fields["param"]:
+            setattr(params, name, e.params[name].item())
+        state = ffi.new(f"{P}_state *")
+        status = getattr(lib, f"{P}_init")(state, params)
+        if status != 0:
+            raise ValueError(f"{self.name}: parameter {-status - 1} rejected by {P}_init")
+        getattr(lib, f"{P}_run")(state, ffi.cast(f"{self.in_type} *", ffi.from_buffer(rec)),
+                                 ffi.cast(f"{P}_output *", ffi.from_buffer(out, require_writable=True)),
+                                 e.n)
+        res = {}
+        for name, size, typ in self.fields["output"]:
+            col = out[name].reshape(e.n, size)
+            if typ == "real":
+                res[name] = col.astype(np.float32 if self.system == "f32" else np.int64)
+            elif typ == "bool":
+                res[name] = col.astype(bool)
+            else:
+                res[name] = col.astype(np.int64)
+        return res
+
+
+_RUNNERS: dict[tuple[str, str], ModelInfo] = {}
+
+
+def runner(name: str, impl: str) -> ModelInfo:
+    """Cached runner for impl in f32, q (C) or f32-model, q-model."""
+    key = (name, impl)
+    if key not in _RUNNERS:
+        system = impl.split("-")[0]
+        _RUNNERS[key] = (ModelRunner if impl.endswith("-model") else CRunner)(name, system)
+    return _RUNNERS[key]
+
+
+def run(name: str, impl: str, inputs: dict[str, np.ndarray], params: dict[str, float] | None = None,
+        raw: bool = False) -> dict[str, np.ndarray]:
+    """Run filter `name` in implementation `impl` over all samples.
+
+    Returns output name -> (N, size) array: float64 host values, or (raw=True) the number
+    system's own values (float32 / int64 raw) for bit-exact comparison."""
+    est = estimators.get(name)
+    prm = est.resolve_params(params)
+    if impl == "ref":
+        out, _ = run_reference(est, inputs, prm)
+        return out
+    if impl not in IMPLS:
+        raise ValueError(f"unknown implementation {impl!r} (choose from {', '.join(IMPLS)})")
+    r = runner(name, impl)
+    e = r.encode(inputs, prm)
+    out = r.run_encoded(e)
+    if raw:
+        return out
+    return {name_: r.decode_values("output", name_, typ, out[name_])
+            for name_, size, typ in r.fields["output"]}
+
+
+def bits(a: np.ndarray) -> np.ndarray:
+    """Comparable bit patterns: uint32 views of binary32 (all NaNs made equal), ints as is."""
+    a = np.asarray(a)
+    if a.dtype == np.float32:
+        b = a.view(np.uint32).copy()
+        b[np.isnan(a)] = 0x7FC00000
+        return b
+    return a.astype(np.int64)

@@ -1,0 +1,242 @@
+/*
+ * kf_fixed.h - fixed-point helpers of kinefuse generated code.  Copied verbatim from
+ * codegen/runtime/kf_fixed.h by `kinefuse codegen`; its Python mirror is codegen/runtime/q.py
+ * (one function there for each function here).
+ *
+ * Number format: every real value is an int32 "raw" with a per-variable number of fractional
+ * bits f chosen by range analysis (value = raw * 2^-f; f may be negative or exceed 31).
+ * Intermediates are int64 and are proven (by integer interval analysis in the generator) not to
+ * overflow.  Raw values stay within +-(2^31 - 1).
+ * Rounding: right shifts round half up (add half an LSB, then shift); division rounds half away
+ * from zero; square roots round to nearest.  Saturation is explicit (kf_sat) and only emitted
+ * where a bound cannot be proven.
+ */
+#ifndef KF_FIXED_H
+#define KF_FIXED_H
+
+#include <stdint.h>
+
+/* The generated code relies on GCC/Clang's documented arithmetic right shift of negative values. */
+typedef char kf_requires_arithmetic_shift[((-1) >> 1) == -1 ? 1 : -1];
+typedef char kf_requires_arithmetic_shift64[(((int64_t)-1) >> 1) == -1 ? 1 : -1];
+
+/* A positive value with a dynamic binary point: value = m * 2^-e, m in [2^30, 2^31).
+ * Used for reciprocal square roots, whose range is too wide for one static format. */
+typedef struct {
+    int32_t m;
+    int32_t e;
+} kf_dyn;
+
+/* Clamp an int64 to [lo, hi]. */
+static inline int32_t kf_sat(int64_t v, int32_t lo, int32_t hi)
+{
+    return (v < lo) ? lo : ((v > hi) ? hi : (int32_t)v);
+}
+
+/* v * 2^k clamped to [lo, hi], for k >= 0, without overflow. */
+static inline int32_t kf_lsh_sat(int64_t v, int32_t k, int32_t lo, int32_t hi)
+{
+    if (k >= 62) {
+        return (v > 0) ? hi : ((v < 0) ? lo : kf_sat(0, lo, hi));
+    }
+    if (v > (((int64_t)hi) >> k)) {
+        return hi;
+    }
+    if (v < -((-(int64_t)lo) >> k)) {
+        return lo;
+    }
+    return (int32_t)(v * ((int64_t)1 << k));
+}
+
+/* n / d rounded half away from zero, clamped to [lo, hi]; d == 0 saturates by the sign of n. */
+static inline int32_t kf_div_rnd(int64_t n, int64_t d, int32_t lo, int32_t hi)
+{
+    uint64_t un, ud, q, r;
+    int64_t v;
+    if (d == 0) {
+        return (n > 0) ? hi : ((n < 0) ? lo : kf_sat(0, lo, hi));
+    }
+    un = (n < 0) ? ((uint64_t)0 - (uint64_t)n) : (uint64_t)n;
+    ud = (d < 0) ? ((uint64_t)0 - (uint64_t)d) : (uint64_t)d;
+    q = un / ud;
+    r = un - q * ud;
+    if (r >= ud - r) {
+        q += 1u;
+    }
+    v = ((n < 0) != (d < 0)) ? -(int64_t)q : (int64_t)q;
+    return kf_sat(v, lo, hi);
+}
+
+/* floor(sqrt(n)) for 0 <= n < 2^63, and the remainder n - r^2 (bit-by-bit method). */
+static inline uint64_t kf_isqrt_floor(uint64_t n, uint64_t *rem)
+{
+    uint64_t r = 0, bit = (uint64_t)1 << 62;
+    while (bit > n) {
+        bit >>= 2;
+    }
+    while (bit != 0) {
+        if (n >= r + bit) {
+            n -= r + bit;
+            r = (r >> 1) + bit;
+        } else {
+            r >>= 1;
+        }
+        bit >>= 2;
+    }
+    *rem = n;
+    return r;
+}
+
+/* sqrt(n) rounded to nearest; 0 for n <= 0. */
+static inline int64_t kf_isqrt_rnd(int64_t n)
+{
+    uint64_t r, rem;
+    if (n <= 0) {
+        return 0;
+    }
+    r = kf_isqrt_floor((uint64_t)n, &rem);
+    if (rem > r) {   /* n > (r + 1/2)^2 */
+        r += 1u;
+    }
+    return (int64_t)r;
+}
+
+/* 1 / sqrt(y * 2^-fy) as a dynamic value, for y < 2^62; y <= 0 is treated as 1. */
+static inline kf_dyn kf_rsqrt_dyn64(int64_t y, int32_t fy)
+{
+    kf_dyn out;
+    uint64_t n, r, rem, m;
+    int32_t s = 0;
+    n = (y <= 0) ? 1u : (uint64_t)y;
+    if ((fy & 1) != 0) {            /* make fy + s even so the square root is exact in exponent */
+        if (n >= ((uint64_t)1 << 61)) {
+            n = (n + 1u) >> 1;
+            s = -1;
+        } else {
+            n <<= 1;
+            s = 1;
+        }
+    }
+    while (n < ((uint64_t)1 << 60)) {   /* normalise n to [2^60, 2^62) */
+        n <<= 2;
+        s += 2;
+    }
+    r = kf_isqrt_floor(n, &rem);        /* r in [2^30, 2^31) */
+    m = (((uint64_t)1 << 61) + (r >> 1)) / r;   /* 2^61 / r rounded, in (2^30, 2^31] */
+    out.e = 61 - (fy + s) / 2;
+    if (m >= ((uint64_t)1 << 31)) {
+        m >>= 1;
+        out.e -= 1;
+    }
+    out.m = (int32_t)m;
+    return out;
+}
+
+/* 1 / sqrt(y * 2^-fy) for an int32 y (see kf_rsqrt_dyn64). */
+static inline kf_dyn kf_rsqrt_dyn(int32_t y, int32_t fy)
+{
+    return kf_rsqrt_dyn64((int64_t)y, fy);
+}
+
+/* 1 / sqrt(max(a^2 + b^2 + c^2 + d^2, eps)) for components in one format f (value = raw * 2^-f);
+ * 1/sqrt(eps) is passed as the dyn constant (eps_m, eps_e).  The components are first scaled so
+ * the largest has 30 significant bits (block scaling): a vector of any length keeps full
+ * relative precision. */
+static inline kf_dyn kf_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, int32_t f,
+                                  int32_t eps_m, int32_t eps_e)
+{
+    kf_dyn r, eps;
+    int64_t x0 = a, x1 = b, x2 = c, x3 = d, big;
+    int32_t s = 0;
+    eps.m = eps_m;
+    eps.e = eps_e;
+    x0 = (x0 < 0) ? -x0 : x0;
+    x1 = (x1 < 0) ? -x1 : x1;
+    x2 = (x2 < 0) ? -x2 : x2;
+    x3 = (x3 < 0) ? -x3 : x3;
+    big = (x0 > x1) ? x0 : x1;
+    big = (big > x2) ? big : x2;
+    big = (big > x3) ? big : x3;
+    if (big == 0) {
+        return eps;
+    }
+    if (big >= ((int64_t)1 << 30)) {   /* halve (rounded) so four squares fit below 2^62 */
+        x0 = (x0 + 1) >> 1;
+        x1 = (x1 + 1) >> 1;
+        x2 = (x2 + 1) >> 1;
+        x3 = (x3 + 1) >> 1;
+        s = -1;
+    } else {
+        while (big < ((int64_t)1 << 29)) {
+            big <<= 1;
+            s += 1;
+        }
+        x0 <<= s;
+        x1 <<= s;
+        x2 <<= s;
+        x3 <<= s;
+    }
+    r = kf_rsqrt_dyn64(x0 * x0 + x1 * x1 + x2 * x2 + x3 * x3, 2 * (f + s));
+    /* max(n2, eps) in the denominator is min(r, 1/sqrt(eps)): compare m * 2^-e values */
+    if ((r.e < eps.e) || ((r.e == eps.e) && (r.m > eps.m))) {
+        return eps;
+    }
+    return r;
+}
+
+/* a * r rescaled: raw result = a * r.m * 2^-(kbase + r.e), rounded, clamped to [lo, hi]. */
+static inline int32_t kf_mul_dyn(int32_t a, kf_dyn r, int32_t kbase, int32_t lo, int32_t hi)
+{
+    int64_t p = (int64_t)a * r.m;
+    int32_t k = kbase + r.e;
+    if (k >= 63) {
+        return kf_sat(0, lo, hi);     /* |p| < 2^62: the exact result rounds to 0 */
+    }
+    if (k > 0) {
+        return kf_sat((p + ((int64_t)1 << (k - 1))) >> k, lo, hi);
+    }
+    return kf_lsh_sat(p, -k, lo, hi);
+}
+
+/* Saturating counter step. */
+static inline int32_t kf_inc_if(int32_t c, int cond)
+{
+    return (cond && (c < INT32_MAX)) ? (c + 1) : c;
+}
+
+/* A binary32 value to raw with f fractional bits, rounded half away from zero and clamped to
+ * [lo, hi] (NaN gives lo).  Pure integer code: no floating-point unit or library needed. */
+static inline int32_t kf_q_from_f32(float x, int32_t f, int32_t lo, int32_t hi)
+{
+    union { float f; uint32_t u; } b;
+    uint32_t mant;
+    int32_t exp2, sh;
+    uint64_t mag;
+    int neg;
+    b.f = x;
+    neg = (int)(b.u >> 31);
+    exp2 = (int32_t)((b.u >> 23) & 0xFFu);
+    mant = b.u & 0x7FFFFFu;
+    if (exp2 == 0xFF) {
+        return (mant != 0u) ? lo : (neg ? lo : hi);   /* NaN, -inf, +inf */
+    }
+    if (exp2 == 0) {
+        exp2 = 1;                      /* subnormal */
+    } else {
+        mant |= 0x800000u;
+    }
+    /* |x| = mant * 2^(exp2 - 150); raw = |x| * 2^f = mant * 2^(exp2 - 150 + f) */
+    sh = exp2 - 150 + f;
+    if (sh >= 39) {
+        mag = (uint64_t)1 << 62;       /* far beyond any int32 raw: saturates below */
+    } else if (sh >= 0) {
+        mag = (uint64_t)mant << sh;
+    } else if (sh > -26) {
+        mag = (((uint64_t)mant) + ((uint64_t)1 << (-sh - 1))) >> (-sh);
+    } else {
+        mag = 0u;
+    }
+    return kf_sat(neg ? -(int64_t)mag : (int64_t)mag, lo, hi);
+}
+
+#endif /* KF_FIXED_H */

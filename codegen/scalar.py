@@ -1,0 +1,252 @@
+"""The scalar-operation interface estimators are written against.
+
+Estimator code uses ordinary arithmetic (``+ - * /``, unary ``-``, ``abs``, comparisons) plus the
+functions of this module.  Called with Python floats it *is* the reference implementation
+(float64); called with :class:`Sym` values (during tracing) the very same code records the typed
+operation graph of :mod:`kinefuse.codegen.ir`.
+
+Rules that keep both worlds identical:
+
+* no Python ``if`` on values — use :func:`select` (both branches are evaluated);
+* no ``math.*`` — use :func:`sqrt`, :func:`rsqrt`, :func:`fmin`, :func:`fmax`, :func:`clamp`;
+  transcendental functions come from :mod:`kinefuse.codegen.mathlib` (written with these ops);
+* logic with :func:`logical_and` / :func:`logical_or` / :func:`logical_not` (``~True`` is -2 in
+  Python);
+* :func:`assume` states a bound that holds mathematically but that interval arithmetic cannot prove
+  (normalised vectors): the fixed-point path saturates there, the float paths ignore it.
+"""
+from __future__ import annotations
+
+import math
+import os
+import sys
+
+from kinefuse.codegen.ir import BOOL, INT, INT32_MAX, REAL, Graph, Node
+
+_CORE_FILES = {os.path.join(os.path.dirname(__file__), f)
+               for f in ("scalar.py", "ir.py", "linalg.py", "estimator.py", "mathlib.py")}
+
+
+def _loc() -> str:
+    """file:line of the first caller outside the generator core (the estimator's own line)."""
+    f = sys._getframe(2)
+    while f is not None and f.f_code.co_filename in _CORE_FILES:
+        f = f.f_back
+    if f is None:
+        return ""
+    return f"{os.path.basename(f.f_code.co_filename)}:{f.f_lineno}"
+
+
+class Sym:
+    """A traced scalar: a node of the graph being recorded."""
+
+    __slots__ = ("g", "n")
+
+    def __init__(self, g: Graph, n: Node):
+        self.g = g
+        self.n = n
+
+    @property
+    def type(self) -> str:
+        return self.n.type
+
+    # -- helpers ------------------------------------------------------------------------
+    def _lift(self, v) -> Node:
+        if isinstance(v, Sym):
+            if v.g is not self.g:
+                raise ValueError("mixing values traced in different graphs")
+            return v.n
+        if isinstance(v, bool):
+            return self.g.const(v, BOOL)
+        if isinstance(v, (int, float)):
+            if self.n.type == INT:
+                return self.g.const(int(v), INT)
+            return self.g.const(float(v), REAL)
+        if hasattr(v, "dtype"):   # numpy scalar
+            return self._lift(v.item())
+        raise TypeError(f"cannot use {type(v).__name__} in a traced expression")
+
+    def _op(self, op: str, *args, attrs: tuple = ()) -> "Sym":
+        nodes = [self._lift(a) for a in args]
+        return Sym(self.g, self.g.add(op, nodes, attrs=attrs, loc=_loc()))
+
+    # -- arithmetic -----------------------------------------------------------------------
+    def __add__(self, o): return self._op("add", self, o)
+    def __radd__(self, o): return self._op("add", o, self)
+    def __sub__(self, o): return self._op("sub", self, o)
+    def __rsub__(self, o): return self._op("sub", o, self)
+    def __mul__(self, o): return self._op("mul", self, o)
+    def __rmul__(self, o): return self._op("mul", o, self)
+    def __truediv__(self, o): return self._op("div", self, o)
+    def __rtruediv__(self, o): return self._op("div", o, self)
+    def __neg__(self): return self._op("neg", self)
+    def __pos__(self): return self
+    def __abs__(self): return self._op("abs", self)
+
+    # -- comparisons (a > b is recorded as b < a: identical IEEE semantics, NaN included) ----
+    def __lt__(self, o): return self._op("lt", self, o)
+    def __le__(self, o): return self._op("le", self, o)
+    def __gt__(self, o): return self._op("lt", o, self)
+    def __ge__(self, o): return self._op("le", o, self)
+
+    # -- logic ----------------------------------------------------------------------------
+    def __and__(self, o): return self._op("and", self, o)
+    def __rand__(self, o): return self._op("and", o, self)
+    def __or__(self, o): return self._op("or", self, o)
+    def __ror__(self, o): return self._op("or", o, self)
+    def __invert__(self): return self._op("not", self)
+
+    def __bool__(self):
+        raise TypeError("a traced value has no truth value while generating code: "
+                        "use select(cond, a, b) instead of if/else, and logical_and/or/not")
+
+    def __float__(self):
+        raise TypeError("a traced value cannot be converted to float while generating code")
+
+    __hash__ = object.__hash__
+
+    def __repr__(self):
+        return f"Sym({self.n!r})"
+
+
+def _first_sym(*vals):
+    for v in vals:
+        if isinstance(v, Sym):
+            return v
+    return None
+
+
+# -- functions of the interface -----------------------------------------------------------
+
+def sqrt(x):
+    """Square root; the argument must be provably >= 0 (guard it with fmax(x, 0.0))."""
+    if isinstance(x, Sym):
+        return x._op("sqrt", x)
+    return math.sqrt(x) if x >= 0.0 else math.nan
+
+
+def rsqrt(x):
+    """1 / sqrt(x); the argument must be provably > 0 (guard it with fmax(x, eps))."""
+    if isinstance(x, Sym):
+        return x._op("rsqrt", x)
+    if x > 0.0:
+        return 1.0 / math.sqrt(x)
+    return math.inf if x == 0.0 else math.nan
+
+
+def rnorm(xs, eps: float):
+    """(1 / sqrt(max(|x|^2, eps)), |x|^2) for a vector x of 1 to 4 components: the scale that
+    normalises x, and its squared norm.  Prefer it to rsqrt(sum of squares): the fixed-point path
+    then keeps full precision for vectors of any length."""
+    xs = tuple(xs)
+    n2 = xs[0] * xs[0]
+    for c in xs[1:]:
+        n2 = n2 + c * c
+    s = _first_sym(n2, *xs)
+    if s is not None:
+        g = s.g
+        args = [s._lift(n2)] + [s._lift(c) for c in xs]
+        return Sym(g, g.add("rnorm", args, attrs=(float(eps),), loc=_loc())), n2
+    return rsqrt(n2 if n2 > eps else eps), n2
+
+
+def fabs(x):
+    return abs(x)
+
+
+def fmin(a, b):
+    """``(a < b) ? a : b`` — returns b when a is NaN (so fmin(nan_value, limit) is finite)."""
+    s = _first_sym(a, b)
+    if s is not None:
+        return s._op("min", a, b)
+    return a if a < b else b
+
+
+def fmax(a, b):
+    """``(a > b) ? a : b`` — returns b when a is NaN."""
+    s = _first_sym(a, b)
+    if s is not None:
+        return s._op("max", a, b)
+    return a if a > b else b
+
+
+def clamp(x, lo, hi):
+    """Limit x to [lo, hi]; NaN becomes hi (documented and identical in every number system)."""
+    return fmin(fmax(x, lo), hi)
+
+
+def select(cond, a, b):
+    """``cond ? a : b`` (both a and b are computed)."""
+    s = _first_sym(cond, a, b)
+    if s is None:
+        return a if cond else b
+    if not isinstance(cond, Sym):
+        return a if cond else b   # a constant condition selects at trace time
+    if not isinstance(a, Sym) and not isinstance(b, Sym):
+        t = INT if (isinstance(a, int) and not isinstance(a, bool)
+                    and isinstance(b, int) and not isinstance(b, bool)) else REAL
+        if isinstance(a, bool) and isinstance(b, bool):
+            t = BOOL
+        g = cond.g
+        return Sym(g, g.add("select", [cond.n, g.const(a, t), g.const(b, t)], loc=_loc()))
+    ref = a if isinstance(a, Sym) else b
+    g = ref.g
+    return Sym(g, g.add("select", [cond.n, ref._lift(a), ref._lift(b)], loc=_loc()))
+
+
+def assume(x, lo: float, hi: float):
+    """x, which is known to lie in [lo, hi] (the fixed-point path saturates there)."""
+    if lo > hi:
+        raise ValueError("assume: lo > hi")
+    if isinstance(x, Sym):
+        return x._op("assume", x, attrs=(float(lo), float(hi)))
+    return x
+
+
+def logical_and(a, b):
+    s = _first_sym(a, b)
+    if s is not None:
+        return s._op("and", a, b)
+    return bool(a) and bool(b)
+
+
+def logical_or(a, b):
+    s = _first_sym(a, b)
+    if s is not None:
+        return s._op("or", a, b)
+    return bool(a) or bool(b)
+
+
+def logical_not(a):
+    if isinstance(a, Sym):
+        return a._op("not", a)
+    return not a
+
+
+def all_of(*conds):
+    out = conds[0]
+    for c in conds[1:]:
+        out = logical_and(out, c)
+    return out
+
+
+def any_of(*conds):
+    out = conds[0]
+    for c in conds[1:]:
+        out = logical_or(out, c)
+    return out
+
+
+def inc_if(counter, cond):
+    """Saturating 32-bit counter increment: counter + 1 when cond holds."""
+    if isinstance(counter, Sym) or isinstance(cond, Sym):
+        s = _first_sym(counter, cond)
+        g = s.g
+        c = counter.n if isinstance(counter, Sym) else g.const(int(counter), INT)
+        k = cond.n if isinstance(cond, Sym) else g.const(bool(cond), BOOL)
+        return Sym(g, g.add("inc_if", [c, k], loc=_loc()))
+    return min(counter + 1, INT32_MAX) if cond else counter
+
+
+def is_traced(*vals) -> bool:
+    return _first_sym(*vals) is not None

@@ -1,0 +1,1 @@
+"""Generated filters (C sources and their Python models)."""

@@ -1,0 +1,1 @@
+"""Bit-exact Python models of the generated C."""
