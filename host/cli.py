@@ -22,12 +22,16 @@ COMMAND_MODULES = [
     "kinefuse.host.commands.plot_cmd",
     "kinefuse.host.commands.codegen_cmd",
     "kinefuse.hil_tests.sim.cli_cmd",
+    "kinefuse.host.commands.calibrate_cmd",
+    "kinefuse.host.commands.report_cmd",
 ]
 # Modules providing `kinefuse bench <name>` sub-commands.
 BENCH_MODULES = [
     "kinefuse.host.bench.accuracy",
     "kinefuse.host.bench.bitexact",
     "kinefuse.host.bench.speed",
+    "kinefuse.host.calib.bench",
+    "kinefuse.host.kinematics.bench",
 ]
 
 

@@ -1,0 +1,237 @@
+"""``kinefuse calibrate accel|gyro|mag`` — sensor calibration from poses or recordings.
+
+Examples::
+
+    kinefuse calibrate accel --poses poses.csv --targets targets.csv --method ls --json
+    kinefuse calibrate accel --input six_poses.csv --out unit7.json --serial DOT-7
+    kinefuse calibrate gyro --input still.csv --json
+    kinefuse calibrate mag --input figure8.csv --field-norm 22.6 --json
+
+POSES.csv: one row per pose, the mean raw accelerometer x,y,z (or x,y for the seed-002 2-D
+protocol); TARGETS.csv: the expected gravity vector of each pose (same shape).  Both accept an
+optional header line and ``#`` comments.  ``--json`` prints exactly one JSON object; for accel
+it is ``{"R": [[…]…], "bias": […] or null, "det": …, "residual_rms": …}``.
+"""
+from __future__ import annotations
+
+import json
+import sys
+
+import numpy as np
+
+from kinefuse.host.calib import accel, gyro, mag, static, unitfile
+from kinefuse.host.errors import KinefuseError
+from kinefuse.host.readers import read_recording
+from kinefuse.host.readers.table import read as read_table
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("calibrate", help="calibrate a unit's accelerometer, gyroscope or magnetometer",
+                              description=__doc__.split("\n\n")[0])
+    sub = p.add_subparsers(dest="sensor", metavar="SENSOR", parser_class=type(p))
+    p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
+
+    def common(sp, recording_required: bool):
+        sp.add_argument("--input", metavar="RECORDING", required=recording_required,
+                        help="recording (Xsens DOT/MATRIX/MetaBase/kinefuse CSV, BROAD .mat)")
+        sp.add_argument("--format", dest="fmt", help="recording format (default: detected)")
+        sp.add_argument("--fs", type=float, help="sampling rate (Hz) for formats without time stamps")
+        sp.add_argument("--json", action="store_true", help="print exactly one JSON object")
+        sp.add_argument("--out", metavar="CALIB.json", help="write/update the unit calibration file")
+        sp.add_argument("--serial", help="unit serial number (needed when --out creates a new file)")
+        sp.add_argument("--range", dest="ranges", action="append", default=[], metavar="NAME=VALUE",
+                        help="configured sensor range stored in the unit file, e.g. acc_g=8, gyr_dps=2000")
+        g = sp.add_argument_group("static detection")
+        d = static.StaticConfig()
+        g.add_argument("--static-window", type=float, default=d.window_s, help="moving window (s)")
+        g.add_argument("--gyr-std-max", type=float, default=d.gyr_std_max, help="rad/s")
+        g.add_argument("--gyr-abs-max", type=float, default=d.gyr_abs_max, help="rad/s")
+        g.add_argument("--acc-std-max", type=float, default=d.acc_std_max, help="m/s²")
+        g.add_argument("--min-duration", type=float, default=d.min_duration_s, help="s")
+
+    a = sub.add_parser("accel", help="accelerometer: seed-002 LS, Procrustes or full model")
+    common(a, False)
+    a.add_argument("--poses", metavar="POSES.csv", help="mean raw acceleration per pose (rows)")
+    a.add_argument("--targets", metavar="TARGETS.csv", help="expected gravity vector per pose")
+    a.add_argument("--method", choices=["ls", "procrustes", "full"],
+                   help="default: ls with targets, full (|acc| = g) without")
+    a.add_argument("--g", type=float, default=accel.G_STANDARD, help="gravity (m/s²) for |acc| = g")
+    a.set_defaults(func=run_accel)
+
+    gy = sub.add_parser("gyro", help="gyroscope bias from static windows (+ scale from known rates)")
+    common(gy, True)
+    gy.add_argument("--rate-windows", metavar="RATES.csv",
+                    help="rows t_start,t_end,wx,wy,wz: spans with a known constant rate (rad/s)")
+    gy.set_defaults(func=run_gyro)
+
+    m = sub.add_parser("mag", help="magnetometer hard/soft iron (ellipsoid fit)")
+    common(m, True)
+    m.add_argument("--model", choices=["full", "hard"], default="full",
+                   help="full: hard + soft iron (default); hard: offset only")
+    m.add_argument("--field-norm", type=float, help="local field magnitude (µT) to scale to")
+    m.set_defaults(func=run_mag)
+
+
+# ----------------------------------------------------------------------------- helpers
+def _static_cfg(args) -> static.StaticConfig:
+    return static.StaticConfig(window_s=args.static_window, gyr_std_max=args.gyr_std_max,
+                               gyr_abs_max=args.gyr_abs_max, acc_std_max=args.acc_std_max,
+                               min_duration_s=args.min_duration)
+
+
+def _numeric_csv(path: str, ncols: tuple, what: str) -> np.ndarray:
+    tab = read_table(path, has_header=False)
+    rows, lines = tab.rows, list(tab.lines)
+    rows = [(r, l) for r, l in zip(rows, lines) if not r[0].lstrip().startswith("#")]
+    out = []
+    for k, (r, ln) in enumerate(rows):
+        cells = [c for c in r if c.strip() != ""]
+        try:
+            vals = [float(c) for c in cells]
+        except ValueError:
+            if k == 0:
+                continue  # header line
+            raise KinefuseError(f"{path}: line {ln}: {what} values must be numbers") from None
+        if len(vals) not in ncols:
+            raise KinefuseError(f"{path}: line {ln}: expected {' or '.join(map(str, ncols))} "
+                                f"columns, got {len(vals)}")
+        out.append(vals)
+    if not out:
+        raise KinefuseError(f"{path}: no {what} rows")
+    if len({len(r) for r in out}) != 1:
+        raise KinefuseError(f"{path}: rows have different numbers of columns")
+    return np.array(out)
+
+
+def _ranges(args) -> dict:
+    out = {}
+    for s in args.ranges:
+        k, sep, v = s.partition("=")
+        try:
+            out[k.strip()] = float(v)
+        except ValueError:
+            raise KinefuseError(f"--range {s!r}: expected NAME=NUMBER, e.g. gyr_dps=2000") from None
+        if not sep:
+            raise KinefuseError(f"--range {s!r}: expected NAME=NUMBER")
+    return out
+
+
+def _read(args):
+    opts = {}
+    if args.fs:
+        opts["fs"] = args.fs
+    rec = read_recording(args.input, args.fmt, **opts)
+    for w in rec.warnings:
+        print(f"kinefuse: warning: {w}", file=sys.stderr)
+    return rec
+
+
+def _emit(args, obj: dict, text: list[str]) -> None:
+    if args.json:
+        print(json.dumps(obj))
+    else:
+        print("\n".join(text))
+
+
+def _save(args, sensor: str, M, b, **extra) -> None:
+    if not args.out:
+        return
+    doc = unitfile.load_or_new(args.out, args.serial, _ranges(args))
+    unitfile.set_sensor(doc, sensor, M, b, **extra)
+    unitfile.save(doc, args.out)
+    if not args.json:
+        print(f"wrote {sensor} calibration to {args.out}")
+
+
+# ----------------------------------------------------------------------------- accel
+def run_accel(args) -> int:
+    targets = None
+    n_samples = None
+    if args.poses and args.input:
+        raise KinefuseError("give either --poses or --input, not both")
+    if args.poses:
+        raw = _numeric_csv(args.poses, (2, 3), "pose")
+        if args.targets is None and args.method in (None, "ls", "procrustes"):
+            raise KinefuseError("--poses needs --targets for the ls and procrustes methods "
+                                "(or use --method full to fit |acc| = g)")
+    elif args.input:
+        rec = _read(args)
+        rec.require("acc")
+        cfg = _static_cfg(args)
+        wins = static.detect_static(rec.t, rec.acc, rec.gyr, cfg)
+        static.require_windows(wins, 3, "accelerometer poses", cfg)
+        raw = static.window_means(rec.acc, wins)
+        n_samples = int(sum(w.n for w in wins))
+    else:
+        raise KinefuseError("give --poses POSES.csv (with --targets) or --input RECORDING")
+    if args.targets:
+        targets = _numeric_csv(args.targets, (2, 3), "target")
+        if targets.shape != raw.shape:
+            src = "static windows detected" if args.input else "poses"
+            raise KinefuseError(f"{args.targets}: {targets.shape[0]} targets for {raw.shape[0]} {src} "
+                                f"({raw.shape[1]} columns each)")
+    method = args.method or ("ls" if targets is not None else "full")
+    cal = accel.fit(raw, targets, method=method, g=args.g)
+    if args.out:
+        M = np.eye(3)
+        d = cal.M.shape[0]
+        M[:d, :d] = cal.M
+        b = np.zeros(3)
+        if cal.b is not None:
+            b[:d] = cal.b
+        _save(args, "accel", M, b, method=method, model=cal.model, residual_rms=cal.residual_rms,
+              n_poses=cal.n_poses, n_samples=n_samples, det=cal.det,
+              protocol="2-D (z axis not calibrated)" if d == 2 else "3-D")
+    text = [f"accelerometer calibration ({method}, {cal.model}, {cal.n_poses} poses)",
+            "R =" if cal.b is None else "M =",
+            *("  " + "  ".join(f"{v:9.5f}" for v in row) for row in cal.M),
+            f"bias = {'none' if cal.b is None else ', '.join(f'{v:.5f}' for v in cal.b)}",
+            f"det = {cal.det:.5f}", f"residual_rms = {cal.residual_rms:.5f} m/s²"]
+    _emit(args, cal.to_json(), text)
+    return 0
+
+
+# ----------------------------------------------------------------------------- gyro
+def run_gyro(args) -> int:
+    rec = _read(args)
+    rec.require("gyr", "acc")
+    cfg = _static_cfg(args)
+    if args.rate_windows:
+        rw = _numeric_csv(args.rate_windows, (5,), "rate window")
+        cal = gyro.scale_from_recording(rec.t, rec.gyr, rec.acc, rw, cfg)
+    else:
+        cal = gyro.bias_from_static(rec.t, rec.gyr, rec.acc, cfg)
+    _save(args, "gyro", cal.M, cal.b, method=cal.method, n_windows=cal.n_windows,
+          n_samples=cal.n_samples, window_spread=cal.window_spread, residual_rms=cal.residual_rms)
+    text = [f"gyroscope calibration ({cal.method}): {cal.n_windows} windows, {cal.n_samples} samples",
+            f"bias = {', '.join(f'{v:.6f}' for v in cal.b)} rad/s "
+            f"({', '.join(f'{np.degrees(v):.3f}' for v in cal.b)} °/s)",
+            f"spread of window means = {cal.window_spread:.6f} rad/s" if cal.method == "static-bias"
+            else f"residual_rms = {cal.residual_rms:.6f} rad/s"]
+    _emit(args, cal.to_json(), text)
+    return 0
+
+
+# ----------------------------------------------------------------------------- mag
+def run_mag(args) -> int:
+    rec = _read(args)
+    samples = rec.mag_samples()
+    if samples is None:
+        raise KinefuseError(f"{args.input}: {rec.fmt} recording has no magnetometer data")
+    cal = mag.calibrate(samples, model=args.model, field_norm=args.field_norm)
+    for w in cal.warnings:
+        print(f"kinefuse: warning: {w}", file=sys.stderr)
+    _save(args, "mag", cal.W, cal.b, method=f"ellipsoid-{cal.model}", field_norm=cal.field_norm,
+          n_samples=cal.n_samples, residual_rms=cal.residual_rms,
+          norm_std_before=cal.norm_std_before, norm_std_after=cal.norm_std_after,
+          spread_reduction=cal.spread_reduction, coverage=cal.coverage)
+    text = [f"magnetometer calibration ({cal.model}, {cal.n_samples} samples)",
+            f"offset b = {', '.join(f'{v:.3f}' for v in cal.b)} µT",
+            "W =", *("  " + "  ".join(f"{v:9.5f}" for v in row) for row in cal.W),
+            f"|m| spread: {cal.norm_std_before:.3f} µT ({100 * cal.rel_spread_before:.2f} %) before, "
+            f"{cal.norm_std_after:.3f} µT ({100 * cal.rel_spread_after:.2f} %) after "
+            f"(×{cal.spread_reduction:.1f})",
+            f"coverage: {100 * cal.coverage['cells_visited']:.0f}% of directions, "
+            f"smallest spread {cal.coverage['min_eigenvalue']:.3f} (sphere 0.333)"]
+    _emit(args, cal.to_json(), text)
+    return 0

@@ -1,0 +1,171 @@
+"""``kinefuse report knee|elbow`` — clinical joint-angle reports (PNG, CSV, Markdown).
+
+Knee (seed 001 step-up protocol)::
+
+    kinefuse report knee --thigh step-thigh.csv --shank step-shank.csv \\
+        --calib-standing stand-thigh.csv stand-shank.csv \\
+        --calib-lying lie-thigh.csv lie-shank.csv \\
+        --mag-cal fig8-thigh.csv fig8-shank.csv --side right --out report/
+
+Elbow (seed 002 set-up)::
+
+    kinefuse report elbow --arm arm.csv --forearm forearm.csv --out report/
+
+Recordings may hold device quaternions (used by default) or raw IMU data (then the orientation
+filter ``--filter`` is run: ``complementary`` or ``module:function``).
+"""
+from __future__ import annotations
+
+import json
+import os
+import sys
+
+from kinefuse.host.calib import static, unitfile
+from kinefuse.host.errors import KinefuseError
+from kinefuse.host.kinematics import joint, report
+from kinefuse.host.readers import read_recording
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("report", help="clinical joint-angle reports (knee step-up, elbow)",
+                              description=__doc__.split("\n\n")[0])
+    sub = p.add_subparsers(dest="joint", metavar="JOINT", parser_class=type(p))
+    p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
+
+    def common(sp):
+        sp.add_argument("--out", required=True, metavar="DIR", help="output directory")
+        sp.add_argument("--format", dest="fmt", help="recording format (default: detected)")
+        sp.add_argument("--fs", type=float, help="sampling rate (Hz) for formats without time stamps")
+        sp.add_argument("--filter", default="complementary",
+                        help="orientation filter for raw recordings: 'complementary' or module:function")
+        sp.add_argument("--orientation", choices=["auto", "device", "filter"], default="auto",
+                        help="auto: device quaternions when present, else the filter")
+        sp.add_argument("--drop-edge-cycles", type=int, default=0, metavar="N",
+                        help="ignore the first and last N cycles (filter convergence, seed 001 drops 1)")
+        sp.add_argument("--max-cycle-rmse", type=float, default=10.0, metavar="DEG",
+                        help="reject cycles deviating more than this from the mean flexion curve")
+        sp.add_argument("--json", action="store_true", help="print the summary as one JSON object")
+
+    k = sub.add_parser("knee", help="knee step-up report (seed 001 protocol)")
+    k.add_argument("--thigh", required=True, metavar="REC", help="step-up recording, thigh sensor")
+    k.add_argument("--shank", required=True, metavar="REC", help="step-up recording, shank sensor")
+    k.add_argument("--calib-standing", nargs=2, metavar=("THIGH", "SHANK"), help="standing still recordings")
+    k.add_argument("--calib-lying", nargs=2, metavar=("THIGH", "SHANK"), help="lying supine recordings")
+    k.add_argument("--mag-cal", nargs=2, metavar=("THIGH", "SHANK"),
+                   help="figure-eight recordings for the magnetometer calibration")
+    k.add_argument("--unit-cal", nargs=2, metavar=("THIGH.json", "SHANK.json"),
+                   help="unit calibration files (kinefuse calibrate --out)")
+    k.add_argument("--field-norm", type=float, help="local magnetic field (µT) for the mag calibration")
+    k.add_argument("--mag-gate", type=float, metavar="UT",
+                   help="seed-001 gating: hold samples whose |m| leaves ±UT of the mean (seed: 0.5)")
+    k.add_argument("--side", choices=["right", "left"], default="right")
+    k.add_argument("--convention", choices=list(joint.KNEE_CONVENTIONS), default="grood-suntay")
+    common(k)
+    k.set_defaults(func=run_knee)
+
+    e = sub.add_parser("elbow", help="elbow flexion report (seed 002 set-up)")
+    e.add_argument("--arm", required=True, metavar="REC")
+    e.add_argument("--forearm", required=True, metavar="REC")
+    e.add_argument("--unit-cal", nargs=2, metavar=("ARM.json", "FOREARM.json"))
+    e.add_argument("--sequence", choices=list(joint.ELBOW_SEQUENCES), default="XYZ",
+                   help="XYZ: seed 002 eqs. 2.7-2.9; ZYX: the seed's MATLAB code")
+    e.add_argument("--init", choices=list(report.ELBOW_INITS), default="zero-at-start")
+    common(e)
+    e.set_defaults(func=run_elbow)
+
+
+def _reader(args):
+    opts = {"fs": args.fs} if args.fs else {}
+
+    def read(path):
+        if path is None:
+            return None
+        rec = read_recording(path, args.fmt, **opts)
+        return rec
+    return read
+
+
+def _pair(read, paths):
+    return None if paths is None else (read(paths[0]), read(paths[1]))
+
+
+class _Progress:
+    """rich progress on stderr (transient); silent when stderr is not a terminal."""
+
+    def __init__(self, total: int):
+        self.total = total
+        self._p = None
+
+    def __enter__(self):
+        if sys.stderr.isatty():
+            from rich.console import Console
+            from rich.progress import BarColumn, Progress, TextColumn
+            self._p = Progress(TextColumn("{task.description}"), BarColumn(),
+                               console=Console(stderr=True), transient=True)
+            self._p.__enter__()
+            self._task = self._p.add_task("reading", total=self.total)
+        return self
+
+    def __call__(self, msg: str):
+        if self._p is not None:
+            self._p.update(self._task, advance=1, description=msg)
+
+    def __exit__(self, *exc):
+        if self._p is not None:
+            self._p.__exit__(*exc)
+
+
+def _finish(args, kind, res, title, inputs) -> int:
+    cs = report.detect_cycles(res, kind, drop_edge=args.drop_edge_cycles,
+                              max_rmse_deg=args.max_cycle_rmse)
+    summary = report.write_report(args.out, kind, res, cs, title=title, inputs=inputs)
+    for w in summary["warnings"]:
+        print(f"kinefuse: warning: {w}", file=sys.stderr)
+    if args.json:
+        print(json.dumps(summary))
+    else:
+        rom = summary["range_of_motion_deg"]
+        print(f"{title}: {summary['n_cycles_kept']} of {summary['n_cycles_detected']} cycles")
+        for c, v in rom.items():
+            print(f"  {c:<24} ROM {v['mean']:6.1f} ± {v['sd']:4.1f}°  (max {v['max_mean']:6.1f}, "
+                  f"min {v['min_mean']:6.1f})")
+        print(f"  {res.convention}")
+        print(f"wrote {', '.join(summary['files'])} to {os.path.abspath(args.out)}")
+    return 0
+
+
+def run_knee(args) -> int:
+    if (args.calib_standing is None) != (args.calib_lying is None):
+        raise KinefuseError("--calib-standing and --calib-lying go together (two-posture method)")
+    read = _reader(args)
+    units = None
+    if args.unit_cal:
+        units = (unitfile.load(args.unit_cal[0]), unitfile.load(args.unit_cal[1]))
+    with _Progress(7) as prog:
+        prog("reading recordings")
+        thigh, shank = read(args.thigh), read(args.shank)
+        res = report.knee_from_recordings(
+            thigh, shank, standing=_pair(read, args.calib_standing), lying=_pair(read, args.calib_lying),
+            mag_recordings=_pair(read, args.mag_cal), unit_calibrations=units, filter=args.filter,
+            orientation=args.orientation, side=args.side, convention=args.convention,
+            field_norm=args.field_norm, mag_gate=args.mag_gate,
+            static_config=static.StaticConfig(), progress=prog)
+    inputs = {"thigh": args.thigh, "shank": args.shank,
+              "standing": " ".join(args.calib_standing or []), "lying": " ".join(args.calib_lying or []),
+              "magnetometer calibration": " ".join(args.mag_cal or []),
+              "unit calibration": " ".join(args.unit_cal or [])}
+    return _finish(args, "knee", res, f"{args.side.capitalize()} knee, step-up", inputs)
+
+
+def run_elbow(args) -> int:
+    read = _reader(args)
+    units = None
+    if args.unit_cal:
+        units = (unitfile.load(args.unit_cal[0]), unitfile.load(args.unit_cal[1]))
+    with _Progress(3) as prog:
+        prog("reading recordings")
+        res = report.elbow_from_recordings(read(args.arm), read(args.forearm), filter=args.filter,
+                                           orientation=args.orientation, sequence=args.sequence,
+                                           init=args.init, unit_calibrations=units, progress=prog)
+    inputs = {"arm": args.arm, "forearm": args.forearm, "unit calibration": " ".join(args.unit_cal or [])}
+    return _finish(args, "elbow", res, "Elbow flexion–extension", inputs)

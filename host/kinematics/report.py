@@ -1,0 +1,420 @@
+"""Clinical knee (seed 001 step-up) and elbow (seed 002) reports.
+
+Knee protocol (seed 001 §8.4): magnetometer calibration (figure-eight, 60 s, per sensor),
+standing still 30 s, lying supine 30 s, then ≥ 10 step-up cycles; one recording per sensor
+and task.  Pipeline, in order — each step is reported in the summary:
+
+1. optional unit calibration files (accel/gyro/mag affine maps) are applied to every sample;
+2. magnetometer hard/soft iron from the figure-eight recordings (ellipsoid fit), or from the
+   unit file; without either the magnetometer is *not* used (raw hard iron of tens of µT would
+   corrupt the heading) and the filter runs in 6-D;
+3. sensor-to-segment offsets q_SB from the standing and lying recordings (two-posture method,
+   mean accelerometer over the longest static window of each); without them the sensor axes
+   are taken as the segment axes (seed 001 §8.2 "manual" mounting) — flagged in the report;
+4. sensor orientations q_GS: the device's own quaternions if present (``orientation="auto"``
+   or ``"device"``), else the orientation filter (a parameter; see :mod:`.orientation`) run on
+   bias-corrected gyroscope data (bias from static windows);
+5. the shank stream is interpolated onto the thigh time base (both recordings are assumed to
+   start together, as in a MetaBase session); overlapping span only;
+6. heading: with device quaternions or a 6-D filter the two sensors do not share a heading
+   reference, so the shank heading is aligned to the thigh's in the standing posture (device
+   quaternions) or in the first still period of the task; with a calibrated magnetometer both
+   already share magnetic north and nothing is changed;
+7. q_joint = q_GB_thigh* ⊗ q_GB_shank and knee angles (convention named in every output);
+8. cycles (:mod:`.cycles`), 0–100 % normalisation, mean ± SD, range of motion, outputs:
+   ``knee_angles.png``, ``knee_timeseries.csv``, ``knee_cycles.csv``, ``knee_mean_sd.csv``,
+   ``knee_summary.md``.
+"""
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from kinefuse.host.calib import gyro as gyro_cal
+from kinefuse.host.calib import mag as mag_cal
+from kinefuse.host.calib import static as S
+from kinefuse.host.calib import unitfile
+from kinefuse.host.errors import KinefuseError
+from kinefuse.host.kinematics import alignment, cycles, joint
+from kinefuse.host.kinematics import orientation as O
+from kinefuse.host.kinematics import quat as Q
+from kinefuse.host.readers.recording import Recording
+
+
+@dataclass
+class JointResult:
+    t: np.ndarray                  # s, from the start of the overlap
+    angles: np.ndarray             # N×3 deg
+    columns: tuple
+    convention: str                # one-line description for headers
+    q_joint: np.ndarray
+    info: dict = field(default_factory=dict)
+    warnings: list = field(default_factory=list)
+
+
+def _note(progress, msg):
+    if progress is not None:
+        progress(msg)
+
+
+def _apply_unit(rec: Recording, doc: dict | None) -> Recording:
+    if doc is None:
+        return rec
+    r = Recording(**{**rec.__dict__})
+    if rec.acc is not None:
+        r.acc = unitfile.apply(doc, "accel", rec.acc)
+    if rec.gyr is not None:
+        r.gyr = unitfile.apply(doc, "gyro", rec.gyr)
+    if rec.mag is not None:
+        r.mag = unitfile.apply(doc, "mag", rec.mag)
+    if rec.mag_native is not None:
+        r.mag_native = unitfile.apply(doc, "mag", rec.mag_native)
+    return r
+
+
+def _posture_mean(rec: Recording, name: str, cfg: S.StaticConfig) -> tuple[np.ndarray, dict]:
+    rec.require("acc")
+    wins = S.detect_static(rec.t, rec.acc, rec.gyr, cfg)
+    S.require_windows(wins, 1, f"{name} posture ({rec.source})", cfg)
+    w = max(wins, key=lambda w: w.n)
+    return rec.acc[w.start:w.stop].mean(axis=0), {"window_s": [w.t0, w.t1], "samples": w.n}
+
+
+def _gyro_bias(recs: list[Recording], cfg: S.StaticConfig) -> tuple[np.ndarray, str]:
+    for r in recs:
+        if r is None or r.gyr is None or r.acc is None:
+            continue
+        wins = S.detect_static(r.t, r.acc, r.gyr, cfg)
+        if sum(w.n for w in wins) * (1.0 / r.fs) >= 1.0:
+            c = gyro_cal.bias_from_static(r.t, r.gyr, r.acc, cfg, wins)
+            return c.b, f"{c.n_samples} static samples of {os.path.basename(r.source)}"
+    return np.zeros(3), "none (no static period ≥ 1 s found; gyroscope used as is)"
+
+
+def _interp_quat(t_src, q_src, t_dst) -> np.ndarray:
+    """Normalised linear interpolation of a sign-continuous quaternion stream."""
+    q = Q.unwrap_sign(q_src)
+    out = np.column_stack([np.interp(t_dst, t_src, q[:, j]) for j in range(4)])
+    return Q.normalize(out)
+
+
+def _first_still(rec: Recording, cfg: S.StaticConfig, i_max: int | None = None) -> slice:
+    if rec.acc is not None:
+        wins = S.detect_static(rec.t, rec.acc, rec.gyr, cfg)
+        if wins:
+            w = wins[0]
+            return slice(w.start, w.stop)
+    n = max(2, int(0.5 * rec.fs)) if np.isfinite(rec.fs) else 10
+    return slice(0, min(n, len(rec.t)))
+
+
+def sensor_orientation(rec: Recording, *, filter="complementary", orientation: str = "auto",
+                       mag: np.ndarray | None = None, gyro_bias=None) -> tuple[np.ndarray, str]:
+    """q_GS for one recording: device quaternions or the filter; returns (q, description)."""
+    if orientation not in ("auto", "device", "filter"):
+        raise KinefuseError(f"orientation must be auto, device or filter, not {orientation!r}")
+    if orientation in ("auto", "device") and rec.quat is not None:
+        return Q.normalize(rec.quat), "device quaternions"
+    if orientation == "device":
+        raise KinefuseError(f"{rec.source}: no device quaternions in this {rec.fmt} recording")
+    rec.require("acc", "gyr")
+    f = O.resolve_filter(filter)
+    g = rec.gyr - (np.zeros(3) if gyro_bias is None else gyro_bias)
+    q = np.asarray(f(rec.t, rec.acc, g, mag), dtype=float)
+    if q.shape != (len(rec.t), 4) or not np.all(np.isfinite(q)):
+        raise KinefuseError(f"orientation filter {filter!r} returned {q.shape} values or non-finite "
+                            f"numbers; expected {len(rec.t)}×4 quaternions")
+    name = filter if isinstance(filter, str) else getattr(filter, "__name__", "custom")
+    return Q.normalize(q), f"filter '{name}' ({'9-D' if mag is not None else '6-D'})"
+
+
+def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, lying=None,
+                         mag_recordings=None, mag_calibrations=None, unit_calibrations=None,
+                         filter="complementary", orientation: str = "auto", side: str = "right",
+                         convention: str = "grood-suntay", field_norm: float | None = None,
+                         mag_gate: float | None = None,
+                         static_config: S.StaticConfig = S.StaticConfig(),
+                         progress: Callable | None = None) -> JointResult:
+    """Knee angles from thigh/shank recordings (see the module docstring for the pipeline).
+
+    ``standing``/``lying``/``mag_recordings``: (thigh, shank) Recording pairs or None;
+    ``mag_calibrations``: (thigh, shank) MagCalibration pairs (alternative to recordings);
+    ``unit_calibrations``: (thigh, shank) unit-file dicts or None.
+    """
+    info: dict = {"side": side, "convention": convention}
+    warnings: list[str] = []
+    units = unit_calibrations or (None, None)
+    segs = ("thigh", "shank")
+    task = [_apply_unit(thigh, units[0]), _apply_unit(shank, units[1])]
+    stand = [None, None] if standing is None else [_apply_unit(r, u) for r, u in zip(standing, units)]
+    lie = [None, None] if lying is None else [_apply_unit(r, u) for r, u in zip(lying, units)]
+
+    # --- 2. magnetometer
+    _note(progress, "magnetometer calibration")
+    mags = [None, None]
+    for k in range(2):
+        cal = None
+        if mag_calibrations is not None and mag_calibrations[k] is not None:
+            cal = mag_calibrations[k]
+        elif mag_recordings is not None and mag_recordings[k] is not None:
+            mr = _apply_unit(mag_recordings[k], units[k])
+            samples = mr.mag_samples()
+            if samples is None:
+                raise KinefuseError(f"{mr.source}: no magnetometer data for the calibration")
+            cal = mag_cal.calibrate(samples, field_norm=field_norm)
+            warnings += [f"{segs[k]} magnetometer: {w}" for w in cal.warnings]
+        unit_has_mag = units[k] is not None and "mag" in units[k]["sensors"]
+        if task[k].mag is not None and (cal is not None or unit_has_mag):
+            m = cal.apply(task[k].mag) if cal is not None else task[k].mag
+            if mag_gate is not None:
+                m, keep = mag_cal.gate_norm(m, mag_gate)
+                info[f"{segs[k]}_mag_gated_fraction"] = float(1 - keep.mean())
+            mags[k] = m
+            if cal is not None:
+                info[f"{segs[k]}_mag"] = {"offset_uT": cal.b.tolist(), "field_norm_uT": cal.field_norm,
+                                          "spread_reduction": cal.spread_reduction}
+            else:
+                info[f"{segs[k]}_mag"] = "from unit calibration file"
+    use_mag = all(m is not None for m in mags)
+    if not use_mag and any(r.mag is not None for r in task):
+        warnings.append("magnetometer present but not calibrated for both sensors: not used "
+                        "(6-D orientation; headings aligned at the start of the task)")
+    if not use_mag:
+        mags = [None, None]
+
+    # --- 3. sensor-to-segment offsets
+    _note(progress, "sensor-to-segment calibration")
+    q_SB = [Q.identity(), Q.identity()]
+    if stand[0] is not None and lie[0] is not None:
+        for k in range(2):
+            a_st, i_st = _posture_mean(stand[k], f"{segs[k]} standing", static_config)
+            a_ly, i_ly = _posture_mean(lie[k], f"{segs[k]} lying", static_config)
+            q_SB[k] = alignment.two_posture(a_st, a_ly)
+            info[f"{segs[k]}_mounting_deg"] = float(np.degrees(Q.angle_between(q_SB[k], Q.identity())))
+            info[f"{segs[k]}_postures"] = {"standing": i_st, "lying": i_ly}
+        info["alignment"] = "two-posture (seed 001 §8.3)"
+    else:
+        info["alignment"] = "none: sensor axes taken as segment axes (X medio-lateral to the left, Y up, Z anterior)"
+        warnings.append("no standing/lying calibration: knee angles assume the sensors were "
+                        "mounted exactly along the segment axes")
+
+    # --- 4. orientations
+    q_GS = []
+    how = []
+    for k in range(2):
+        _note(progress, f"{segs[k]} orientation")
+        bias, bias_src = (np.zeros(3), "n/a")
+        if not (orientation in ("auto", "device") and task[k].quat is not None):
+            bias, bias_src = _gyro_bias([task[k], stand[k], lie[k]], static_config)
+        q, desc = sensor_orientation(task[k], filter=filter, orientation=orientation,
+                                     mag=mags[k], gyro_bias=bias)
+        q_GS.append(q)
+        how.append(desc)
+        info[f"{segs[k]}_orientation"] = desc
+        info[f"{segs[k]}_gyro_bias_rad_s"] = {"value": np.asarray(bias).tolist(), "source": bias_src}
+
+    # --- 5. common time base
+    t_th = task[0].t - task[0].t[0]
+    t_sh = task[1].t - task[1].t[0]
+    t_end = min(t_th[-1], t_sh[-1])
+    sel = t_th <= t_end
+    t = t_th[sel]
+    qT = q_GS[0][sel]
+    qS = _interp_quat(t_sh, q_GS[1], t)
+    if abs(t_th[-1] - t_sh[-1]) > 1.0:
+        warnings.append(f"thigh and shank recordings differ in length by {abs(t_th[-1] - t_sh[-1]):.1f} s; "
+                        f"the overlap ({t_end:.1f} s) is used")
+
+    # --- 6. segments and heading
+    qB_T = alignment.segment_orientation(qT, q_SB[0])
+    qB_S = alignment.segment_orientation(qS, q_SB[1])
+    device = all(d == "device quaternions" for d in how)
+    if device or not use_mag:
+        ref = None
+        if device and stand[0] is not None and stand[0].quat is not None and stand[1].quat is not None:
+            st = [_first_still(r, static_config) for r in stand]
+            D = O.yaw_alignment(alignment.segment_orientation(stand[0].quat[st[0]], q_SB[0]),
+                                alignment.segment_orientation(stand[1].quat[st[1]], q_SB[1]))
+            ref = "standing posture"
+        else:
+            st = _first_still(task[0], static_config)
+            i0, i1 = st.start, min(st.stop, len(t))
+            D = O.yaw_alignment(qB_T[i0:i1], qB_S[i0:i1])
+            ref = f"first still period of the task ({t[i0]:.1f}–{t[i1 - 1]:.1f} s)"
+        qB_S = Q.mul(D, qB_S)
+        info["heading_alignment"] = {"reference": ref,
+                                     "shank_yaw_change_deg": float(np.degrees(Q.to_euler(D, "ZYX")[0]))}
+    else:
+        info["heading_alignment"] = "none (both sensors referenced to magnetic north)"
+
+    # --- 7. angles
+    _note(progress, "knee angles")
+    qj = joint.joint_quaternion(qB_T, qB_S)
+    ang = joint.knee_angles(qj, convention=convention, side=side)
+    return JointResult(t, ang, joint.KNEE_COLUMNS, joint.knee_convention_text(convention, side),
+                       qj, info, warnings + thigh.warnings + shank.warnings)
+
+
+ELBOW_COLUMNS = ("flexion_deg", "abduction_deg", "internal_rotation_deg")
+ELBOW_INITS = ("zero-at-start", "seed002", "none")
+
+
+def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter="complementary",
+                          orientation: str = "auto", sequence: str = "XYZ",
+                          init: str = "zero-at-start", unit_calibrations=None,
+                          static_config: S.StaticConfig = S.StaticConfig(),
+                          progress: Callable | None = None) -> JointResult:
+    """Elbow angles for the seed-002 set-up (arm = proximal, forearm = distal).
+
+    ``init``: ``zero-at-start`` — the arm sensor axes are the segment axes and the forearm frame
+    coincides with the arm frame in the first still period (angles 0 there); ``seed002`` — eqs.
+    2.1–2.4 with GB q_0 = identity: both segment frames coincide with the earth frame in the
+    first still period; ``none`` — raw sensor quaternions (what the seed's MATLAB code does).
+    """
+    if init not in ELBOW_INITS:
+        raise KinefuseError(f"init must be one of {', '.join(ELBOW_INITS)}, not {init!r}")
+    units = unit_calibrations or (None, None)
+    recs = [_apply_unit(arm, units[0]), _apply_unit(forearm, units[1])]
+    info: dict = {"sequence": sequence, "init": init}
+    qs = []
+    for k, name in enumerate(("arm", "forearm")):
+        _note(progress, f"{name} orientation")
+        bias, src = (np.zeros(3), "n/a")
+        if not (orientation in ("auto", "device") and recs[k].quat is not None):
+            bias, src = _gyro_bias([recs[k]], static_config)
+        q, desc = sensor_orientation(recs[k], filter=filter, orientation=orientation, gyro_bias=bias)
+        qs.append(q)
+        info[f"{name}_orientation"] = desc
+    t_a = recs[0].t - recs[0].t[0]
+    t_f = recs[1].t - recs[1].t[0]
+    t_end = min(t_a[-1], t_f[-1])
+    sel = t_a <= t_end
+    t = t_a[sel]
+    qA = qs[0][sel]
+    qF = _interp_quat(t_f, qs[1], t)
+    st = _first_still(recs[0], static_config)
+    i0, i1 = st.start, min(st.stop, len(t))
+    if init == "zero-at-start":
+        q_SB_A = Q.identity()
+        q_SB_F = Q.normalize(Q.mul(Q.conj(qF[i0:i1]), qA[i0:i1]).mean(axis=0))
+    elif init == "seed002":
+        q_SB_A = alignment.static_pose_offset(qA[i0])
+        q_SB_F = alignment.static_pose_offset(qF[i0])
+    else:
+        q_SB_A = q_SB_F = Q.identity()
+    info["reference_window_s"] = [float(t[i0]), float(t[i1 - 1])]
+    qj = joint.joint_quaternion(qA, qF, q_SB_A, q_SB_F)
+    ang = joint.elbow_angles(qj, sequence=sequence)
+    return JointResult(t, ang, ELBOW_COLUMNS, joint.elbow_convention_text(sequence), qj, info,
+                       arm.warnings + forearm.warnings)
+
+
+# ----------------------------------------------------------------------------- outputs
+def detect_cycles(res: JointResult, kind: str, *, drop_edge: int = 0,
+                  max_rmse_deg: float = 10.0) -> cycles.CycleSet:
+    flex = res.angles[:, 0]
+    if kind == "knee":
+        bounds = cycles.step_up_bounds(res.t, flex)
+    else:
+        s = flex - np.median(flex[: max(2, len(flex) // 20)])
+        sig = -s if abs(s.min()) > abs(s.max()) else s  # flexion may be negative about X
+        bounds = cycles.between_minima_bounds(res.t, sig)
+    return cycles.normalise(res.t, res.angles, bounds, drop_edge=drop_edge, max_rmse_deg=max_rmse_deg)
+
+
+def _plot(path: str, res: JointResult, cs: cycles.CycleSet, title: str) -> None:
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    pct = np.linspace(0, 100, cycles.N_POINTS)
+    fig = Figure(figsize=(8.0, 9.0), dpi=110)
+    FigureCanvasAgg(fig)
+    axes = fig.subplots(3, 1, sharex=True)
+    labels = [c.replace("_deg", "").replace("_", " ") for c in res.columns]
+    for j, ax in enumerate(axes):
+        for c in cs.curves:
+            ax.plot(pct, c[:, j], color="0.75", lw=0.7)
+        m, sd = cs.mean[:, j], cs.sd[:, j]
+        ax.fill_between(pct, m - sd, m + sd, color="tab:blue", alpha=0.25, lw=0, label="mean ± SD")
+        ax.plot(pct, m, color="tab:blue", lw=2.0, label="mean")
+        ax.set_ylabel(f"{labels[j]} (°)")
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(loc="best", fontsize=8)
+    axes[-1].set_xlabel("cycle (%)")
+    fig.suptitle(f"{title}\n{len(cs.curves)} cycles; {res.convention}", fontsize=8)
+    fig.savefig(path)
+
+
+def _csv(path: str, header_comment: str, cols: list[str], data: np.ndarray, fmt="%.4f") -> None:
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(f"# {header_comment}\n")
+        f.write(",".join(cols) + "\n")
+        np.savetxt(f, data, delimiter=",", fmt=fmt)
+
+
+def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet, *,
+                 title: str, inputs: dict) -> dict:
+    """Write PNG, CSVs and Markdown for ``kind`` ('knee' or 'elbow'); returns the summary."""
+    try:
+        os.makedirs(out_dir, exist_ok=True)
+    except OSError as exc:
+        raise KinefuseError(f"cannot create output directory {out_dir}: {exc.strerror}") from None
+    p = lambda name: os.path.join(out_dir, f"{kind}_{name}")  # noqa: E731
+    cols = list(res.columns)
+    # time series with the cycle index (−1 outside kept cycles)
+    cyc_idx = np.full(len(res.t), -1.0)
+    for n, k in enumerate(cs.kept):
+        i0, i1 = cs.bounds[k]
+        cyc_idx[i0:i1] = n + 1
+    _csv(p("timeseries.csv"), res.convention, ["t_s"] + cols + ["cycle"],
+         np.column_stack([res.t, res.angles, cyc_idx]))
+    pct = np.linspace(0, 100, cycles.N_POINTS)
+    rows = [np.column_stack([np.full(len(pct), n + 1), pct, c]) for n, c in enumerate(cs.curves)]
+    _csv(p("cycles.csv"), res.convention, ["cycle", "percent"] + cols, np.vstack(rows))
+    msd = np.column_stack([pct] + [x for j in range(3) for x in (cs.mean[:, j], cs.sd[:, j])])
+    _csv(p("mean_sd.csv"), res.convention,
+         ["percent"] + [f"{c.replace('_deg', '')}_{s}_deg" for c in cols for s in ("mean", "sd")], msd)
+    _plot(p("angles.png"), res, cs, title)
+    rom = cs.rom()
+    summary = {
+        "kind": kind, "title": title, "convention": res.convention, "inputs": inputs,
+        "n_cycles_detected": len(cs.bounds), "n_cycles_kept": len(cs.curves),
+        "rejected_cycles": [{"cycle": k + 1, "rmse_deg": e} for k, e in cs.rejected],
+        "cycle_duration_s": {"mean": float(cs.durations_s.mean()),
+                             "sd": float(cs.durations_s.std(ddof=1)) if len(cs.durations_s) > 1 else 0.0},
+        "range_of_motion_deg": {c: {"mean": float(rom["rom_mean"][j]), "sd": float(rom["rom_sd"][j]),
+                                    "max_mean": float(rom["max_mean"][j]),
+                                    "min_mean": float(rom["min_mean"][j])} for j, c in enumerate(cols)},
+        "processing": res.info, "warnings": list(res.warnings),
+        "files": [os.path.basename(p(x)) for x in ("angles.png", "timeseries.csv", "cycles.csv",
+                                                    "mean_sd.csv", "summary.md")],
+    }
+    _markdown(p("summary.md"), summary)
+    return summary
+
+
+def _markdown(path: str, s: dict) -> None:
+    L = [f"# {s['title']}", "", f"**Convention:** {s['convention']}", "", "## Inputs", ""]
+    L += [f"- {k}: `{v}`" for k, v in s["inputs"].items() if v]
+    L += ["", "## Cycles", "",
+          f"- detected: {s['n_cycles_detected']}, kept: {s['n_cycles_kept']}"
+          f" (cycles deviating > 10° RMS from the mean flexion curve are rejected)",
+          f"- duration: {s['cycle_duration_s']['mean']:.2f} ± {s['cycle_duration_s']['sd']:.2f} s"]
+    for r in s["rejected_cycles"]:
+        L.append(f"- rejected cycle {r['cycle']}: {r['rmse_deg']:.1f}° RMS from the mean")
+    L += ["", "## Range of motion (per cycle, mean ± SD over cycles)", "",
+          "| angle | ROM (°) | max (°) | min (°) |", "|---|---|---|---|"]
+    for c, v in s["range_of_motion_deg"].items():
+        L.append(f"| {c.replace('_deg', '').replace('_', ' ')} | {v['mean']:.1f} ± {v['sd']:.1f} | "
+                 f"{v['max_mean']:.1f} | {v['min_mean']:.1f} |")
+    L += ["", "## Processing", ""]
+    for k, v in s["processing"].items():
+        L.append(f"- {k.replace('_', ' ')}: {v}")
+    if s["warnings"]:
+        L += ["", "## Warnings", ""] + [f"- {w}" for w in s["warnings"]]
+    L += ["", "## Files", ""] + [f"- {f}" for f in s["files"]]
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("\n".join(L) + "\n")

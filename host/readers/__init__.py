@@ -1,0 +1,59 @@
+"""File-format readers returning one common :class:`Recording` (t s, acc m/s², gyr rad/s,
+mag µT, device quaternion (w,x,y,z) if present, extra channels, metadata).
+
+Formats (``fmt`` names): ``xsens-dot``, ``matrix``, ``metabase``, ``seed004-arduino``,
+``broad-mat``, ``kinefuse-csv``.  :func:`read_recording` detects the format from the header
+(or the ``.mat`` extension) unless ``fmt`` is given.  Every reader fails with a one-line
+:class:`ReaderError` naming the file, the line and the problem.
+"""
+from __future__ import annotations
+
+import os
+
+from kinefuse.host.readers import broad, kinefuse_csv, matrix, metabase, seed004, xsens_dot
+from kinefuse.host.readers.recording import ReaderError, Recording
+
+READERS = {
+    xsens_dot.FORMAT: xsens_dot.read,
+    matrix.FORMAT: matrix.read,
+    metabase.FORMAT: metabase.read,
+    seed004.FORMAT: seed004.read,
+    broad.FORMAT: broad.read,
+    kinefuse_csv.FORMAT: kinefuse_csv.read,
+}
+
+__all__ = ["READERS", "ReaderError", "Recording", "detect_format", "read_recording"]
+
+
+def detect_format(path: str) -> str:
+    if not os.path.exists(path):
+        raise ReaderError(path, "file not found")
+    if os.path.isdir(path):
+        raise ReaderError(path, "is a directory; give one recording file")
+    if path.lower().endswith(".mat"):
+        return broad.FORMAT
+    try:
+        with open(path, encoding="utf-8-sig", errors="replace") as f:
+            head = [next(f, "") for _ in range(25)]
+    except OSError as exc:
+        raise ReaderError(path, f"cannot open ({exc.strerror})") from None
+    from kinefuse.host.readers.table import sniff_sep
+    sep = sniff_sep([l for l in head if l.strip()][:10] or [","])
+    for line in head:
+        cells = [c.strip().strip('"') for c in line.rstrip("\r\n").split(sep)]
+        for mod in (xsens_dot, matrix, metabase, kinefuse_csv):
+            if mod.sniff(cells):
+                return mod.FORMAT
+    if seed004.sniff_lines(head):
+        return seed004.FORMAT
+    raise ReaderError(path, "unknown recording format (expected Xsens DOT, MATRIX, MetaBase, "
+                            "seed-004 Arduino or kinefuse CSV, or a BROAD .mat)")
+
+
+def read_recording(path: str, fmt: str | None = None, **options) -> Recording:
+    """Read ``path`` (format auto-detected unless ``fmt``); options go to the reader
+    (``fs`` for MATRIX/seed-004, ``gyro_range_dps`` for MetaBase, ``acc_range_g`` for MATRIX)."""
+    fmt = fmt or detect_format(path)
+    if fmt not in READERS:
+        raise ReaderError(path, f"unknown format {fmt!r}; choose one of {', '.join(READERS)}")
+    return READERS[fmt](path, **options)

@@ -1,0 +1,50 @@
+"""BROAD benchmark trial (.mat, MATLAB v5): imu_acc m/s², imu_gyr rad/s, imu_mag µT.
+
+Laidig, Caruso, Cereatti, Seel, Data 6(7):72, 2021 (CC BY 4.0).  ``opt_quat`` (optical
+reference, sensor → East-North-Up, NaN where markers were lost) and ``movement`` go to
+``channels`` (``opt_quat_wxyz``, ``movement``) — they are a reference, not a device estimate.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from kinefuse.host.readers.recording import ReaderError, Recording, check_acc_units
+
+FORMAT = "broad-mat"
+
+
+def read(path: str, **_) -> Recording:
+    try:
+        import scipy.io
+        d = scipy.io.loadmat(path)
+    except FileNotFoundError:
+        raise ReaderError(path, "file not found") from None
+    except Exception as exc:  # scipy raises several types for non-MAT files
+        raise ReaderError(path, f"not a MATLAB v5 file ({type(exc).__name__})") from None
+    for k in ("imu_acc", "imu_gyr", "sampling_rate"):
+        if k not in d:
+            raise ReaderError(path, f"missing variable {k!r} (not a BROAD trial?)")
+    fs = float(np.asarray(d["sampling_rate"]).ravel()[0])
+    if not fs > 0:
+        raise ReaderError(path, f"sampling_rate {fs} is not positive")
+    acc = np.asarray(d["imu_acc"], dtype=float)
+    gyr = np.asarray(d["imu_gyr"], dtype=float)
+    n = len(acc)
+    for name, a in (("imu_acc", acc), ("imu_gyr", gyr)):
+        if a.shape != (n, 3):
+            raise ReaderError(path, f"{name} has shape {a.shape}, expected N×3")
+        if not np.all(np.isfinite(a)):
+            raise ReaderError(path, f"{name} has non-finite values")
+    check_acc_units(path, acc, "m/s^2")
+    rec = Recording(t=np.arange(n) / fs, acc=acc, gyr=gyr, fs=fs, source=path, fmt=FORMAT,
+                    metadata={"frame": "ENU reference (opt_quat)", "licence": "CC BY 4.0, BROAD"})
+    if "imu_mag" in d:
+        mag = np.asarray(d["imu_mag"], dtype=float)
+        if mag.shape != (n, 3):
+            raise ReaderError(path, f"imu_mag has shape {mag.shape}, expected N×3")
+        rec.mag = mag
+    if "opt_quat" in d:
+        rec.channels["opt_quat_wxyz"] = np.asarray(d["opt_quat"], dtype=float)
+    if "movement" in d:
+        rec.channels["movement"] = np.asarray(d["movement"], dtype=float).ravel()
+    return rec

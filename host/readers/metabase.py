@@ -1,0 +1,180 @@
+"""MetaMotionR / MetaBase CSV (seed 001 §7.2, §8.5–8.6, Fig. 8.6).
+
+Two layouts are accepted.
+
+*Combined sheet* (seed 001 Fig. 8.6, one file per sensor unit, saved as CSV)::
+
+    elapsed (s), x-axis (g), y-axis (g), z-axis (g), x-axis (deg/s), y-axis (deg/s),
+    z-axis (deg/s), elapsed (s), x-axis (T), y-axis (T), z-axis (T), elapsed (s),
+    temperature (C)
+
+  Accelerometer and gyroscope share the first ``elapsed (s)`` column (100 Hz); the
+  magnetometer (20 Hz) and thermometer (1 Hz) have their own ``elapsed (s)`` columns and
+  their cells end early (blank below).
+
+*Native MetaBase files*, one per sensor, header
+  ``epoc (ms), timestamp (±hh:mm), elapsed (s), x-axis (<unit>), y-axis (…), z-axis (…)``
+  with unit ``g``, ``deg/s`` or ``T``.  Give any one of them: siblings from the same session
+  (file names that differ only in ``Accelerometer``/``Gyroscope``/``Magnetometer``) are found
+  and merged.  Assumption: the file names follow MetaBase's
+  ``<device>_<date>_<MAC>_<Sensor>_<rate>Hz_<fw>.csv`` pattern.
+
+Units: acc g → m/s², gyro °/s → rad/s, mag T → µT.  The magnetometer is held onto the 100 Hz
+time base (``mag``) and kept at its native rate (``mag_t``, ``mag_native``).  Acc and gyro
+streams of different lengths are cut to the shorter (seed 001 ``revision_NAN``).  The gyroscope
+value grid is checked against the configured range (``gyro_range_dps``, seed 001 saw ±2000 °/s
+quantisation although ±500 °/s was configured).
+"""
+from __future__ import annotations
+
+import glob
+import os
+import re
+
+import numpy as np
+
+from kinefuse.host.readers import table as T
+from kinefuse.host.readers.recording import (DEG, G, ReaderError, Recording, check_acc_units,
+                                             check_gyro_range, check_time, zero_order_hold)
+
+FORMAT = "metabase"
+_SENSORS = ("Accelerometer", "Gyroscope", "Magnetometer")
+
+
+def sniff(header_cells: list[str]) -> bool:
+    low = [c.strip().lower() for c in header_cells]
+    return "elapsed (s)" in low and any(c.startswith("x-axis (") for c in low)
+
+
+def _axes(tab: T.Table, unit: str, start: int) -> list[int]:
+    return [tab.col(f"{a}-axis ({unit})", start=start) for a in "xyz"]
+
+
+def _check_mag_units(path: str, mag_T: np.ndarray) -> None:
+    med = float(np.median(np.linalg.norm(mag_T, axis=1)))
+    if med > 1e-2:
+        raise ReaderError(path, f"magnetometer median magnitude is {med:.3g}: the header says "
+                                f"tesla but the values look like µT or mG")
+
+
+def _column_stream(path, tab, t_idx, val_idx, name):
+    """Numeric stream whose cells may end early; returns (t, x, lines)."""
+    arr = tab.numeric([t_idx] + val_idx, allow_empty=True)
+    filled = np.isfinite(arr).all(axis=1)
+    partial = np.isfinite(arr).any(axis=1) & ~filled
+    if partial.any():
+        k = int(np.argmax(partial))
+        raise ReaderError(path, f"{name}: incomplete row (some axes empty)", int(tab.lines[k]))
+    # once the stream ends it must not restart
+    ends = np.flatnonzero(~filled)
+    if len(ends) and filled[ends[0]:].any():
+        k = ends[0] + int(np.argmax(filled[ends[0]:]))
+        raise ReaderError(path, f"{name}: blank cell before more data", int(tab.lines[ends[0]]))
+    n = int(filled.sum())
+    return arr[:n, 0], arr[:n, 1:], tab.lines[:n]
+
+
+def _read_combined(path: str, tab: T.Table, gyro_range_dps):
+    warnings: list[str] = []
+    e0 = tab.col("elapsed (s)")
+    t, acc_g, ln = _column_stream(path, tab, e0, _axes(tab, "g", e0), "accelerometer")
+    t2, gyr, _ = _column_stream(path, tab, e0, _axes(tab, "deg/s", e0), "gyroscope")
+    n = min(len(t), len(t2))
+    if len(t) != len(t2):
+        warnings.append(f"{path}: accelerometer has {len(t)} and gyroscope {len(t2)} samples; "
+                        f"cut to {n}")
+    t, acc_g, gyr, ln = t[:n], acc_g[:n], gyr[:n], ln[:n]
+    mag_t = mag = None
+    low = [h.strip().lower() for h in tab.header]
+    if "x-axis (t)" in low:
+        jm = low.index("x-axis (t)")
+        em = max(i for i in range(jm) if low[i] == "elapsed (s)")
+        mag_t, mag, mln = _column_stream(path, tab, em, _axes(tab, "T", em), "magnetometer")
+        fsm, w = check_time(path, mag_t, mln, what="magnetometer elapsed (s)")
+        warnings += w
+    temp = None
+    if "temperature (c)" in low:
+        jt = low.index("temperature (c)")
+        et = max(i for i in range(jt) if low[i] == "elapsed (s)")
+        tt, tv, _ = _column_stream(path, tab, et, [jt], "temperature")
+        temp = (tt, tv[:, 0])
+    return t, acc_g, gyr, ln, mag_t, mag, temp, warnings
+
+
+def _siblings(path: str) -> dict:
+    base = os.path.basename(path)
+    for s in _SENSORS:
+        if s in base:
+            pre, post = base.split(s, 1)
+            post_pat = re.sub(r"_[0-9.]+Hz", "_*Hz", post)
+            found = {}
+            for s2 in _SENSORS:
+                hits = sorted(glob.glob(os.path.join(os.path.dirname(path) or ".",
+                                                     glob.escape(pre) + s2 + post_pat)))
+                if hits:
+                    found[s2] = hits[0]
+            found[s] = path
+            return found
+    return {}
+
+
+def _read_native(path: str, tab: T.Table):
+    """One native MetaBase file → (sensor, t, xyz, lines)."""
+    low = [h.strip().lower() for h in tab.header]
+    e = tab.col("elapsed (s)")
+    for unit, sensor in (("g", "Accelerometer"), ("deg/s", "Gyroscope"), ("t", "Magnetometer")):
+        if f"x-axis ({unit})" in low:
+            t, x, ln = _column_stream(path, tab, e, _axes(tab, unit if unit != "t" else "T", e), sensor)
+            return sensor, t, x, ln
+    raise ReaderError(path, "no x-axis (g), x-axis (deg/s) or x-axis (T) column", 1)
+
+
+def read(path: str, *, gyro_range_dps: float | None = None, **_) -> Recording:
+    tab = T.read(path, header_pred=sniff)
+    low = [h.strip().lower() for h in tab.header]
+    warnings: list[str] = []
+    meta: dict = {"units_in_file": {"acc": "g", "gyr": "deg/s", "mag": "T"}}
+    if low.count("elapsed (s)") >= 2 or ("x-axis (g)" in low and "x-axis (deg/s)" in low):
+        t, acc_g, gyr, ln, mag_t, mag, temp, w = _read_combined(path, tab, gyro_range_dps)
+        warnings += w
+        meta["layout"] = "combined sheet (seed 001 Fig. 8.6)"
+    else:
+        files = _siblings(path) or {"?": path}
+        streams = {}
+        for s, p in files.items():
+            tb = tab if p == path else T.read(p, header_pred=sniff)
+            sensor, ts, x, lns = _read_native(p, tb)
+            streams[sensor] = (ts, x, lns, p)
+        meta["layout"] = "native MetaBase files"
+        meta["files"] = {k: v[3] for k, v in streams.items()}
+        if "Accelerometer" not in streams or "Gyroscope" not in streams:
+            raise ReaderError(path, "MetaBase session needs the Accelerometer and Gyroscope files "
+                                    f"(found: {', '.join(streams) or 'none'})")
+        t, acc_g, ln, pa = streams["Accelerometer"]
+        t2, gyr, _, pg = streams["Gyroscope"]
+        n = min(len(t), len(t2))
+        if len(t) != len(t2):
+            warnings.append(f"{path}: accelerometer has {len(t)} and gyroscope {len(t2)} samples; "
+                            f"cut to {n}")
+        t, acc_g, gyr, ln = t[:n], acc_g[:n], gyr[:n], ln[:n]
+        mag_t = mag = None
+        if "Magnetometer" in streams:
+            mag_t, mag, mln, pm = streams["Magnetometer"]
+            _, w = check_time(pm, mag_t, mln, what="magnetometer elapsed (s)")
+            warnings += w
+        temp = None
+    fs, w = check_time(path, t, ln, what="elapsed (s)")
+    warnings += w
+    check_acc_units(path, acc_g, "g")
+    meta.update(check_gyro_range(path, gyr, gyro_range_dps, warnings))
+    rec = Recording(t=t, acc=acc_g * G, gyr=gyr * DEG, fs=fs, source=path, fmt=FORMAT,
+                    metadata=meta, warnings=warnings)
+    if mag is not None:
+        _check_mag_units(path, mag)
+        rec.mag_t = mag_t
+        rec.mag_native = mag * 1e6
+        rec.mag = zero_order_hold(mag_t, rec.mag_native, t)
+        meta["mag_fs"] = 1.0 / float(np.median(np.diff(mag_t)))
+    if temp is not None:
+        meta["temperature_C"] = {"t": temp[0].tolist(), "value": temp[1].tolist()}
+    return rec
