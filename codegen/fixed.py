@@ -25,8 +25,8 @@ import math
 import numpy as np
 
 from kinefuse.codegen.ir import BOOL, INT, REAL, Graph, Node
-from kinefuse.codegen.render import (Assign, Bin, Call, Field, Int, Narrow, RshRound, Sel, Shl,
-                                     Un, Var, Wide)
+from kinefuse.codegen.render import (Assign, Bin, Call, Field, Int, Narrow, Rsh, RshRound, Sel,
+                                     Shl, Un, Var, Wide)
 from kinefuse.codegen.runtime import q as qrt
 
 NAME = "q"
@@ -166,6 +166,9 @@ class FixedPlan:
                     self._err(n, f"rsqrt argument range [{lo:g}, {hi:g}] reaches 0; "
                                  "guard it with fmax(x, eps)")
                 iv = (1.0 / math.sqrt(hi), 1.0 / math.sqrt(lo))
+            elif op == "floor":
+                lim = 2.0 ** 30
+                iv = (math.floor(max(-lim, min(lim, a[0][0]))), math.floor(max(-lim, min(lim, a[0][1]))))
             elif op == "rnorm":
                 eps = n.attrs[0]
                 iv = (1.0 / math.sqrt(max(a[0][1], eps)), 1.0 / math.sqrt(max(a[0][0], eps)))
@@ -289,6 +292,8 @@ class FixedPlan:
             return (qrt.kf_isqrt_rnd(_rescale(lo, -s)), qrt.kf_isqrt_rnd(_rescale(hi, -s)))
         if op == "div":
             return (fm.lo, fm.hi)   # kf_div_rnd always saturates to the format's bounds
+        if op == "floor":
+            return tuple(_floor_raw(v, fa[0], f) for v in A[0])
         if op in ("min", "max", "select", "assume"):
             srcs = [(A[i], fa[i]) for i in range(len(args)) if args[i].type == REAL]
             los = [_rescale(r[0], ff - f) for r, ff in srcs]
@@ -489,6 +494,12 @@ class FixedLowering:
             m_eps, e_eps = dyn_const_rsqrt(n.attrs[0])
             return stmts + [Assign(t, "dyn", Call("kf_rnorm_dyn", tuple(vals) + (
                 Int(fc), Int(m_eps), Int(e_eps))), comment)]
+        if op == "floor":
+            fa = self.fmt[a[0].id].frac
+            x = Wide(self.ref(a[0], names))
+            # the integer part by an arithmetic (flooring) shift, then into the result format
+            e = rescale_expr(Rsh(x, fa), -f) if fa > 0 else rescale_expr(x, fa - f)
+            return [Assign(t, "i32", self._fin(e, fm), comment)]
         if op == "div":
             fa, fb = self.fmt[a[0].id].frac, self.fmt[a[1].id].frac
             num, den = div_operands(Wide(self.ref(a[0], names)), Wide(self.ref(a[1], names)),
@@ -574,6 +585,14 @@ class FixedLowering:
             fm = self.var_fmt[(kind, var.name)]
             return np.ldexp(np.asarray(values, dtype=np.float64), -fm.frac)
         return np.asarray(values)
+
+
+def _floor_raw(v: int, fa: int, f: int) -> int:
+    """Integer semantics of the floor lowering: raw v (frac fa) -> floor, in frac f."""
+    if fa > 0:
+        i = v >> fa
+        return i << f if f >= 0 else _rescale(i, -f)
+    return _rescale(v, fa - f)
 
 
 def dyn_const_rsqrt(eps: float) -> tuple[int, int]:

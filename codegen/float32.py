@@ -12,7 +12,7 @@ Semantics worth knowing:
 from __future__ import annotations
 
 from kinefuse.codegen.ir import BOOL, INT, REAL, Graph, Node
-from kinefuse.codegen.render import Assign, Bin, Call, F32, Int, Sel, Un, Var
+from kinefuse.codegen.render import Assign, Bin, Call, F32, Int, Sel, ToF32, ToI32, Un, Var
 
 NAME = "f32"
 C_REAL = "float"
@@ -60,6 +60,15 @@ class Float32Lowering:
         if op == "rsqrt":
             return [Assign(t + "_s", kind, Call("sqrtf", (a[0],)), n.loc),
                     Assign(t, kind, Bin("/", F32(1.0), Var(t + "_s")))]
+        if op == "floor":
+            lim = F32(2.0 ** 30)
+            c1, c2 = Var(t + "_a"), Var(t + "_b")
+            return [Assign(t + "_a", kind, Sel(Bin("<", F32(-(2.0 ** 30)), a[0]), a[0], F32(-(2.0 ** 30))),
+                           n.loc),
+                    Assign(t + "_b", kind, Sel(Bin("<", c1, lim), c1, lim)),
+                    Assign(t + "_i", "f32", ToF32(ToI32(c2))),
+                    Assign(t, kind, Sel(Bin("<", c2, Var(t + "_i")),
+                                        Bin("-", Var(t + "_i"), F32(1.0)), Var(t + "_i")))]
         if op == "rnorm":
             eps = F32(n.attrs[0])
             return [Assign(t + "_m", kind, Sel(Bin("<", eps, a[0]), a[0], eps), n.loc),

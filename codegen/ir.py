@@ -61,6 +61,9 @@ OPS: dict[str, OpInfo] = {
     # arithmetic cannot prove it, e.g. the components of a normalised quaternion.
     "assume": OpInfo(1, (REAL,), REAL, False, "a, known to lie in [lo, hi]"),
     "inc_if": OpInfo(2, (INT, BOOL), INT, False, "saturating counter: a + (c ? 1 : 0)"),
+    # floor of a value clamped to [-2^30, 2^30] (NaN gives -2^30): the one rounding primitive
+    # range reductions need (mathlib); exact in every number system.
+    "floor": OpInfo(1, (REAL,), REAL, False, "floor(clamp(a, -2^30, 2^30))"),
     # 1 / sqrt(max(n2, eps)) where n2 = x0^2 + ... + xk^2 is the first argument and x0..xk
     # (1 to 4 of them) follow.  The float paths use n2; the fixed-point path uses the
     # components with block scaling, so tiny vectors keep full precision.

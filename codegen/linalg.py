@@ -137,3 +137,124 @@ def quat_from_rotvec_small(hx, hy, hz) -> Quat:
     """Unnormalised quaternion of a small rotation with half-angle vector (hx, hy, hz):
     (1, h).  Callers normalise; exact to second order, which is what a strapdown step needs."""
     return Quat(1.0, hx, hy, hz)
+
+
+# -- small dense matrices with structural zeros -------------------------------------------------
+#
+# A matrix is a list of rows (lists).  Entries that are the singleton ZERO are *structural*
+# zeros: products and sums skip them, in the reference and in the traced graph alike, so sparse
+# Jacobians cost nothing.  A computed value that happens to be 0.0 is an ordinary number.
+
+class _StructuralZero(float):
+    """The structural zero (a float 0.0 that matrix helpers recognise by identity)."""
+
+    __slots__ = ()
+
+    def __repr__(self):
+        return "ZERO"
+
+
+ZERO = _StructuralZero(0.0)
+
+
+def is_zero(x) -> bool:
+    return x is ZERO
+
+
+def sadd(a, b):
+    """a + b skipping structural zeros."""
+    if a is ZERO:
+        return b
+    if b is ZERO:
+        return a
+    return a + b
+
+
+def ssub(a, b):
+    if b is ZERO:
+        return a
+    if a is ZERO:
+        return -b
+    return a - b
+
+
+def smul(a, b):
+    """a * b; ZERO if either factor is a structural zero."""
+    if a is ZERO or b is ZERO:
+        return ZERO
+    return a * b
+
+
+def ssum(terms):
+    """Left-to-right sum of the terms that are not structural zeros (ZERO if none)."""
+    out = ZERO
+    for t in terms:
+        out = sadd(out, t)
+    return out
+
+
+def zeros(r: int, c: int):
+    return [[ZERO] * c for _ in range(r)]
+
+
+def eye(n: int):
+    return [[1.0 if i == j else ZERO for j in range(n)] for i in range(n)]
+
+
+def diag(values):
+    n = len(values)
+    return [[values[i] if i == j else ZERO for j in range(n)] for i in range(n)]
+
+
+def transpose(A):
+    return [list(col) for col in zip(*A)]
+
+
+def matmul(A, B):
+    """A @ B with terms summed left to right over k, structural zeros skipped."""
+    bt = transpose(B)
+    return [[ssum(smul(a, b) for a, b in zip(row, col)) for col in bt] for row in A]
+
+
+def matvec(A, v):
+    return [ssum(smul(a, x) for a, x in zip(row, v)) for row in A]
+
+
+def matadd(A, B):
+    return [[sadd(a, b) for a, b in zip(ra, rb)] for ra, rb in zip(A, B)]
+
+
+def matsub(A, B):
+    return [[ssub(a, b) for a, b in zip(ra, rb)] for ra, rb in zip(A, B)]
+
+
+def matscale(A, k):
+    return [[smul(a, k) for a in row] for row in A]
+
+
+def symmetrize(A):
+    """(A + A^T) / 2, computed once per pair: keeps a covariance exactly symmetric."""
+    n = len(A)
+    out = [row[:] for row in A]
+    for i in range(n):
+        for j in range(i + 1, n):
+            if A[i][j] is ZERO and A[j][i] is ZERO:
+                continue
+            s = smul(sadd(A[i][j], A[j][i]), 0.5)
+            out[i][j] = s
+            out[j][i] = s
+    return out
+
+
+def quadform(A, P):
+    """A P A^T (the covariance propagation pattern), symmetric by construction: only the upper
+    triangle is computed and mirrored."""
+    AP = matmul(A, P)
+    n = len(A)
+    out = zeros(n, n)
+    for i in range(n):
+        for j in range(i, n):
+            v = ssum(smul(AP[i][k], A[j][k]) for k in range(len(P)))
+            out[i][j] = v
+            out[j][i] = v
+    return out

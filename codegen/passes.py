@@ -37,6 +37,8 @@ def eval_op(op: str, vals: list, attrs: tuple = ()):
         return scalar.sqrt(vals[0])
     if op == "rsqrt":
         return scalar.rsqrt(vals[0])
+    if op == "floor":
+        return scalar.floor(vals[0])
     if op == "rnorm":
         n2, eps = vals[0], attrs[0]
         return scalar.rsqrt(n2 if n2 > eps else eps)

@@ -95,7 +95,27 @@ class Field:
     name: str
 
 
-Expr = Union[Var, F32, Int, Bin, Un, Sel, Call, Wide, Narrow, Shl, RshRound, Field]
+@dataclasses.dataclass(frozen=True)
+class Rsh:
+    """floor(a / 2**k), k >= 1: arithmetic right shift."""
+    a: "Expr"
+    k: int
+
+
+@dataclasses.dataclass(frozen=True)
+class ToI32:
+    """binary32 -> int32, truncating toward zero (the value is known to fit)."""
+    a: "Expr"
+
+
+@dataclasses.dataclass(frozen=True)
+class ToF32:
+    """int32 -> binary32 (round to nearest even)."""
+    a: "Expr"
+
+
+Expr = Union[Var, F32, Int, Bin, Un, Sel, Call, Wide, Narrow, Shl, RshRound, Field, Rsh,
+             ToI32, ToF32]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -154,6 +174,12 @@ def render_c(e: Expr) -> str:
         return f"(({render_c(e.a)} + {c_int(1 << (e.k - 1))}) >> {e.k})"
     if isinstance(e, Field):
         return f"{render_c(e.a)}.{e.name}"
+    if isinstance(e, Rsh):
+        return f"({render_c(e.a)} >> {e.k})"
+    if isinstance(e, ToI32):
+        return f"((int32_t){render_c(e.a)})"
+    if isinstance(e, ToF32):
+        return f"((float){render_c(e.a)})"
     raise TypeError(e)
 
 
@@ -209,6 +235,12 @@ def render_py(e: Expr, vector: bool = False, consts: dict | None = None) -> str:
         return f"(({r(e.a)} + {1 << (e.k - 1)}) >> {e.k})"
     if isinstance(e, Field):
         return f"{r(e.a)}[{0 if e.name == 'm' else 1}]"
+    if isinstance(e, Rsh):
+        return f"({r(e.a)} >> {e.k})"
+    if isinstance(e, ToI32):
+        return f"{r(e.a)}.astype(np.int32)" if vector else f"int({r(e.a)})"
+    if isinstance(e, ToF32):
+        return f"{r(e.a)}.astype(np.float32)" if vector else f"F({r(e.a)})"
     raise TypeError(e)
 
 

@@ -150,6 +150,18 @@ def rnorm(xs, eps: float):
     return rsqrt(n2 if n2 > eps else eps), n2
 
 
+FLOOR_LIMIT = float(2 ** 30)
+
+
+def floor(x):
+    """floor(x) for |x| <= 2^30; larger values are clamped there and NaN gives -2^30."""
+    if isinstance(x, Sym):
+        return x._op("floor", x)
+    c = x if x > -FLOOR_LIMIT else -FLOOR_LIMIT
+    c = c if c < FLOOR_LIMIT else FLOOR_LIMIT
+    return float(math.floor(c))
+
+
 def fabs(x):
     return abs(x)
 
