@@ -1,0 +1,337 @@
+"""A small simulated kinefuse unit speaking the dialect (for tests, demos and the host tools).
+
+It is NOT the firmware: it streams KF_RAW_SAMPLE (a unit rotating about a tilted axis, with
+noise), KF_ORIENTATION (gyro strapdown integration), KF_UNIT_STATUS and HEARTBEAT, answers
+TIMESYNC, the parameter protocol and COMMAND_LONG (MAV_CMD_KF_STREAM, SET_MESSAGE_INTERVAL,
+REQUEST_MESSAGE, reboot, heading tare, filter reset), and can drift its clock, drop samples and
+corrupt bytes on purpose.
+
+    pair = create_pty_pair()
+    unit = FakeUnit(open_tty_raw(pair.device_path), unit_id=3, rate_hz=500).start()
+    ... host reads pair.host ...
+    unit.stop()
+"""
+from __future__ import annotations
+
+import math
+import struct
+import threading
+import time
+
+import numpy as np
+
+from kinefuse.host.link.codec import Encoder
+from kinefuse.host.link.connection import Connection, ConnectionClosed
+from kinefuse.host.link.decoder import StreamDecoder
+from kinefuse.host.link.dialect import RAW_SCALE, STANDARD_GRAVITY, UNIT_COMPONENT_ID, DIALECT_HASH
+from kinefuse.host.link.params import decode_value, encode_value
+
+MSG_RAW, MSG_ORI, MSG_STATUS = 52500, 52501, 52504
+CMD_STREAM, CMD_TARE, CMD_RESET = 52500, 52501, 52502
+CMD_SET_INTERVAL, CMD_REQUEST_MESSAGE, CMD_REBOOT = 511, 512, 246
+FIRMWARE_VERSION = (0 << 24) | (1 << 16) | (0 << 8) | 0  # 0.1.0 DEV
+
+# name -> (MAV_PARAM_TYPE, default, min, max)
+DEFAULT_PARAMS = {
+    "KF_UNIT_ID": (1, 1, 1, 254),
+    "KF_RATE_HZ": (3, 1000, 1, 2000),
+    "KF_ORI_RATE_HZ": (3, 100, 0, 1000),
+    "KF_FILTER": (1, 1, 0, 7),
+    "KF_MAG_ENABLE": (1, 1, 0, 1),
+    "KF_ACC_TAU_S": (9, 3.0, 0.01, 100.0),
+    "KF_SERIAL_NO": (5, 0x4B460001, 0, 0xFFFFFFFF),
+}
+
+
+def _quat_mul(a, b):
+    w1, x1, y1, z1 = a
+    w2, x2, y2, z2 = b
+    return np.array([w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2, w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+                     w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2])
+
+
+def _rotate_to_sensor(q, v):
+    """Earth-frame vector -> sensor frame for q (sensor -> earth): conj(q) * v * q."""
+    w, x, y, z = q
+    r = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                  [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                  [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+    return r.T @ v
+
+
+class FakeUnit:
+    def __init__(self, conn: Connection, unit_id: int = 1, rate_hz: float = 1000.0, orientation_rate_hz: float = 100.0,
+                 drift_ppm: float = 0.0, boot_offset_us: int = 0, streaming: bool = True, drop_every: int = 0,
+                 corrupt_probability: float = 0.0, seed: int = 0, answer_params: bool = True):
+        self.conn = conn
+        self.params = {k: v[1] for k, v in DEFAULT_PARAMS.items()}
+        self.params["KF_UNIT_ID"] = unit_id
+        self.params["KF_RATE_HZ"] = int(rate_hz)
+        self.params["KF_ORI_RATE_HZ"] = int(orientation_rate_hz)
+        self.drift = drift_ppm * 1e-6
+        self.boot_offset_us = boot_offset_us
+        self.streaming = streaming
+        self.drop_every = drop_every
+        self.corrupt_probability = corrupt_probability
+        self.answer_params = answer_params
+        self.rng = np.random.default_rng(seed)
+        self.enc = Encoder(sysid=unit_id, compid=UNIT_COMPONENT_ID)
+        self.dec = StreamDecoder()
+        self.counters = {"param_rejects": 0, "unknown_messages": 0, "frames_dropped": 0}
+        self.sent_samples = 0
+        self.commands: list = []  # (command, params) received, for tests
+        self._stop = threading.Event()
+        self._thread = None
+        self._reset_state()
+
+    # ------------------------------------------------------------------------------ clock
+    def _reset_state(self):
+        self.t0_ns = time.monotonic_ns()
+        self.sample_counter = 0
+        self.next_sample_us = 0
+        self.next_status_us = 0
+        self.q = np.array([1.0, 0.0, 0.0, 0.0])
+        self.bias = np.array([0.01, -0.02, 0.005])
+        self.tared = False
+        self._rate_window = (0, 0)
+
+    def device_time_us(self) -> int:
+        """Unit clock: us since boot, running (1 + drift) times as fast as the host clock."""
+        return int((time.monotonic_ns() - self.t0_ns) * (1.0 + self.drift) / 1000) + self.boot_offset_us
+
+    # ------------------------------------------------------------------------------ thread
+    def start(self) -> "FakeUnit":
+        self._thread = threading.Thread(target=self._run, name="kf-fake-unit", daemon=True)
+        self._thread.start()
+        return self
+
+    def stop(self, close: bool = True) -> None:
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(2.0)
+        if close:
+            self.conn.close()
+
+    def _run(self) -> None:
+        try:
+            while not self._stop.is_set():
+                data = self.conn.read(0.002)
+                out = []
+                if data:
+                    for f in self.dec.feed(data):
+                        out += self._handle(f)
+                out += self._emit_due()
+                if out:
+                    self._send(b"".join(out))
+        except (ConnectionClosed, OSError):
+            pass
+
+    def _send(self, data: bytes) -> None:
+        if self.corrupt_probability > 0:
+            arr = bytearray(data)
+            flips = self.rng.random(len(arr) * 8) < self.corrupt_probability
+            for bit in np.flatnonzero(flips):
+                arr[bit // 8] ^= 1 << (bit % 8)
+            data = bytes(arr)
+        self.conn.write(data)
+
+    # ------------------------------------------------------------------------------ streams
+    @property
+    def period_us(self) -> float:
+        return 1e6 / max(1, self.params["KF_RATE_HZ"])
+
+    def _emit_due(self) -> list:
+        now = self.device_time_us()
+        out = []
+        if now >= self.next_status_us:
+            out.append(self._heartbeat())
+            out.append(self._status(now))
+            self.next_status_us = now - now % 1_000_000 + 1_000_000
+        if not self.streaming:
+            self.next_sample_us = max(self.next_sample_us, now)
+            return out
+        ori_every = 0 if self.params["KF_ORI_RATE_HZ"] <= 0 else \
+            max(1, round(self.params["KF_RATE_HZ"] / self.params["KF_ORI_RATE_HZ"]))
+        budget = 2000
+        while self.next_sample_us <= now and budget:
+            budget -= 1
+            t = int(self.next_sample_us)
+            self.next_sample_us += self.period_us
+            frame = self._sample(t)
+            self.sample_counter = (self.sample_counter + 1) & 0xFFFFFFFF
+            if self.drop_every and self.sample_counter % self.drop_every == 0:
+                self.counters["frames_dropped"] += 1
+            else:
+                out.append(frame)
+                self.sent_samples += 1
+            if ori_every and self.sample_counter % ori_every == 0:
+                out.append(self._orientation(t))
+        return out
+
+    def _sample(self, t_us: int) -> bytes:
+        dt = self.period_us * 1e-6
+        s = t_us * 1e-6
+        omega = np.array([0.6 * math.sin(2 * math.pi * 0.5 * s), 0.4 * math.cos(2 * math.pi * 0.3 * s),
+                          1.2 * math.sin(2 * math.pi * 0.2 * s)])  # rad/s, sensor frame
+        half = 0.5 * omega * dt
+        self.q = _quat_mul(self.q, np.array([1.0, *half]))
+        self.q /= np.linalg.norm(self.q)
+        g = np.array([0.0, 0.0, STANDARD_GRAVITY])             # specific force at rest, ENU
+        b = np.array([0.0, 19.0, -45.0])                        # uT, ENU (north, down)
+        acc = _rotate_to_sensor(self.q, g) + self.rng.normal(0, 0.02, 3)
+        gyro = omega + self.bias + self.rng.normal(0, 0.002, 3)
+        mag = _rotate_to_sensor(self.q, b) + self.rng.normal(0, 0.3, 3)
+        a = np.clip(np.round(acc / RAW_SCALE["acc"]), -32768, 32767).astype(int)
+        w = np.clip(np.round(gyro / RAW_SCALE["gyro"]), -32768, 32767).astype(int)
+        m = np.clip(np.round(mag / RAW_SCALE["mag"]), -32768, 32767).astype(int)
+        flags = 8 | 16 | 32  # MAG_UPDATED | CALIBRATED | TEMPERATURE_VALID
+        return self.enc.encode(MSG_RAW, time_boot_us=t_us, sample_counter=self.sample_counter,
+                               acc_x=int(a[0]), acc_y=int(a[1]), acc_z=int(a[2]), gyro_x=int(w[0]),
+                               gyro_y=int(w[1]), gyro_z=int(w[2]), mag_x=int(m[0]), mag_y=int(m[1]),
+                               mag_z=int(m[2]), temperature=3150, unit_id=self.params["KF_UNIT_ID"], flags=flags)
+
+    def _orientation(self, t_us: int) -> bytes:
+        status = 1 | 8 | (64 if self.tared else 0)  # INITIALISED | MAG_USED
+        return self.enc.encode(MSG_ORI, time_boot_us=t_us, sample_counter=self.sample_counter,
+                               q_w=float(self.q[0]), q_x=float(self.q[1]), q_y=float(self.q[2]), q_z=float(self.q[3]),
+                               rejected_samples=0, status=status, earth_frame=1, filter_id=1,
+                               unit_id=self.params["KF_UNIT_ID"], cov=[1e-4, 0, 0, 1e-4, 0, 4e-4])
+
+    def _heartbeat(self) -> bytes:
+        return self.enc.encode("HEARTBEAT", type=0, autopilot=8, base_mode=0, custom_mode=0, system_status=4,
+                               mavlink_version=3)
+
+    def _status(self, now_us: int) -> bytes:
+        c = self.dec.counters
+        rate = self.params["KF_RATE_HZ"] if self.streaming else 0
+        return self.enc.encode(
+            MSG_STATUS, time_boot_us=now_us, firmware_version=FIRMWARE_VERSION, firmware_git_hash=0x0BADC0DE,
+            dialect_hash=DIALECT_HASH(), samples=self.sample_counter, samples_dropped=0,
+            frames_dropped=self.counters["frames_dropped"], rejected_samples=0, crc_errors=c.crc_errors,
+            unknown_messages=self.counters["unknown_messages"], param_rejects=self.counters["param_rejects"],
+            sensor_rate_requested=float(self.params["KF_RATE_HZ"]), sensor_rate_achieved=float(self.params["KF_RATE_HZ"]),
+            raw_rate_requested=float(rate), raw_rate_achieved=float(rate),
+            orientation_rate_requested=float(self.params["KF_ORI_RATE_HZ"] if self.streaming else 0),
+            orientation_rate_achieved=float(self.params["KF_ORI_RATE_HZ"] if self.streaming else 0),
+            battery_voltage=3900, cpu_load=123, status_flags=(1 if self.streaming else 0) | 2 | 32,
+            battery_remaining=80, unit_id=self.params["KF_UNIT_ID"], filter_id=self.params["KF_FILTER"],
+            numeric_format=1, earth_frame=1)
+
+    # ------------------------------------------------------------------------------ requests
+    def _for_me(self, m) -> bool:
+        ts = getattr(m, "target_system", 0)
+        tc = getattr(m, "target_component", 0)
+        return ts in (0, self.params["KF_UNIT_ID"]) and tc in (0, UNIT_COMPONENT_ID)
+
+    def _handle(self, f) -> list:
+        m = f.msg
+        name = m._msgname
+        if name == "TIMESYNC":
+            if m.tc1 == 0:
+                return [self.enc.encode("TIMESYNC", tc1=self.device_time_us() * 1000, ts1=m.ts1,
+                                        target_system=f.sysid, target_component=f.compid)]
+            return []
+        if not self._for_me(m):
+            return []
+        if name == "PARAM_REQUEST_LIST":
+            return [self._param_value(k) for k in range(len(self.params))] if self.answer_params else []
+        if name == "PARAM_REQUEST_READ":
+            if not self.answer_params:
+                return []
+            names = list(self.params)
+            if m.param_index >= 0:
+                return [self._param_value(m.param_index)] if m.param_index < len(names) else []
+            if m.param_id in self.params:
+                return [self._param_value(names.index(m.param_id))]
+            return [self._param_error(m.param_id, -1, 1, f)]
+        if name == "PARAM_SET":
+            return self._param_set(m, f) if self.answer_params else []
+        if name == "COMMAND_LONG":
+            return self._command(m, f)
+        if name not in ("HEARTBEAT", "COMMAND_ACK"):
+            self.counters["unknown_messages"] += 1
+        return []
+
+    def _param_value(self, index: int) -> bytes:
+        name = list(self.params)[index]
+        ptype = DEFAULT_PARAMS[name][0]
+        return self.enc.encode("PARAM_VALUE", param_id=name, param_value=encode_value(self.params[name], ptype),
+                               param_type=ptype, param_count=len(self.params), param_index=index)
+
+    def _param_error(self, name: str, index: int, error: int, f) -> bytes:
+        self.counters["param_rejects"] += 1
+        return self.enc.encode("PARAM_ERROR", target_system=f.sysid, target_component=f.compid,
+                               param_id=name, param_index=index, error=error)
+
+    def _param_set(self, m, f) -> list:
+        if m.param_id not in self.params:
+            return [self._param_error(m.param_id, -1, 1, f)]
+        ptype, _, lo, hi = DEFAULT_PARAMS[m.param_id]
+        index = list(self.params).index(m.param_id)
+        value = decode_value(m.param_value, m.param_type)
+        if m.param_type != ptype or not (lo <= value <= hi) or (isinstance(value, float) and math.isnan(value)):
+            return [self._param_error(m.param_id, index, 2, f), self._param_value(index)]
+        self.params[m.param_id] = value
+        if m.param_id == "KF_UNIT_ID":
+            self.enc.sysid = int(value)
+        return [self._param_value(index)]
+
+    def _ack(self, command: int, result: int, f) -> bytes:
+        return self.enc.encode("COMMAND_ACK", command=command, result=result, progress=0, result_param2=0,
+                               target_system=f.sysid, target_component=f.compid)
+
+    def _command(self, m, f) -> list:
+        p = (m.param1, m.param2, m.param3, m.param4, m.param5, m.param6, m.param7)
+        self.commands.append((m.command, p))
+        if m.command == CMD_STREAM:
+            self.streaming = p[0] >= 0.5
+            if self.streaming and p[1] >= 0.5:
+                self.sample_counter = 0
+            return [self._ack(m.command, 0, f)]
+        if m.command == CMD_SET_INTERVAL:
+            msgid, interval = int(p[0]), p[1]
+            key = {MSG_RAW: "KF_RATE_HZ", MSG_ORI: "KF_ORI_RATE_HZ"}.get(msgid)
+            if key is None:
+                return [self._ack(m.command, 3, f)]
+            lo, hi = DEFAULT_PARAMS[key][2:]
+            rate = 0 if interval < 0 else DEFAULT_PARAMS[key][1] if interval == 0 else round(1e6 / interval)
+            if not lo <= rate <= hi:
+                return [self._ack(m.command, 2, f)]
+            self.params[key] = rate
+            return [self._ack(m.command, 0, f)]
+        if m.command == CMD_REQUEST_MESSAGE:
+            if int(p[0]) == MSG_STATUS:
+                return [self._ack(m.command, 0, f), self._status(self.device_time_us())]
+            return [self._ack(m.command, 3, f)]
+        if m.command == CMD_REBOOT and int(p[0]) == 1:
+            ack = self._ack(m.command, 0, f)
+            self._reset_state()
+            return [ack]
+        if m.command == CMD_TARE:
+            self.tared = True
+            return [self._ack(m.command, 0, f)]
+        if m.command == CMD_RESET:
+            self.tared = False
+            self.q = np.array([1.0, 0.0, 0.0, 0.0])
+            return [self._ack(m.command, 0, f)]
+        return [self._ack(m.command, 3, f)]
+
+
+def raw_frames(n: int, unit_id: int = 1, rate_hz: float = 1000.0, seed: int = 0, start_counter: int = 0,
+               encoder: Encoder | None = None) -> bytes:
+    """``n`` KF_RAW_SAMPLE frames with varied sensor values (benchmarks, tests); fast path."""
+    enc = encoder or Encoder(sysid=unit_id, compid=UNIT_COMPONENT_ID)
+    spec = enc.dialect["KF_RAW_SAMPLE"]
+    rng = np.random.default_rng(seed)
+    vals = rng.integers(-4000, 4000, size=(n, 10))
+    vals[:, 2] += 1000
+    period = 1e6 / rate_hz
+    from kinefuse.host.link.codec import frame_from_payload
+    pack = spec.struct.pack
+    out = []
+    for k in range(n):
+        v = vals[k]
+        payload = pack(int(k * period), (start_counter + k) & 0xFFFFFFFF, *map(int, v), unit_id, 8 | 16 | 32)
+        out.append(frame_from_payload(spec, payload, enc.sysid, enc.compid, enc.seq))
+        enc.seq = (enc.seq + 1) & 0xFF
+    return b"".join(out)

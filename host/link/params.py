@@ -1,0 +1,156 @@
+"""Host side of the MAVLink parameter protocol for kinefuse units.
+
+    client = ParamClient(session, target_system=1)
+    params = client.fetch_all()           # {name: value}
+    client.set("KF_RATE_HZ", 500)         # -> value echoed by the unit, or ParamError
+
+Encoding: kinefuse units encode integer parameters bytewise in the float ``param_value``
+(MAV_PROTOCOL_CAPABILITY_PARAM_ENCODE_BYTEWISE); REAL32 values are plain floats.  Limitation:
+the host handles param_value as a Python float, so the few 32-bit integers whose bit pattern is a
+signalling NaN (0x7F800001-0x7FBFFFFF, 0xFF800001-0xFFBFFFFF) would come back quietened.
+Protocol (mavlink.io parameter service): PARAM_REQUEST_LIST streams every PARAM_VALUE; lost ones
+are re-requested by index with PARAM_REQUEST_READ; PARAM_SET is answered with PARAM_VALUE (the new
+value, or the unchanged one plus PARAM_ERROR when rejected) and re-sent on timeout.
+"""
+from __future__ import annotations
+
+import math
+import struct
+import time
+
+from kinefuse.host.errors import KinefuseError
+
+# MAV_PARAM_TYPE -> struct code of the integer held bytewise in param_value (REAL32 = 9: float)
+INT_CODES = {1: "B", 2: "b", 3: "H", 4: "h", 5: "I", 6: "i"}
+REAL32 = 9
+TYPE_NAMES = {1: "UINT8", 2: "INT8", 3: "UINT16", 4: "INT16", 5: "UINT32", 6: "INT32", 9: "REAL32"}
+UNIT_COMPONENT = 200
+
+
+class ParamError(KinefuseError):
+    """A parameter could not be read or written (no answer, rejected, unknown name)."""
+
+
+def encode_value(value, ptype: int) -> float:
+    """Value -> the float sent in param_value."""
+    if ptype == REAL32:
+        v = float(value)
+        return struct.unpack("<f", struct.pack("<f", v))[0]
+    code = INT_CODES.get(ptype)
+    if code is None:
+        raise ParamError(f"parameter type {ptype} is not supported (8/16/32-bit integers, REAL32)")
+    iv = int(value)
+    if float(value) != iv:
+        raise ParamError(f"{value!r} is not an integer ({TYPE_NAMES[ptype]} parameter)")
+    try:
+        raw = struct.pack("<" + code, iv).ljust(4, b"\0")
+    except struct.error:
+        raise ParamError(f"{iv} is out of range for a {TYPE_NAMES[ptype]} parameter") from None
+    return struct.unpack("<f", raw)[0]
+
+
+def decode_value(param_value: float, ptype: int):
+    """param_value -> int (bytewise) or float."""
+    if ptype == REAL32 or ptype not in INT_CODES:
+        return param_value
+    raw = struct.pack("<f", param_value)
+    code = INT_CODES[ptype]
+    return struct.unpack_from("<" + code, raw)[0]
+
+
+def same_value(a, b) -> bool:
+    if isinstance(a, float) or isinstance(b, float):
+        return a == b or (math.isnan(a) and math.isnan(b))
+    return a == b
+
+
+class ParamClient:
+    """Parameter protocol over a :class:`~kinefuse.host.link.session.Session`."""
+
+    def __init__(self, session, target_system: int, target_component: int = UNIT_COMPONENT,
+                 timeout: float = 0.5, retries: int = 3):
+        self.s = session
+        self.sys, self.comp = target_system, target_component
+        self.timeout, self.retries = timeout, retries
+        self.types: dict[str, int] = {}
+
+    def _from_unit(self, f) -> bool:
+        return f.sysid == self.sys and (self.comp == 0 or f.compid == self.comp)
+
+    def fetch_all(self, timeout: float = 5.0) -> dict:
+        """Every parameter of the unit: {name: value} (ints decoded bytewise)."""
+        self.s.send("PARAM_REQUEST_LIST", target_system=self.sys, target_component=self.comp)
+        values: dict[int, tuple[str, object]] = {}
+        count = None
+        deadline = time.monotonic() + timeout
+        quiet_since = time.monotonic()
+        while time.monotonic() < deadline:
+            f = self.s.wait_for(lambda f: f.msgid == 22 and self._from_unit(f), timeout=self.timeout)
+            if f is not None:
+                m = f.msg
+                count = m.param_count
+                values[m.param_index] = (m.param_id, decode_value(m.param_value, m.param_type))
+                self.types[m.param_id] = m.param_type
+                quiet_since = time.monotonic()
+                if len(values) >= count:
+                    break
+                continue
+            if count is None:
+                if time.monotonic() - quiet_since > self.timeout * self.retries:
+                    raise ParamError(f"no PARAM_VALUE from system {self.sys} (is the unit connected and powered?)")
+                self.s.send("PARAM_REQUEST_LIST", target_system=self.sys, target_component=self.comp)
+                continue
+            for idx in range(count):  # re-request what was lost
+                if idx not in values:
+                    self.s.send("PARAM_REQUEST_READ", target_system=self.sys, target_component=self.comp,
+                                param_id="", param_index=idx)
+        if count is None or len(values) < count:
+            missing = "?" if count is None else count - len(values)
+            raise ParamError(f"parameter list incomplete: {missing} of {count} parameters missing")
+        return {name: v for _, (name, v) in sorted(values.items())}
+
+    def get(self, name: str):
+        for _ in range(self.retries):
+            self.s.send("PARAM_REQUEST_READ", target_system=self.sys, target_component=self.comp,
+                        param_id=name, param_index=-1)
+            f = self.s.wait_for(lambda f: f.msgid in (22, 345) and self._from_unit(f)
+                                and f.msg.param_id == name, timeout=self.timeout)
+            if f is None:
+                continue
+            if f.msgid == 345:
+                raise ParamError(f"{name}: {_error_text(f.msg.error)}")
+            self.types[name] = f.msg.param_type
+            return decode_value(f.msg.param_value, f.msg.param_type)
+        raise ParamError(f"no answer for parameter {name} from system {self.sys}")
+
+    def set(self, name: str, value, ptype: int | None = None):
+        """Write a parameter; returns the value the unit echoes.  Raises ParamError if rejected."""
+        if len(name.encode()) > 16:
+            raise ParamError(f"parameter name {name!r} is longer than 16 characters")
+        if ptype is None:
+            ptype = self.types.get(name)
+            if ptype is None:
+                self.get(name)
+                ptype = self.types[name]
+        wire = encode_value(value, ptype)
+        want = decode_value(wire, ptype)
+        for _ in range(self.retries):
+            self.s.send("PARAM_SET", target_system=self.sys, target_component=self.comp,
+                        param_id=name, param_value=wire, param_type=ptype)
+            f = self.s.wait_for(lambda f: f.msgid in (22, 345) and self._from_unit(f)
+                                and f.msg.param_id == name, timeout=self.timeout)
+            if f is None:
+                continue
+            if f.msgid == 345:
+                self.s.wait_for(lambda f: f.msgid == 22 and f.msg.param_id == name, timeout=self.timeout)
+                raise ParamError(f"{name} = {value!r} rejected: {_error_text(f.msg.error)}")
+            got = decode_value(f.msg.param_value, f.msg.param_type)
+            if not same_value(got, want):
+                raise ParamError(f"{name} = {value!r} rejected: the unit kept {got!r}")
+            return got
+        raise ParamError(f"no answer to PARAM_SET {name} from system {self.sys}")
+
+
+def _error_text(code: int) -> str:
+    return {1: "no such parameter", 2: "value out of range", 3: "permission denied",
+            4: "component not found", 5: "read-only parameter"}.get(code, f"error {code}")

@@ -1,0 +1,343 @@
+"""The ``.kfr`` recording: the raw byte stream of one or more units, self-described.
+
+Layout (all little-endian)::
+
+    file   = magic "\\x89KFR\\r\\n\\x1a\\n" | u16 version | u32 n | header JSON (n bytes) | u32 crc32(JSON)
+             | chunk*
+    chunk  = "kc" | u8 type | u8 stream | u32 length | i8 t_ns | u32 crc32(payload) | payload
+
+- ``t_ns``: host monotonic clock (``time.monotonic_ns``) when the chunk's first read returned;
+  the header holds ``start_unix_ns`` and ``start_monotonic_ns`` taken together, so
+  UTC = start_unix_ns + (t - start_monotonic_ns).
+- RX payload = u32 nreads | nreads x (u32 end offset, u32 dt_us after t_ns) | bytes received.
+  Every read of the port keeps its own host time (reads closer than 1 ms are merged).
+- TX payload = bytes the host sent; META payload = JSON (unit status, parameters, requested
+  rates, events such as a disconnect).
+- The recorder flushes every chunk to the OS (a killed process loses at most the chunk being
+  gathered, <= 0.25 s) and fsyncs at least every second (a power cut loses <= 1 s).
+- A truncated file decodes up to the truncation: a partial last chunk still yields the bytes
+  it holds (MAVLink CRCs protect the frames); a damaged chunk is skipped by searching the next
+  chunk marker whose CRC matches.
+"""
+from __future__ import annotations
+
+import json
+import os
+import platform
+import struct
+import threading
+import time
+import zlib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from kinefuse.host.errors import KinefuseError
+
+MAGIC = b"\x89KFR\r\n\x1a\n"
+VERSION = 1
+FILE_HEAD = struct.Struct("<8sHI")
+CHUNK = struct.Struct("<2sBBIqI")  # marker, type, stream, length, t_ns, crc32
+MARKER = b"kc"
+RX, TX, META = 1, 2, 3
+CHUNK_TYPES = {RX: "rx", TX: "tx", META: "meta"}
+MAX_CHUNK = 1 << 24  # sanity bound for a chunk length read from a damaged file
+READ_ENTRY = struct.Struct("<II")
+
+
+def _crc32(b) -> int:
+    return zlib.crc32(b) & 0xFFFFFFFF
+
+
+def _software_versions() -> dict:
+    out = {}
+    try:
+        from importlib.metadata import version
+        for pkg in ("kinefuse", "pymavlink", "pyserial", "numpy"):
+            try:
+                out[pkg] = version(pkg)
+            except Exception:
+                pass
+    except Exception:  # pragma: no cover
+        pass
+    return out
+
+
+def make_header(streams: list[dict], note: str | None = None, extra: dict | None = None) -> dict:
+    """Header dict: clocks taken together, host and software, dialect hash, streams."""
+    from kinefuse.host.link.dialect import DIALECT_HASH
+    mono, unix = time.monotonic_ns(), time.time_ns()
+    head = {
+        "format": "kinefuse-recording",
+        "version": VERSION,
+        "start_unix_ns": unix,
+        "start_utc": time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime(unix / 1e9)) + f".{unix % 10**9 // 1000:06d}Z",
+        "start_monotonic_ns": mono,
+        "host": {"hostname": platform.node(), "platform": platform.platform(), "python": platform.python_version()},
+        "software": _software_versions(),
+        "dialect": {"name": "kinefuse", "hash": f"0x{DIALECT_HASH():08X}"},
+        "streams": streams,
+        "note": note,
+    }
+    if extra:
+        head.update(extra)
+    return head
+
+
+class RecordingWriter:
+    """Append-only writer; thread-safe.  ``fsync_interval`` bounds the loss on a power cut."""
+
+    def __init__(self, path, header: dict, fsync_interval: float = 1.0):
+        self.path = Path(path)
+        try:
+            self._f = open(self.path, "wb")
+        except OSError as exc:
+            raise KinefuseError(f"cannot create {self.path}: {exc.strerror or exc}") from None
+        self._lock = threading.Lock()
+        self._fsync_interval = fsync_interval
+        self._last_sync = time.monotonic()
+        self.bytes_written = 0
+        body = json.dumps(header, sort_keys=True).encode()
+        self._write(FILE_HEAD.pack(MAGIC, VERSION, len(body)) + body + struct.pack("<I", _crc32(body)))
+        self.sync()
+
+    def _write(self, b: bytes) -> None:
+        self._f.write(b)
+        self.bytes_written += len(b)
+
+    def chunk(self, ctype: int, stream: int, payload: bytes, t_ns: int | None = None) -> None:
+        t = time.monotonic_ns() if t_ns is None else t_ns
+        with self._lock:
+            self._write(CHUNK.pack(MARKER, ctype, stream, len(payload), t, _crc32(payload)) + payload)
+            self._f.flush()  # to the OS: survives a killed process
+            if time.monotonic() - self._last_sync >= self._fsync_interval:
+                self._sync_locked()
+
+    def rx(self, stream: int, reads: list[tuple[int, bytes]]) -> None:
+        """One RX chunk from consecutive reads [(t_ns, data), ...] of one stream."""
+        if not reads:
+            return
+        t0 = reads[0][0]
+        entries, data, end = [], [], 0
+        for t, b in reads:
+            end += len(b)
+            dt = max(0, (t - t0) // 1000)
+            if entries and dt - entries[-1][1] < 1000:  # merge reads < 1 ms apart (later time)
+                entries[-1] = (end, dt)
+            else:
+                entries.append((end, dt))
+            data.append(b)
+        head = struct.pack("<I", len(entries)) + b"".join(READ_ENTRY.pack(e, min(d, 0xFFFFFFFF)) for e, d in entries)
+        self.chunk(RX, stream, head + b"".join(data), t0)
+
+    def tx(self, stream: int, data: bytes, t_ns: int | None = None) -> None:
+        self.chunk(TX, stream, bytes(data), t_ns)
+
+    def meta(self, stream: int, obj: dict, t_ns: int | None = None) -> None:
+        self.chunk(META, stream, json.dumps(obj, sort_keys=True, default=str).encode(), t_ns)
+
+    def _sync_locked(self) -> None:
+        self._f.flush()
+        os.fsync(self._f.fileno())
+        self._last_sync = time.monotonic()
+
+    def sync(self) -> None:
+        with self._lock:
+            self._sync_locked()
+
+    def close(self) -> None:
+        with self._lock:
+            if not self._f.closed:
+                self._sync_locked()
+                self._f.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+
+@dataclass
+class Chunk:
+    type: int
+    stream: int
+    t_ns: int
+    payload: bytes
+    offset: int            # file offset of the chunk header
+    truncated: bool = False
+
+
+@dataclass
+class StreamData:
+    """Everything received on one stream, concatenated, with the host time of every read."""
+    stream: int
+    rx: bytes = b""
+    read_end: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))   # end offset in rx
+    read_t_ns: np.ndarray = field(default_factory=lambda: np.zeros(0, np.int64))  # host monotonic ns
+    tx: bytes = b""
+    meta: list = field(default_factory=list)
+
+    def host_time_ns(self, end_offsets) -> np.ndarray:
+        """Host monotonic time of the read that delivered the byte before each end offset."""
+        if self.read_end.size == 0:
+            return np.zeros(len(end_offsets), np.int64)
+        k = np.searchsorted(self.read_end, np.asarray(end_offsets, np.int64), side="left")
+        return self.read_t_ns[np.minimum(k, self.read_end.size - 1)]
+
+
+@dataclass
+class Recording:
+    path: Path
+    header: dict
+    streams: dict            # stream id -> StreamData
+    chunks: int = 0
+    damaged_chunks: int = 0  # chunks skipped because their CRC failed
+    truncated: bool = False  # the file ends inside a chunk
+    trailing_bytes: int = 0  # bytes after the last complete chunk
+
+    @property
+    def start_monotonic_ns(self) -> int:
+        return int(self.header.get("start_monotonic_ns", 0))
+
+    @property
+    def start_unix_ns(self) -> int:
+        return int(self.header.get("start_unix_ns", 0))
+
+    def stream_info(self, stream: int) -> dict:
+        for s in self.header.get("streams", []):
+            if s.get("id") == stream:
+                return s
+        return {}
+
+
+def read_header(f, path) -> tuple[dict, int]:
+    head = f.read(FILE_HEAD.size)
+    if len(head) < FILE_HEAD.size or head[:8] != MAGIC:
+        raise KinefuseError(f"{path} is not a kinefuse recording (.kfr)")
+    _, version, n = FILE_HEAD.unpack(head)
+    if version > VERSION:
+        raise KinefuseError(f"{path}: recording format version {version} is newer than this kinefuse ({VERSION})")
+    body = f.read(n)
+    crc = f.read(4)
+    if len(body) < n or len(crc) < 4:
+        raise KinefuseError(f"{path}: recording header is truncated")
+    if struct.unpack("<I", crc)[0] != _crc32(body):
+        raise KinefuseError(f"{path}: recording header is damaged (CRC mismatch)")
+    try:
+        header = json.loads(body)
+    except ValueError:
+        raise KinefuseError(f"{path}: recording header is not valid JSON") from None
+    return header, FILE_HEAD.size + n + 4
+
+
+def iter_chunks(data: bytes, start: int, stats: dict | None = None):
+    """Chunks of a recording body; resynchronises after damage; yields a partial last chunk."""
+    stats = stats if stats is not None else {}
+    stats.setdefault("damaged", 0)
+    stats.setdefault("truncated", False)
+    stats.setdefault("trailing", 0)
+    i, n = start, len(data)
+    while i < n:
+        if n - i < CHUNK.size:  # the file stops inside a chunk header
+            stats["truncated"] = True
+            stats["trailing"] = n - i
+            return
+        marker, ctype, stream, length, t_ns, crc = CHUNK.unpack_from(data, i)
+        if marker != MARKER or ctype not in CHUNK_TYPES or length > MAX_CHUNK:
+            j = data.find(MARKER, i + 1)
+            stats["damaged"] += 1
+            if j < 0:
+                stats["trailing"] = n - i
+                return
+            i = j
+            continue
+        body_start = i + CHUNK.size
+        end = body_start + length
+        if end > n:  # the file stops inside this chunk (killed recorder, copied while recording)
+            stats["truncated"] = True
+            stats["trailing"] = n - i
+            yield Chunk(ctype, stream, t_ns, data[body_start:n], i, truncated=True)
+            return
+        payload = data[body_start:end]
+        if _crc32(payload) != crc:
+            stats["damaged"] += 1
+            j = data.find(MARKER, i + 1)
+            if j < 0:
+                stats["trailing"] = n - i
+                return
+            i = j
+            continue
+        yield Chunk(ctype, stream, t_ns, payload, i)
+        i = end
+
+
+def _rx_parts(chunk: Chunk):
+    """(data, [(end, t_ns)]) of an RX chunk; tolerant of a truncated payload."""
+    p = chunk.payload
+    if len(p) < 4:
+        return b"", []
+    nreads = struct.unpack_from("<I", p)[0]
+    table_end = 4 + 8 * nreads
+    if table_end > len(p):  # truncated inside the read table: no data bytes survive
+        return b"", []
+    entries = [READ_ENTRY.unpack_from(p, 4 + 8 * k) for k in range(nreads)]
+    data = p[table_end:]
+    reads = []
+    for end, dt in entries:
+        if end > len(data):
+            reads.append((len(data), chunk.t_ns + dt * 1000))
+            break
+        reads.append((end, chunk.t_ns + dt * 1000))
+    if reads and reads[-1][0] < len(data):
+        reads.append((len(data), reads[-1][1]))
+    return data, reads
+
+
+def load(path) -> Recording:
+    """Read a whole recording into memory (raw bytes per stream + read times + metadata)."""
+    path = Path(path)
+    try:
+        raw = path.read_bytes()
+    except FileNotFoundError:
+        raise KinefuseError(f"{path}: no such file") from None
+    except IsADirectoryError:
+        raise KinefuseError(f"{path} is a directory, not a recording") from None
+    except OSError as exc:
+        raise KinefuseError(f"cannot read {path}: {exc.strerror or exc}") from None
+    import io
+    header, start = read_header(io.BytesIO(raw), path)
+    streams: dict[int, dict] = {}
+    stats: dict = {}
+    n_chunks = 0
+    for ch in iter_chunks(raw, start, stats):
+        n_chunks += 1
+        s = streams.setdefault(ch.stream, {"rx": [], "ends": [], "ts": [], "tx": [], "meta": [], "n": 0})
+        if ch.type == RX:
+            data, reads = _rx_parts(ch)
+            base = s["n"]
+            for end, t in reads:
+                s["ends"].append(base + end)
+                s["ts"].append(t)
+            s["rx"].append(data)
+            s["n"] += len(data)
+        elif ch.type == TX:
+            s["tx"].append(ch.payload)
+        elif ch.type == META and not ch.truncated:
+            try:
+                obj = json.loads(ch.payload)
+            except ValueError:
+                continue
+            obj.setdefault("t_ns", ch.t_ns)
+            s["meta"].append(obj)
+    out = {}
+    for sid, s in streams.items():
+        out[sid] = StreamData(sid, b"".join(s["rx"]), np.array(s["ends"], np.int64),
+                              np.array(s["ts"], np.int64), b"".join(s["tx"]), s["meta"])
+    for info in header.get("streams", []):
+        sid = info.get("id")
+        if isinstance(sid, int) and sid not in out:
+            out[sid] = StreamData(sid)
+    return Recording(path, header, out, n_chunks, stats.get("damaged", 0), stats.get("truncated", False),
+                     stats.get("trailing", 0))
