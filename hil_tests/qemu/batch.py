@@ -52,6 +52,14 @@ def render_template(name: str, values: Mapping[str, str]) -> str:
     return text
 
 
+def csrc_path(name: str) -> Path:
+    """Path of a file shipped in ``hil_tests/qemu/csrc`` (plugin, drivers, self-tests)."""
+    path = Path(str(resources.files("kinefuse.hil_tests.qemu.csrc").joinpath(name)))
+    if not path.is_file():
+        raise KinefuseError(f"missing packaged C source {name}")
+    return path
+
+
 def write_generated(text: str, filename: str) -> Path:
     """Store generated source in a content-addressed cache directory (keeps builds cached)."""
     tag = hashlib.sha256((filename + "\0" + text).encode()).hexdigest()[:20]

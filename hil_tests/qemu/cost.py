@@ -49,7 +49,8 @@ class CallCost:
 
 
 def cost_program(sources: Paths, setup: str, call: str, target: str | Target, *,
-                 prelude: str = "", finish: str = "", include_dirs: Paths = (),
+                 prelude: str = "", finish: str = "", baseline_code: str = "",
+                 include_dirs: Paths = (),
                  defines: Mapping[str, str | int | None] | None = None, opt: str = "-O2",
                  language: str = "c", baseline: bool = False,
                  extra_cflags: Sequence[str] = (), extra_ldflags: Sequence[str] = ()) -> BuildResult:
@@ -57,7 +58,7 @@ def cost_program(sources: Paths, setup: str, call: str, target: str | Target, *,
     if language not in ("c", "c++"):
         raise KinefuseError(f"language must be 'c' or 'c++', not {language!r}")
     text = render_template("cost_driver.c", {"PRELUDE": prelude, "SETUP": setup, "CALL": call,
-                                             "FINISH": finish})
+                                             "FINISH": finish, "BASELINE": baseline_code})
     driver = write_generated(text, "kf_cost_driver.cpp" if language == "c++" else "kf_cost_driver.c")
     defs = dict(defines or {})
     if baseline:
@@ -77,7 +78,7 @@ def count_calls(elf_build: BuildResult, k: int, timeout: float = 120.0) -> int:
 
 def measure_call_cost(sources: Paths, setup: str, call: str, target: str | Target, *,
                       k: int = 100, prelude: str = "", finish: str = "",
-                      include_dirs: Paths = (),
+                      baseline_code: str = "", include_dirs: Paths = (),
                       defines: Mapping[str, str | int | None] | None = None,
                       opt: str = "-O2", size_opts: Sequence[str] = (),
                       language: str = "c", extra_cflags: Sequence[str] = (),
@@ -86,13 +87,16 @@ def measure_call_cost(sources: Paths, setup: str, call: str, target: str | Targe
 
     Snippets: ``prelude`` (file scope: includes, static data), ``setup`` (once, in a block
     that the call loop shares, so it may declare locals), ``call`` (K times; ``kf_i`` is the
-    0-based call index), ``finish`` (once after the loop).
+    0-based call index), ``finish`` (once after the loop).  ``baseline_code`` runs instead of
+    them in the size baseline program: use it to keep shared input tables referenced there
+    (e.g. ``kf_keep(table);``) so they do not count as added by the call.
     """
     if k <= 0:
         raise KinefuseError("k must be positive")
     tgt = get_target(target)
-    common = dict(prelude=prelude, finish=finish, include_dirs=list(include_dirs), defines=defines,
-                  language=language, extra_cflags=extra_cflags)
+    common = dict(prelude=prelude, finish=finish, baseline_code=baseline_code,
+                  include_dirs=list(include_dirs), defines=defines, language=language,
+                  extra_cflags=extra_cflags)
     sources = list(sources)
     prog = cost_program(sources, setup, call, tgt, opt=opt, **common)
     c0 = count_calls(prog, 0, timeout)
@@ -120,13 +124,15 @@ def loop_overhead(target: str | Target, *, opt: str = "-O2", k: int = 100) -> fl
 
 
 def size_delta(sources: Paths, setup: str, call: str, target: str | Target, *,
-               opt: str = "-Os", prelude: str = "", finish: str = "", include_dirs: Paths = (),
+               opt: str = "-Os", prelude: str = "", finish: str = "", baseline_code: str = "",
+               include_dirs: Paths = (),
                defines: Mapping[str, str | int | None] | None = None, language: str = "c",
                extra_cflags: Sequence[str] = ()) -> SizeReport:
     """Bytes the setup + call add: size(driver with them) - size(driver without them)."""
     sources = list(sources)
-    common = dict(prelude=prelude, finish=finish, include_dirs=list(include_dirs), defines=defines,
-                  opt=opt, language=language, extra_cflags=extra_cflags)
+    common = dict(prelude=prelude, finish=finish, baseline_code=baseline_code,
+                  include_dirs=list(include_dirs), defines=defines, opt=opt, language=language,
+                  extra_cflags=extra_cflags)
     with_it = cost_program(sources, setup, call, target, **common)
     without = cost_program(sources, setup, call, target, baseline=True, **common)
     return with_it.size - without.size

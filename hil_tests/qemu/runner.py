@@ -211,17 +211,22 @@ class QemuSession:
       guest until the first client connects, so no early byte is lost.
     * ``"pty"``: ``uart_device`` is a ``/dev/pts/N`` path for pyserial and other serial tools.
 
+      QEMU drops pty output while no program has the device open, so pass ``paused=True``,
+      open ``uart_device``, then call :meth:`resume` if the firmware talks first.
+
+    ``paused=True`` starts the CPU halted (QEMU ``-S``) until :meth:`resume`.
     Use as a context manager; leaving it stops QEMU.  ``stdout``/``console`` hold semihosting
     output after :meth:`stop` or :meth:`wait`.
     """
 
     def __init__(self, elf: str | os.PathLike, target: str | Target, *, uart: str = "socket",
                  args: Sequence[str] = (), extra_args: Sequence[str] = (),
-                 start_timeout: float = 10.0):
+                 start_timeout: float = 10.0, paused: bool = False):
         if uart not in ("socket", "tcp", "pty"):
             raise KinefuseError(f"uart must be 'socket', 'tcp' or 'pty', not {uart!r}")
         self.elf, self.target, self.mode = Path(elf), get_target(target), uart
         self.args, self.extra_args, self.start_timeout = list(args), list(extra_args), start_timeout
+        self.paused = paused
         self.uart_url: str | None = None
         self.uart_device: str | None = None
         self.proc: subprocess.Popen | None = None
@@ -250,9 +255,13 @@ class QemuSession:
             self.uart_url = f"tcp:127.0.0.1:{port}"
         else:
             serial = "pty"
+        extra = list(self.extra_args)
+        if self.paused:
+            self._qmp_path = Path(self._tmp.name) / "qmp.sock"
+            extra += ["-S", "-qmp", f"unix:{_qemu_escape(str(self._qmp_path))},server=on,wait=off"]
         cmd = qemu_command(self.elf, self.target, serial=serial,
                            console_path=Path(self._tmp.name) / "console.txt",
-                           semihosting_args=[self.elf.name, *self.args], extra_args=self.extra_args)
+                           semihosting_args=[self.elf.name, *self.args], extra_args=extra)
         self.command = cmd
         self.proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                                      stderr=subprocess.PIPE, cwd=self._tmp.name)
@@ -289,6 +298,32 @@ class QemuSession:
                     raise QemuError("QEMU exited at start: " + bytes(self._err).decode(errors="replace").strip()[:200])
                 time.sleep(0.01)
         return self
+
+    def resume(self, timeout: float = 10.0) -> None:
+        """Start the CPU of a session created with ``paused=True`` (QMP ``cont``)."""
+        if not self.paused:
+            return
+        deadline = time.monotonic() + timeout
+        while True:
+            try:
+                qmp = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+                qmp.connect(str(self._qmp_path))
+                break
+            except OSError:
+                qmp.close()
+                if time.monotonic() > deadline:
+                    raise QemuError("QEMU's QMP socket did not open") from None
+                time.sleep(0.01)
+        with qmp:
+            qmp.settimeout(timeout)
+            reader = qmp.makefile("rb")
+            reader.readline()                                   # greeting
+            for command in (b'{"execute": "qmp_capabilities"}\n', b'{"execute": "cont"}\n'):
+                qmp.sendall(command)
+                while b'"return"' not in (line := reader.readline()):
+                    if not line:
+                        raise QemuError("QMP connection closed before 'cont' was acknowledged")
+        self.paused = False
 
     def __enter__(self) -> "QemuSession":
         return self.start()

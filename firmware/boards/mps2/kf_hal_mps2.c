@@ -5,7 +5,8 @@
  * is SysTick on the 25 MHz CPU clock with a 1 ms interrupt, because QEMU has no DWT CYCCNT;
  * under QEMU it follows host time, so it measures nothing about the emulated CPU's speed.
  * Storage is RAM in .noinit: it survives kf_hal_reboot() but not a power cycle (a new QEMU).
- * The board's state lives in this file's statics: one board, one instance.
+ * The board's state lives in this file's statics: one board, one instance.  kf_hal_micros()
+ * is for thread context (not interrupt handlers).
  */
 #include <stdint.h>
 #include <string.h>
@@ -26,6 +27,7 @@ typedef struct {
 } kf_mps2_storage;
 
 static volatile uint32_t g_millis;   /* incremented by SysTick_Handler */
+static uint32_t g_last_micros;       /* last value returned by kf_hal_micros */
 static kf_mps2_storage g_storage __attribute__((section(".noinit")));
 
 #define KF_UART0 ((kf_cmsdk_uart_regs *)MPS2_UART0_BASE)
@@ -40,6 +42,7 @@ void kf_hal_init(void)
     kf_cmsdk_uart_init(KF_UART0, MPS2_SYSCLK_HZ, KF_UART_BAUD);
 
     g_millis = 0u;
+    g_last_micros = 0u;
     SCS_SYST_CSR = 0u;
     SCS_SYST_RVR = KF_TICKS_PER_MS - 1u;
     SCS_SYST_CVR = 0u;
@@ -55,13 +58,31 @@ uint32_t kf_hal_micros(void)
 {
     uint32_t ms;
     uint32_t ticks_left;
-    /* Re-read when the 1 ms interrupt fired between reading the two halves. */
+    uint32_t wrapped;
+    /* Re-read when the 1 ms interrupt ran between the reads.  If the counter has reloaded
+     * but its interrupt is still pending (taken a few instructions later), the millisecond
+     * count is one behind: a pending tick with a freshly reloaded counter means "add 1 ms". */
     do {
         ms = g_millis;
         ticks_left = SCS_SYST_CVR;
+        wrapped = SCS_ICSR & ICSR_PENDSTSET;
     } while (ms != g_millis);
+    if (wrapped != 0u && ticks_left > KF_TICKS_PER_MS / 2u) {
+        ms++;
+    }
     uint32_t elapsed = (KF_TICKS_PER_MS - 1u) - ticks_left;
-    return ms * 1000u + elapsed / KF_TICKS_PER_US;
+    uint32_t now = ms * 1000u + elapsed / KF_TICKS_PER_US;
+    /* QEMU derives the counter from host time but delivers the tick later, from another
+     * thread, sometimes more than half a millisecond late (measured), so neither the
+     * interrupt nor PENDSTSET is visible yet: a step backwards is a missed tick. */
+    if ((int32_t)(now - g_last_micros) < 0) {
+        now += 1000u;
+        if ((int32_t)(now - g_last_micros) < 0) {
+            now = g_last_micros;     /* more than one tick late: hold rather than go back */
+        }
+    }
+    g_last_micros = now;
+    return now;
 }
 
 int32_t kf_hal_uart_read(uint8_t *buf, int32_t max)

@@ -19,6 +19,7 @@
 #define SCS_SYST_CSR  (*(volatile uint32_t *)0xE000E010u)  /* SysTick control and status */
 #define SCS_SYST_RVR  (*(volatile uint32_t *)0xE000E014u)  /* SysTick reload value (24 bit) */
 #define SCS_SYST_CVR  (*(volatile uint32_t *)0xE000E018u)  /* SysTick current value */
+#define SCS_ICSR      (*(volatile uint32_t *)0xE000ED04u)  /* interrupt control and state */
 #define SCS_AIRCR     (*(volatile uint32_t *)0xE000ED0Cu)  /* application interrupt/reset control */
 #define SCS_CPACR     (*(volatile uint32_t *)0xE000ED88u)  /* coprocessor access (ARMv7-M only) */
 
@@ -26,6 +27,8 @@
 #define SYST_CSR_TICKINT   (1u << 1)
 #define SYST_CSR_CLKSOURCE (1u << 2)   /* 1 = processor clock */
 #define SYST_CSR_COUNTFLAG (1u << 16)
+
+#define ICSR_PENDSTSET     (1u << 26)  /* SysTick exception pending */
 
 #define AIRCR_VECTKEY      (0x05FAu << 16)
 #define AIRCR_SYSRESETREQ  (1u << 2)

@@ -3,7 +3,8 @@
  *
  * Reset: enable the FPU (when compiled for one), copy .data from its load image, zero .bss,
  * run C/C++ constructors, call main(), and report its return value through semihosting
- * exit.  With newlib's rdimon crt0 (KF_NEWLIB_CRT0) the C runtime set-up is left to _start.
+ * exit.  With newlib's rdimon crt0 (KF_NEWLIB_CRT0) everything after the .data copy is left
+ * to its _start.
  * Faults also end the run through semihosting so a crashed test stops at once instead of
  * hanging until its timeout.
  */
@@ -64,13 +65,14 @@ void Reset_Handler(void)
     SCS_CPACR |= 0xFu << 20;            /* full access to CP10/CP11 (the FPU) */
     __asm__ volatile("dsb\n\tisb" ::: "memory");
 #endif
-#ifdef KF_NEWLIB_CRT0
-    _start();                           /* rdimon crt0: stack, .bss, constructors, main, exit */
-#else
+    /* .data always: QEMU, like a flash programmer, loads it at its load address only. */
     const uint32_t *src = &__data_load__;
     for (uint32_t *dst = &__data_start__; dst < &__data_end__; ++dst, ++src) {
         *dst = *src;
     }
+#ifdef KF_NEWLIB_CRT0
+    _start();                           /* rdimon crt0: heap, .bss, constructors, main, exit */
+#else
     for (uint32_t *dst = &__bss_start__; dst < &__bss_end__; ++dst) {
         *dst = 0u;
     }

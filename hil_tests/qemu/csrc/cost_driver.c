@@ -5,8 +5,9 @@
  * command line as exactly ten decimal digits, so parsing it costs the same for every K and
  * (instructions with K calls - instructions with 0 calls) / K is the cost of one call plus
  * the loop around it (a counter increment, compare and branch).  The loop index is kf_i.
- * Built with KF_COST_BASELINE the setup and call are left out: the size difference between
- * the two programs is what the call adds.  Valid C99 and C++ (for C++ libraries).
+ * Built with KF_COST_BASELINE the setup and call are replaced by the baseline snippet (which
+ * may keep input tables referenced so they cancel out): the size difference between the two
+ * programs is what the setup and call add.  Valid C99 and C++ (for C++ libraries).
  * Placeholders @...@ are replaced by Python.
  */
 #include <stdint.h>
@@ -56,6 +57,12 @@ int main(void)
         /* ---- user finish ---- */
         @FINISH@
         /* ---- end of user finish ---- */
+    }
+#else
+    {
+        /* ---- user baseline ---- */
+        @BASELINE@
+        /* ---- end of user baseline ---- */
     }
 #endif
     return 0;
