@@ -5,10 +5,12 @@ S. Madgwick, "An efficient orientation filter for inertial and inertial/magnetic
 """
 from __future__ import annotations
 
+import dataclasses
+
 from kinefuse.codegen.estimator import Estimator, Param, Var
-from kinefuse.codegen.linalg import Quat, Vec3, vselect
+from kinefuse.codegen.linalg import Quat, vselect
 from kinefuse.codegen.scalar import (all_of, assume, clamp, fmax, inc_if, logical_and,
-                                     logical_not, logical_or, rsqrt, select, sqrt)
+                                     logical_not, logical_or, select, sqrt)
 from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISED,
                                                 MAG_NORM_MIN_SQ, Q_OUT, Q_STATE, REJECTED,
                                                 SampleCheck, initial_quaternion)
@@ -20,9 +22,9 @@ class Madgwick(Estimator):
     """Gyroscope integration corrected by one normalised gradient-descent step per sample on
     the misalignment of the measured gravity (and magnetic field) direction.
 
-    The earth frame is East-North-Up: the magnetic reference is b = (0, b_y, b_z), north along +y
-    (the factor-2 error in b_x/b_z of many MARG copies does not occur: the Jacobian is written
-    out from the objective function).  The field's direction in the earth frame is re-estimated
+    Madgwick's equations are used as published, in his earth frame (x magnetic north, z up; the
+    magnetic reference b = (b_x, 0, b_z) without the factor-2 error of many MARG copies); the state
+    is kept in that frame and the output is turned into East-North-Up.  The field's direction in the earth frame is re-estimated
     every sample from the current orientation, so the magnetometer acts on heading and on
     inclination only through the gradient step.  Samples without a magnetometer reading use the
     gravity objective alone.  The orientation starts from the first valid sample (gravity and,
@@ -39,7 +41,9 @@ class Madgwick(Estimator):
         Param("beta_start", 0.041, "rad/s", 0.0, 20.0, "gain during the start-up phase"),
         Param("start_time", 0.0, "s", 0.0, T_RUN_MAX, "duration of the start-up phase"),
     )
-    state = (Q_STATE, INITIALISED,
+    state = (dataclasses.replace(Q_STATE, doc="orientation quaternion (w, x, y, z), sensor to "
+                                  "earth, earth frame x north / z up (Madgwick's)"),
+             INITIALISED,
              Var("t_run", 1, 0.0, T_RUN_MAX, "s", "time since initialisation (saturates)",
                  init=0.0),
              REJECTED)
@@ -51,36 +55,39 @@ class Madgwick(Estimator):
 
     def step(self, x, u, p):
         chk = SampleCheck(u)
+        # Madgwick's own frame (x magnetic north, z up) inside; ENU at the interface.  His
+        # formulas replace w^2+x^2-y^2-z^2 by 1-2(y^2+z^2) etc.; those substitutions are not
+        # rotation-equivariant, so deriving them in ENU would give a (slightly) different filter.
         q = Quat(*x.q)
         w, qx, qy, qz = q
 
-        # gravity objective f_g = R(q)^T e_z - a/|a| and its gradient J_g^T f_g
+        # gravity objective f_g = R(q)^T e_z - a/|a| and its gradient J_g^T f_g  (eq. 25-26)
         a, a2 = chk.acc.normalized(1e-6)
         f1 = 2.0 * (qx * qz - w * qy) - a.x
         f2 = 2.0 * (w * qx + qy * qz) - a.y
-        f3 = 1.0 - 2.0 * (qx * qx + qy * qy) - a.z
+        f3 = 2.0 * (0.5 - qx * qx - qy * qy) - a.z
         grad_g = Quat(-2.0 * qy * f1 + 2.0 * qx * f2,
                       2.0 * qz * f1 + 2.0 * w * f2 - 4.0 * qx * f3,
                       -2.0 * w * f1 + 2.0 * qz * f2 - 4.0 * qy * f3,
                       2.0 * qx * f1 + 2.0 * qy * f2)
 
-        # magnetic objective f_b = R(q)^T (0, b_y, b_z) - m/|m| with the reference field taken
-        # from the measurement rotated into the earth frame
+        # magnetic objective f_b = R(q)^T (b_x, 0, b_z) - m/|m|, reference from the measurement
+        # rotated into the earth frame (eq. 27-28, 45-46)
         m, m2 = chk.mag.normalized(1e-6)
         h = q.rotate(m)
-        by = sqrt(fmax(h.x * h.x + h.y * h.y, 0.0))
+        bx = sqrt(fmax(h.x * h.x + h.y * h.y, 0.0))
         bz = h.z
-        fb1 = 2.0 * by * (qx * qy + w * qz) + 2.0 * bz * (qx * qz - w * qy) - m.x
-        fb2 = by * (1.0 - 2.0 * (qx * qx + qz * qz)) + 2.0 * bz * (w * qx + qy * qz) - m.y
-        fb3 = 2.0 * by * (qy * qz - w * qx) + bz * (1.0 - 2.0 * (qx * qx + qy * qy)) - m.z
-        grad_b = Quat(2.0 * (by * qz - bz * qy) * fb1 + 2.0 * bz * qx * fb2
-                      - 2.0 * by * qx * fb3,
-                      2.0 * (by * qy + bz * qz) * fb1 + (2.0 * bz * w - 4.0 * by * qx) * fb2
-                      - (2.0 * by * w + 4.0 * bz * qx) * fb3,
-                      2.0 * (by * qx - bz * w) * fb1 + 2.0 * bz * qz * fb2
-                      + (2.0 * by * qz - 4.0 * bz * qy) * fb3,
-                      2.0 * (by * w + bz * qx) * fb1 + (2.0 * bz * qy - 4.0 * by * qz) * fb2
-                      + 2.0 * by * qy * fb3)
+        fb1 = 2.0 * bx * (0.5 - qy * qy - qz * qz) + 2.0 * bz * (qx * qz - w * qy) - m.x
+        fb2 = 2.0 * bx * (qx * qy - w * qz) + 2.0 * bz * (w * qx + qy * qz) - m.y
+        fb3 = 2.0 * bx * (w * qy + qx * qz) + 2.0 * bz * (0.5 - qx * qx - qy * qy) - m.z
+        grad_b = Quat(-2.0 * bz * qy * fb1 + (-2.0 * bx * qz + 2.0 * bz * qx) * fb2
+                      + 2.0 * bx * qy * fb3,
+                      2.0 * bz * qz * fb1 + (2.0 * bx * qy + 2.0 * bz * w) * fb2
+                      + (2.0 * bx * qz - 4.0 * bz * qx) * fb3,
+                      (-4.0 * bx * qy - 2.0 * bz * w) * fb1 + (2.0 * bx * qx + 2.0 * bz * qz) * fb2
+                      + (2.0 * bx * w - 4.0 * bz * qy) * fb3,
+                      (-4.0 * bx * qz + 2.0 * bz * qx) * fb1 + (-2.0 * bx * w + 2.0 * bz * qy) * fb2
+                      + 2.0 * bx * qx * fb3)
 
         use_acc = a2 >= ACC_NORM_MIN_SQ
         use_mag = logical_and(chk.use_mag, m2 >= MAG_NORM_MIN_SQ)
@@ -93,13 +100,30 @@ class Madgwick(Estimator):
         qdot = (q * Quat(0.0, *chk.gyr)).scale(0.5) - step.scale(beta)
         q_new = (q + qdot.scale(chk.dt)).normalized()
 
-        # first valid sample: orientation from gravity and magnetic north
+        # first valid sample: orientation from gravity and magnetic north (ENU -> Madgwick frame)
         q_init, init_ok = initial_quaternion(chk.acc, chk.mag, chk.use_mag)
         do_init = all_of(chk.ok, logical_not(x.initialised), init_ok)
         run = logical_and(chk.ok, x.initialised)
-        q_next = vselect(do_init, q_init, vselect(run, q_new, q))
-        t_next = select(run, clamp(x.t_run + chk.dt, 0.0, 60.0), x.t_run)
+        q_next = vselect(do_init, enu_to_nwu(q_init), vselect(run, q_new, q))
+        t_next = select(run, clamp(x.t_run + chk.dt, 0.0, T_RUN_MAX), x.t_run)
         rejected = inc_if(x.rejected, chk.bad)
         nx = {"q": q_next, "initialised": logical_or(x.initialised, do_init),
               "t_run": t_next, "rejected": rejected}
-        return nx, {"q": q_next, "rejected": rejected}
+        return nx, {"q": nwu_to_enu(q_next), "rejected": rejected}
+
+
+_C45 = 0.7071067811865476   # cos(45 deg) = sin(45 deg)
+
+
+def nwu_to_enu(q: Quat) -> Quat:
+    """(cos 45°, 0, 0, sin 45°) ⊗ q: the earth frame turned from x-north to x-east."""
+    w, x, y, z = q
+    return Quat(assume(_C45 * (w - z), -1.0, 1.0), assume(_C45 * (x - y), -1.0, 1.0),
+                assume(_C45 * (x + y), -1.0, 1.0), assume(_C45 * (w + z), -1.0, 1.0))
+
+
+def enu_to_nwu(q: Quat) -> Quat:
+    """(cos 45°, 0, 0, -sin 45°) ⊗ q."""
+    w, x, y, z = q
+    return Quat(assume(_C45 * (w + z), -1.0, 1.0), assume(_C45 * (x + y), -1.0, 1.0),
+                assume(_C45 * (y - x), -1.0, 1.0), assume(_C45 * (z - w), -1.0, 1.0))
