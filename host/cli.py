@@ -24,6 +24,12 @@ COMMAND_MODULES = [
     "kinefuse.hil_tests.sim.cli_cmd",
     "kinefuse.host.commands.calibrate_cmd",
     "kinefuse.host.commands.report_cmd",
+    "kinefuse.host.commands.record_cmd",
+    "kinefuse.host.commands.decode_cmd",
+    "kinefuse.host.commands.export_cmd",
+    "kinefuse.host.commands.stats_cmd",
+    "kinefuse.host.commands.params_cmd",
+    "kinefuse.host.commands.ports_cmd",
 ]
 # Modules providing `kinefuse bench <name>` sub-commands.
 BENCH_MODULES = [
@@ -32,6 +38,7 @@ BENCH_MODULES = [
     "kinefuse.host.bench.speed",
     "kinefuse.host.calib.bench",
     "kinefuse.host.kinematics.bench",
+    "kinefuse.host.bench.decode",
 ]
 
 

@@ -10,6 +10,7 @@ Connection strings::
     udp:127.0.0.1:14550 / udpin:...                  UDP, listen (replies go to the last sender)
     udpout:127.0.0.1:14550                           UDP, send to
     file:capture.bin                                 raw bytes from a file (replay)
+    fake:rate=500,unit=2                             a simulated unit in this process (demos)
 
 Why not just pyserial: ``Serial.open()`` and ``socket://`` discard input already waiting, and
 ``read(n)`` raises on a disconnect and drops what it had gathered.  On POSIX we therefore read
@@ -303,6 +304,48 @@ class TcpConnection(Connection):
         self._sock = self._server = None
 
 
+class SocketConnection(Connection):
+    """A connected stream socket (socket pairs, accepted connections)."""
+
+    def __init__(self, sock: socket.socket, url: str):
+        self._sock, self.url = sock, url
+        sock.setblocking(False)
+
+    def read(self, timeout: float) -> bytes:
+        try:
+            r, _, _ = select.select([self._sock], [], [], max(0.0, timeout))
+        except (OSError, ValueError):
+            raise ConnectionClosed(self.url) from None
+        if not r:
+            return b""
+        try:
+            data = self._sock.recv(READ_SIZE)
+        except BlockingIOError:
+            return b""
+        except OSError:
+            data = b""
+        if not data:
+            raise ConnectionClosed(self.url)
+        return data
+
+    def write(self, data: bytes) -> None:
+        view = memoryview(data)
+        deadline = time.monotonic() + 5.0
+        while view:
+            try:
+                view = view[self._sock.send(view):]
+            except BlockingIOError:
+                if time.monotonic() > deadline:
+                    raise TimeoutError(f"{self.url}: write timed out") from None
+                select.select([], [self._sock], [], 0.05)
+
+    def close(self) -> None:
+        try:
+            self._sock.close()
+        except OSError:
+            pass
+
+
 class UdpConnection(Connection):
     def __init__(self, host: str, port: int, listen: bool):
         self.url = f"{'udpin' if listen else 'udpout'}:{host}:{port}"
@@ -391,6 +434,9 @@ def open_connection(url: str, baud: int = DEFAULT_BAUD) -> Connection:
         return UdpConnection(host, port, listen=scheme != "udpout")
     if scheme == "file":
         return FileConnection(rest)
+    if scheme == "fake":
+        from kinefuse.host.link.fakeunit import FakeConnection
+        return FakeConnection(rest)
     if scheme == "pty":
         return open_tty_raw(rest)
     if scheme == "serial":

@@ -335,3 +335,42 @@ def raw_frames(n: int, unit_id: int = 1, rate_hz: float = 1000.0, seed: int = 0,
         out.append(frame_from_payload(spec, payload, enc.sysid, enc.compid, enc.seq))
         enc.seq = (enc.seq + 1) & 0xFF
     return b"".join(out)
+
+
+class FakeConnection(Connection):
+    """Host end of a socket pair whose other end is driven by an in-process :class:`FakeUnit`.
+
+    Connection string ``fake:[rate=1000,ori=100,unit=1,drift=0,drop=0,corrupt=0,stream=1]`` (all
+    optional): try the host tools without hardware.
+    """
+
+    def __init__(self, options: str = ""):
+        import socket as _socket
+        from kinefuse.host.errors import KinefuseError
+        from kinefuse.host.link.connection import SocketConnection
+        keys = {"rate": ("rate_hz", float), "ori": ("orientation_rate_hz", float), "unit": ("unit_id", int),
+                "drift": ("drift_ppm", float), "drop": ("drop_every", int), "corrupt": ("corrupt_probability", float),
+                "stream": ("streaming", lambda v: bool(int(v))), "seed": ("seed", int)}
+        kw = {}
+        for part in filter(None, options.split(",")):
+            k, _, v = part.partition("=")
+            if k not in keys:
+                raise KinefuseError(f"bad fake unit option {k!r} (known: {', '.join(keys)})")
+            try:
+                kw[keys[k][0]] = keys[k][1](v)
+            except ValueError:
+                raise KinefuseError(f"bad value for fake unit option {k}: {v!r}") from None
+        a, b = _socket.socketpair()
+        self.url = f"fake:{options}"
+        self._host = SocketConnection(a, self.url)
+        self.unit = FakeUnit(SocketConnection(b, "fake-unit"), **kw).start()
+
+    def read(self, timeout: float) -> bytes:
+        return self._host.read(timeout)
+
+    def write(self, data: bytes) -> None:
+        self._host.write(data)
+
+    def close(self) -> None:
+        self.unit.stop()
+        self._host.close()

@@ -1,0 +1,123 @@
+"""``kinefuse decode``: summary of a recording (or of a raw MAVLink capture with --raw).
+
+    kinefuse decode walk.kfr
+    kinefuse decode walk.kfr --show 5          # also print the first 5 messages of each type
+    kinefuse decode capture.bin --raw --json
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from kinefuse.host.link.cli_util import console, fmt_bytes, print_json
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("decode", help="summarise a .kfr recording or raw MAVLink capture",
+                              description=__doc__.split("\n\n")[0].split(": ", 1)[-1])
+    p.add_argument("file", metavar="FILE", help=".kfr recording (or raw capture with --raw)")
+    p.add_argument("--raw", action="store_true", help="FILE is a plain MAVLink byte capture")
+    p.add_argument("--show", type=int, default=0, metavar="N", help="print the first N messages of each type")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(func=run)
+
+
+def summarize(df) -> dict:
+    from kinefuse.host.link.dialect import DIALECT_HASH
+    from kinefuse.host.link.spec import kinefuse_dialect
+    d = kinefuse_dialect()
+    rec = df.recording
+    head = df.header
+    out = {"file": str(df.path), "format": head.get("format"), "start_utc": head.get("start_utc"),
+           "note": head.get("note"), "streams": []}
+    if rec is not None:
+        dialect = head.get("dialect", {})
+        out["dialect_hash"] = dialect.get("hash")
+        out["dialect_match"] = dialect.get("hash") == f"0x{DIALECT_HASH():08X}"
+        out["chunks"] = rec.chunks
+        out["damaged_chunks"] = rec.damaged_chunks
+        out["truncated"] = rec.truncated
+        out["host"] = head.get("host", {}).get("hostname")
+    for sid, ds in sorted(df.streams.items()):
+        s = {"id": sid, "connection": ds.info.get("connection"), "bytes": ds.rx_bytes,
+             "counters": ds.counters.as_dict(), "messages": {}, "events": [], "units": {}}
+        for mid, arr in sorted(ds.arrays.items()):
+            s["messages"][d.get(mid).name] = int(arr.size)
+            for sysid in np.unique(arr["sysid"]):
+                s["units"].setdefault(str(int(sysid)), 0)
+                s["units"][str(int(sysid))] += int(np.sum(arr["sysid"] == sysid))
+        host = [h for h in ds.host_ns.values() if h is not None and h.size]
+        if host:
+            s["host_span_s"] = (max(int(h.max()) for h in host) - min(int(h.min()) for h in host)) / 1e9
+        for m in ds.meta:
+            if m.get("type") in ("event", "warning"):
+                s["events"].append({k: v for k, v in m.items() if k != "t_ns"})
+            elif m.get("type") == "unit_status":
+                s.setdefault("firmware", {})[str(m.get("sysid"))] = m.get("firmware_version_text")
+            elif m.get("type") == "params":
+                s.setdefault("params", {})[str(m.get("sysid"))] = m.get("params")
+        out["streams"].append(s)
+    return out
+
+
+def run(args) -> int:
+    from kinefuse.host.link.frames import decode_file
+    df = decode_file(args.file, raw=args.raw)
+    summary = summarize(df)
+    if args.json:
+        if args.show:
+            summary["first_messages"] = _first(df, args.show)
+        print_json(summary)
+        return 0
+    con = console()
+    from rich.table import Table
+    head = f"{summary['file']}: {summary['format']}"
+    if summary.get("start_utc"):
+        head += f", started {summary['start_utc']}"
+    con.print(head)
+    if summary.get("note"):
+        con.print(f"note: {summary['note']}")
+    if df.recording is not None:
+        if not summary["dialect_match"]:
+            con.print(f"[yellow]warning:[/] recorded with dialect {summary['dialect_hash']}, this kinefuse has "
+                      f"a different one: messages may decode wrongly")
+        if summary["truncated"]:
+            con.print("[yellow]note:[/] the file ends inside a chunk (recorder killed?): decoded up to the end")
+        if summary["damaged_chunks"]:
+            con.print(f"[yellow]warning:[/] {summary['damaged_chunks']} damaged chunk(s) skipped")
+    for s in summary["streams"]:
+        c = s["counters"]
+        con.print(f"\nstream {s['id']} ({s['connection']}): {fmt_bytes(s['bytes'])}, {c['frames_ok']:,} frames, "
+                  f"{c['crc_errors']} CRC errors, {c['bytes_skipped']:,} bytes skipped, "
+                  f"{c['unknown_msgid']} unknown ids" + (f", {s['host_span_s']:.1f} s" if "host_span_s" in s else ""))
+        if s.get("firmware"):
+            con.print("units: " + ", ".join(f"{k} (firmware {v})" for k, v in s["firmware"].items()))
+        t = Table("message", "count", box=None)
+        for name, n in s["messages"].items():
+            t.add_row(name, f"{n:,}")
+        con.print(t)
+        for e in s["events"]:
+            con.print(f"  {e.get('type')}: {e.get('text') or e.get('event')} {e.get('error') or ''}".rstrip())
+    if args.show:
+        for name, rows in _first(df, args.show).items():
+            con.print(f"\n[bold]{name}[/]")
+            for r in rows:
+                con.print("  " + ", ".join(f"{k}={v}" for k, v in r.items()))
+    return 0
+
+
+def _first(df, n: int) -> dict:
+    from kinefuse.host.link.spec import kinefuse_dialect
+    d = kinefuse_dialect()
+    out = {}
+    for sid, ds in sorted(df.streams.items()):
+        for mid, arr in sorted(ds.arrays.items()):
+            rows = []
+            for r in arr[:n]:
+                row = {"stream": sid}
+                for name in arr.dtype.names:
+                    v = r[name]
+                    row[name] = v.tolist() if isinstance(v, np.ndarray) else (
+                        v.decode("utf-8", "replace").rstrip("\0") if isinstance(v, bytes) else v.item())
+                rows.append(row)
+            out.setdefault(d.get(mid).name, []).extend(rows)
+    return out

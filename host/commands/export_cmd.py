@@ -1,0 +1,41 @@
+"""``kinefuse export``: one CSV per message type (units in the column names, device and host times).
+
+    kinefuse export walk.kfr --out walk_csv/
+    kinefuse export walk.kfr --out walk_csv/ --messages KF_RAW_SAMPLE,KF_ORIENTATION
+"""
+from __future__ import annotations
+
+from kinefuse.host.link.cli_util import console, print_json
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("export", help="export a recording to CSV files (one per message type)",
+                              description=__doc__.split("\n\n")[0].split(": ", 1)[-1])
+    p.add_argument("file", metavar="FILE", help=".kfr recording (or raw capture with --raw)")
+    p.add_argument("--out", required=True, metavar="DIR", help="output folder (created)")
+    p.add_argument("--messages", metavar="LIST", help="comma-separated message names (default: all)")
+    p.add_argument("--raw", action="store_true", help="FILE is a plain MAVLink byte capture")
+    p.add_argument("--json", action="store_true", help="print one JSON object listing the files")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from rich.progress import Progress
+    from kinefuse.host.link.export import export_csv
+    from kinefuse.host.link.frames import decode_file
+    con = console(args.json)
+    messages = [m.strip() for m in args.messages.split(",") if m.strip()] if args.messages else None
+    with Progress(console=con, transient=True) as prog:
+        task = prog.add_task("decoding", total=None)
+        df = decode_file(args.file, raw=args.raw)
+        total = sum(a.size for ds in df.streams.values() for a in ds.arrays.values())
+        prog.update(task, description="writing CSV", total=max(1, total), completed=0)
+        files = export_csv(df, args.out, messages, progress=lambda name, n: prog.advance(task, n))
+    if args.json:
+        print_json({"file": str(df.path), "out": str(args.out), "files": files})
+    else:
+        for f in files:
+            con.print(f"{f['file']}: {f['rows']:,} rows")
+        if not files:
+            con.print("no messages to export")
+    return 0

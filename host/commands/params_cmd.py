@@ -1,0 +1,72 @@
+"""``kinefuse params``: read and write a unit's parameters (MAVLink parameter protocol).
+
+    kinefuse params --port /dev/ttyUSB0                       # list all
+    kinefuse params --port /dev/ttyUSB0 --get KF_RATE_HZ
+    kinefuse params --port /dev/ttyUSB0 --set KF_RATE_HZ=500 --set KF_MAG_ENABLE=0
+"""
+from __future__ import annotations
+
+from kinefuse.host.errors import KinefuseError
+from kinefuse.host.link.cli_util import console, print_json
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("params", help="list, read or write unit parameters",
+                              description=__doc__.split("\n\n")[0].split(": ", 1)[-1])
+    p.add_argument("--port", required=True, metavar="CONN", help="serial port or connection string")
+    p.add_argument("--baud", default=921600, metavar="BAUD", help="serial baud rate (default 921600)")
+    p.add_argument("--unit", type=int, metavar="SYSID", help="system id of the unit (default: first heartbeat)")
+    p.add_argument("--get", action="append", default=[], metavar="NAME", help="read one parameter (repeatable)")
+    p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE", help="write one parameter (repeatable)")
+    p.add_argument("--timeout", type=float, default=3.0, metavar="S", help="wait this long for the unit (default 3)")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(func=run)
+
+
+def _parse_set(items: list[str]) -> list[tuple[str, float | int]]:
+    out = []
+    for item in items:
+        name, sep, value = item.partition("=")
+        if not sep or not name:
+            raise KinefuseError(f"bad --set {item!r}: expected NAME=VALUE")
+        try:
+            v = int(value, 0)
+        except ValueError:
+            try:
+                v = float(value)
+            except ValueError:
+                raise KinefuseError(f"bad value in --set {item!r}: not a number") from None
+        out.append((name.strip(), v))
+    return out
+
+
+def run(args) -> int:
+    from kinefuse.host.link.connection import open_connection, parse_baud
+    from kinefuse.host.link.params import ParamClient
+    from kinefuse.host.link.session import Session
+    sets = _parse_set(args.set)
+    conn = open_connection(args.port, parse_baud(args.baud))
+    with Session(conn) as s:
+        sysid = args.unit
+        if sysid is None:
+            hb = s.wait_for(lambda f: f.msgid == 0 and f.sysid != 255, timeout=args.timeout)
+            if hb is None:
+                raise KinefuseError(f"no HEARTBEAT on {args.port} within {args.timeout:g} s "
+                                    f"(unit off, wrong port or wrong baud rate?)")
+            sysid = hb.sysid
+        client = ParamClient(s, sysid)
+        result: dict = {"unit": sysid}
+        if sets:
+            result["set"] = {name: client.set(name, value) for name, value in sets}
+        if args.get:
+            result["get"] = {name: client.get(name) for name in args.get}
+        if not sets and not args.get:
+            result["params"] = client.fetch_all(timeout=max(args.timeout, 5.0))
+    if args.json:
+        print_json(result)
+        return 0
+    con = console()
+    for key in ("set", "get", "params"):
+        for name, value in result.get(key, {}).items():
+            con.print(f"{name} = {value}" + ("  (written)" if key == "set" else ""))
+    return 0

@@ -1,0 +1,69 @@
+"""``kinefuse stats``: link statistics of a recording, per stream and unit.
+
+Rate achieved vs requested, samples lost (32-bit sample counter, wrap-safe), CRC errors,
+device-to-host clock offset and drift (robust fit on the minimum-delay envelope, ppm), delay
+above the minimum, latency from TIMESYNC round trips.
+
+    kinefuse stats walk.kfr
+    kinefuse stats walk.kfr --json
+"""
+from __future__ import annotations
+
+from kinefuse.host.link.cli_util import console, fmt_rate, print_json
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("stats", help="link statistics: rates, loss, errors, clock drift, latency",
+                              description=__doc__.split("\n\n")[0].split(": ", 1)[-1])
+    p.add_argument("file", metavar="FILE", help=".kfr recording (or raw capture with --raw: no host times)")
+    p.add_argument("--raw", action="store_true", help="FILE is a plain MAVLink byte capture")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from kinefuse.host.link import stats
+    from kinefuse.host.link.frames import decode_file
+    result = stats.compute(decode_file(args.file, raw=args.raw))
+    if args.json:
+        print_json(result)
+        return 0
+    con = console()
+    from rich.table import Table
+    con.print(f"{result['file']}" + (f" (started {result['start_utc']})" if result.get("start_utc") else ""))
+    for s in result["streams"]:
+        con.print(f"\n[bold]stream {s['id']}[/] {s['connection']}: {s['frames_ok']:,} frames, "
+                  f"{s['crc_errors']} CRC errors, {s['bytes_skipped']:,} bytes skipped, "
+                  f"{s['unknown_msgid']} unknown ids" + (f", {s['host_span_s']:.1f} s" if "host_span_s" in s else ""))
+        for u in s["units"]:
+            line = f"unit {u['sysid']}"
+            if "firmware_version" in u:
+                line += f", firmware {u['firmware_version']}"
+                if not u["dialect_match"]:
+                    line += f" [yellow](dialect {u['dialect_hash']} differs from the host's)[/]"
+            con.print(line)
+            t = Table("message", "count", "rate Hz", "requested Hz", "ratio", "lost", "loss %", "resets", box=None)
+            for name, m in u["messages"].items():
+                ratio = m.get("rate_ratio")
+                style = "yellow" if ratio is not None and ratio < 0.95 else None
+                t.add_row(name, f"{m['count']:,}", fmt_rate(m.get("rate_hz")), fmt_rate(m.get("requested_hz")),
+                          "-" if ratio is None else f"{ratio:.3f}", str(m.get("samples_lost", "-")),
+                          "-" if "loss_fraction" not in m else f"{100 * m['loss_fraction']:.3f}",
+                          str(m.get("resets", "-")), style=style)
+            con.print(t)
+            c = u.get("clock")
+            if c:
+                dm = c["delay_above_min_ms"]
+                con.print(f"  clock ({c['reference']}, {c['points']:,} points over {c['span_s']:.1f} s): "
+                          f"drift {c['drift_ppm']:+.1f} ppm (unit vs host), offset {c['offset_s']:.6f} s; "
+                          f"delay above minimum median {dm['median']:.2f} ms, p95 {dm['p95']:.2f} ms, "
+                          f"max {dm['max']:.2f} ms")
+            lat = u.get("latency")
+            if lat:
+                r = lat["timesync_rtt_ms"]
+                con.print(f"  latency: TIMESYNC round trip min {r['min']:.2f} / median {r['median']:.2f} ms "
+                          f"({r['count']} replies); one-way estimate {lat['one_way_estimate_ms']:.2f} ms")
+            rep = u.get("unit_reported")
+            if rep:
+                con.print("  unit reports: " + ", ".join(f"{k} {v}" for k, v in rep.items() if v is not None))
+    return 0

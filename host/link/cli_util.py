@@ -1,0 +1,42 @@
+"""Small helpers shared by the link commands (record, decode, export, stats, params, ports)."""
+from __future__ import annotations
+
+import json
+import sys
+
+
+def console(json_mode: bool = False):
+    """A rich console; on stderr when stdout carries the one JSON object."""
+    from rich.console import Console
+    return Console(stderr=json_mode, highlight=False)
+
+
+def print_json(obj) -> None:
+    """Exactly one JSON object on stdout."""
+    sys.stdout.write(json.dumps(obj, sort_keys=True, default=_default) + "\n")
+    sys.stdout.flush()
+
+
+def _default(o):
+    import numpy as np
+    if isinstance(o, np.integer):
+        return int(o)
+    if isinstance(o, np.floating):
+        return float(o)
+    if isinstance(o, np.ndarray):
+        return o.tolist()
+    if isinstance(o, bytes):
+        return o.hex()
+    return str(o)
+
+
+def fmt_rate(x) -> str:
+    return "-" if x is None else f"{x:,.1f}"
+
+
+def fmt_bytes(n: int) -> str:
+    for unit in ("B", "kB", "MB", "GB"):
+        if n < 1000 or unit == "GB":
+            return f"{n:.0f} {unit}" if unit == "B" else f"{n:.1f} {unit}"
+        n /= 1000
+    return f"{n} B"

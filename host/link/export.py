@@ -1,0 +1,176 @@
+"""CSV export: one file per message type, units in the column names, device and host times.
+
+Columns: kinefuse messages start with ``t_s`` (the unit's clock, seconds since boot), then
+``host_time_s`` (host monotonic clock, seconds since the recording started), ``host_unix_s``
+(UTC as UNIX seconds, from the header's clock pair), ``stream``, ``sysid``, ``compid``, ``seq``
+and the payload fields; other messages start with ``host_time_s``.  Fields carry their unit as a
+suffix (``time_boot_us``, ``acc_x_mps2``); kinefuse messages are converted to SI first:
+
+- KF_RAW_SAMPLE: ``acc_*_mps2``, ``gyr_*_radps``, ``mag_*_uT``, ``temperature_degC``;
+- KF_ORIENTATION: ``quat_w..z`` (sensor to earth), covariance ``cov_*_rad2``;
+- KF_EFFORTS: entries named after the model (e.g. ``tau1_Nm``, ``Fx_N``) when one model is used
+  throughout, ``effort_<i>_si`` otherwise.
+These names match the "plain kinefuse CSV" of ``kinefuse.host.readers`` (``t_s``, ``acc_x_mps2``,
+``gyr_x_radps``, ``mag_x_uT``, ``quat_w``), so an exported unit file can be fed to
+``kinefuse calibrate`` / ``report``.  When a message comes from several units (streams or
+system ids) each unit gets its own file, ``<MESSAGE>_s<stream>_u<sysid>.csv``.
+A raw MAVLink capture (no host times) gets no host columns.
+"""
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import numpy as np
+
+from kinefuse.host.errors import KinefuseError
+from kinefuse.host.link.dialect import RAW_SCALE
+from kinefuse.host.link.frames import DecodedFile
+from kinefuse.host.link.spec import MessageSpec, kinefuse_dialect
+
+_UNIT_SUFFIX = {"m/s/s": "mps2", "m/s": "mps", "rad/s": "radps", "mrad/s": "mradps", "deg/s": "degps",
+                "cdeg/s": "cdegps", "ddeg/s": "ddegps", "%": "pct", "d%": "dpct", "c%": "cpct", "m^2": "m2",
+                "cm^2": "cm2", "KiB/s": "KiBps", "MiB/s": "MiBps", "bytes/s": "Bps", "bits/s": "bps",
+                "deg/2": "halfdeg", "m/s*5": "mps5", "mm/h": "mmph", "g/min": "gpmin", "cm^3/min": "cm3pmin",
+                "L/h": "Lph", "cm^3": "cm3", "1E-2": "e-2", "2E-3": "2e-3", "360/255": "360per255"}
+
+EFFORT_LAYOUTS = {  # KF_EFFORT_MODEL -> [(name, unit suffix)]; see kinefuse.xml
+    1: [("tau1", "Nm"), ("Fx", "N"), ("Fy", "N"), ("T2", "Nm"), ("Fx0", "N"), ("Fy0", "N"), ("T0", "Nm")],
+    2: [("hip_torque", "Nm"), ("knee_torque", "Nm")],
+}
+COV_NAMES = ["xx", "xy", "xz", "yy", "yz", "zz"]
+
+
+def _suffix(unit: str | None) -> str:
+    if not unit:
+        return ""
+    return "_" + _UNIT_SUFFIX.get(unit, unit.replace("/", "p").replace("^", "").replace("*", ""))
+
+
+def _columns(spec: MessageSpec, arr: np.ndarray) -> list[tuple[str, np.ndarray, str]]:
+    """[(column name, values, format)] for the payload of one message type."""
+    cols = []
+    name = spec.name
+    if name == "KF_RAW_SAMPLE":
+        cols.append(("time_boot_us", arr["time_boot_us"], "%d"))
+        cols.append(("sample_counter", arr["sample_counter"], "%d"))
+        for sensor, prefix, unit in (("acc", "acc", "mps2"), ("gyro", "gyr", "radps"), ("mag", "mag", "uT")):
+            for ax in "xyz":
+                cols.append((f"{prefix}_{ax}_{unit}", arr[f"{sensor}_{ax}"] * RAW_SCALE[sensor], "%.6g"))
+        cols.append(("temperature_degC", arr["temperature"] * RAW_SCALE["temperature"], "%.2f"))
+        cols.append(("unit_id", arr["unit_id"], "%d"))
+        cols.append(("flags", arr["flags"], "%d"))
+        return cols
+    efforts_model = None
+    if name == "KF_EFFORTS" and arr.size:
+        models = np.unique(arr["model_id"])
+        if models.size == 1 and int(models[0]) in EFFORT_LAYOUTS:
+            efforts_model = EFFORT_LAYOUTS[int(models[0])]
+    for field, ctype, n in zip(spec.fields, spec.types, spec.array_lengths):
+        unit = spec.units.get(field)
+        if field == "time_boot_us":
+            cols.append((field, arr[field], "%d"))
+            continue
+        if name == "KF_ORIENTATION" and field in ("q_w", "q_x", "q_y", "q_z"):
+            cols.append(("quat_" + field[2], arr[field], "%.9g"))
+            continue
+        if ctype == "char":
+            cols.append((field, np.char.decode(arr[field], "utf-8", "replace"), "%s"))
+            continue
+        fmt = "%.9g" if ctype in ("float", "double") else "%d"
+        if n:
+            for k in range(n):
+                if name == "KF_ORIENTATION" and field == "cov":
+                    cname = f"cov_{COV_NAMES[k]}_rad2"
+                elif efforts_model is not None and field in ("effort", "effort_std"):
+                    if k >= len(efforts_model):
+                        continue
+                    base, u = efforts_model[k]
+                    cname = f"{base}_{u}" if field == "effort" else f"{base}_std_{u}"
+                elif name == "KF_EFFORTS":
+                    cname = f"{field}_{k}_si"
+                else:
+                    cname = f"{field}_{k}{_suffix(unit)}"
+                cols.append((cname, arr[field][:, k], fmt))
+        else:
+            cols.append((field + _suffix(unit), arr[field], fmt))
+    return cols
+
+
+def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, progress=None) -> list[dict]:
+    """Write one CSV per message type into ``out_dir``; returns [{message, file, rows}]."""
+    out_dir = Path(out_dir)
+    try:
+        out_dir.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise KinefuseError(f"cannot create {out_dir}: {exc.strerror or exc}") from None
+    d = kinefuse_dialect()
+    wanted = None
+    if messages:
+        wanted = set()
+        for m in messages:
+            if m.upper() not in d:
+                raise KinefuseError(f"unknown message {m!r} (e.g. KF_RAW_SAMPLE, KF_ORIENTATION)")
+            wanted.add(d[m].msgid)
+    by_msg: dict[int, list] = {}
+    for sid, ds in df.streams.items():
+        for mid, arr in ds.arrays.items():
+            if wanted is None or mid in wanted:
+                by_msg.setdefault(mid, []).append((sid, arr, ds.host_ns.get(mid)))
+    start_mono = df.start_monotonic_ns
+    start_unix = df.recording.start_unix_ns if df.recording else 0
+    written = []
+    for mid, parts in sorted(by_msg.items()):
+        spec = d.get(mid)
+        units = sorted({(sid, int(x)) for sid, arr, _ in parts for x in np.unique(arr["sysid"])})
+        per_unit = spec.name.startswith("KF_") and len(units) > 1
+        groups = units if per_unit else [None]
+        for unit in groups:
+            sel = [(sid, arr if unit is None else arr[arr["sysid"] == unit[1]],
+                    host if unit is None or host is None else host[arr["sysid"] == unit[1]])
+                   for sid, arr, host in parts if unit is None or sid == unit[0]]
+            arr = np.concatenate([p[1] for p in sel])
+            stream = np.concatenate([np.full(p[1].size, p[0], np.int64) for p in sel])
+            has_host = all(p[2] is not None for p in sel)
+            cols = []
+            if has_host:
+                host = np.concatenate([p[2] for p in sel])
+                order = np.argsort(host, kind="stable")
+                arr, stream, host = arr[order], stream[order], host[order]
+            if "time_boot_us" in arr.dtype.names and spec.name.startswith("KF_"):
+                cols.append(("t_s", arr["time_boot_us"] / 1e6, "%.6f"))
+            if has_host:
+                cols.append(("host_time_s", (host - start_mono) / 1e9, "%.6f"))
+                cols.append(("host_unix_s", (start_unix + (host - start_mono)) / 1e9, "%.6f"))
+            cols += [("stream", stream, "%d"), ("sysid", arr["sysid"], "%d"), ("compid", arr["compid"], "%d"),
+                     ("seq", arr["seq"], "%d")]
+            cols += _columns(spec, arr)
+            fname = spec.name if unit is None else f"{spec.name}_s{unit[0]}_u{unit[1]}"
+            path = out_dir / f"{fname}.csv"
+            _write(path, cols, arr.size)
+            written.append({"message": spec.name, "file": str(path), "rows": int(arr.size),
+                            **({} if unit is None else {"stream": unit[0], "sysid": unit[1]})})
+            if progress is not None:
+                progress(spec.name, arr.size)
+    return written
+
+
+def _write(path: Path, cols, rows: int, block: int = 50_000) -> None:
+    try:
+        f = open(path, "w", newline="")
+    except OSError as exc:
+        raise KinefuseError(f"cannot write {path}: {exc.strerror or exc}") from None
+    with f:
+        f.write(",".join(c[0] for c in cols) + "\n")
+        if any(c[2] == "%s" for c in cols):  # strings: csv module quotes what needs quoting
+            w = csv.writer(f, lineterminator="\n")
+            for r in range(rows):
+                w.writerow([c[1][r] if c[2] == "%s" else c[2] % c[1][r] for c in cols])
+            return
+        fmt = ",".join(c[2] for c in cols)
+        for a in range(0, rows, block):
+            b = min(rows, a + block)
+            table = np.empty((b - a, len(cols)), dtype=object)
+            for k, c in enumerate(cols):
+                table[:, k] = c[1][a:b].tolist()
+            f.write("\n".join(fmt % tuple(row) for row in table) + ("\n" if b > a else ""))

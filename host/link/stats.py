@@ -1,0 +1,178 @@
+"""Link statistics of a recording: per stream and unit, rates, loss, errors, clock fit, latency.
+
+- rate achieved: frames received per second of the unit's clock, vs the rate requested (from
+  KF_UNIT_STATUS, else the recording header);
+- samples lost: from the 32-bit ``sample_counter`` (wrap-safe; the usual step between frames
+  is taken as the stride, so a decimated stream is not counted as loss); resets (reboots) and
+  duplicates are counted separately;
+- clock: host time = offset + slope * device time + delay.  The slope is the Theil-Sen median
+  of the slopes between the lowest-delay points of 40 blocks, the offset puts the line on the
+  lower envelope (minimum delay), so ``drift_ppm`` (unit clock rate relative to the host's,
+  positive = unit fast) is robust to delay spikes; the residual is the delay above the minimum;
+- latency: with TIMESYNC replies in the recording, the round trip host -> unit -> host; the
+  one-way latency is estimated as half the minimum round trip plus the median delay above the
+  minimum (assumes a symmetric minimum path).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from kinefuse.host.link.dialect import DIALECT_HASH
+from kinefuse.host.link.frames import DecodedFile, DecodedStream
+from kinefuse.host.link.spec import kinefuse_dialect
+
+MSG_RAW, MSG_ORI, MSG_STATUS, MSG_TIMESYNC = 52500, 52501, 52504, 111
+KF_MESSAGES = (52500, 52501, 52502, 52503, 52504)
+REQUESTED_FIELD = {MSG_RAW: "raw_rate_requested", MSG_ORI: "orientation_rate_requested"}
+
+
+def counter_analysis(counter: np.ndarray) -> dict:
+    """Loss from a uint32 counter (wrap-safe), with the stride taken as the most common step."""
+    c = np.asarray(counter, dtype=np.int64)
+    if c.size < 2:
+        return {"stride": None, "samples_lost": 0, "loss_fraction": 0.0, "resets": 0, "duplicates": 0}
+    d = (c[1:] - c[:-1]) & 0xFFFFFFFF
+    forward = (d > 0) & (d < 1 << 31)
+    steps, counts = np.unique(d[forward], return_counts=True)
+    stride = int(steps[np.argmax(counts)]) if steps.size else 1
+    gaps = d[forward]
+    lost = int(np.sum(np.maximum(0, np.round(gaps / stride).astype(np.int64) - 1)))
+    expected = int(c.size + lost)
+    return {"stride": stride, "samples_lost": lost, "loss_fraction": lost / expected if expected else 0.0,
+            "resets": int(np.sum(d >= 1 << 31)), "duplicates": int(np.sum(d == 0))}
+
+
+def fit_clock(device_s: np.ndarray, host_s: np.ndarray, blocks: int = 40) -> dict | None:
+    """Robust fit host = offset + slope * device on the lower envelope; see module docstring."""
+    x = np.asarray(device_s, np.float64)
+    y = np.asarray(host_s, np.float64)
+    n = x.size
+    if n < 10 or x[-1] - x[0] <= 0:
+        return None
+    k = int(min(blocks, n // 5))
+    if k < 2:
+        return None
+    edges = np.linspace(0, n, k + 1).astype(int)
+    idx = np.array([a + int(np.argmin(y[a:b] - x[a:b])) for a, b in zip(edges[:-1], edges[1:])])
+    bx, by = x[idx], y[idx]
+    i, j = np.triu_indices(k, 1)
+    dx = bx[j] - bx[i]
+    ok = dx > 0
+    if not ok.any():
+        return None
+    slope = float(np.median((by[j] - by[i])[ok] / dx[ok]))
+    resid0 = y - slope * x
+    offset = float(resid0.min())
+    excess = resid0 - offset
+    return {
+        "slope": slope,
+        "offset_s": offset,                       # host time (s from recording start) at device time 0
+        "drift_ppm": (1.0 / slope - 1.0) * 1e6,   # unit clock rate vs host clock; > 0: unit fast
+        "delay_above_min_ms": {"median": float(np.median(excess) * 1e3),
+                               "p95": float(np.percentile(excess, 95) * 1e3), "max": float(excess.max() * 1e3)},
+        "points": int(n),
+        "span_s": float(x[-1] - x[0]),
+    }
+
+
+def _last_segment(t_us: np.ndarray) -> slice:
+    """Rows after the last reset of the device clock (time going backwards)."""
+    back = np.flatnonzero(np.diff(t_us.astype(np.int64)) < 0)
+    return slice(int(back[-1]) + 1 if back.size else 0, None)
+
+
+def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dict) -> dict:
+    d = kinefuse_dialect()
+    out: dict = {"sysid": sysid, "messages": {}}
+    status = None
+    if MSG_STATUS in ds.arrays:
+        st = ds.arrays[MSG_STATUS]
+        st = st[st["sysid"] == sysid]
+        if st.size:
+            status = st[-1]
+            v = int(status["firmware_version"])
+            out["firmware_version"] = f"{v >> 24}.{(v >> 16) & 0xFF}.{(v >> 8) & 0xFF}"
+            out["dialect_hash"] = f"0x{int(status['dialect_hash']):08X}"
+            out["dialect_match"] = int(status["dialect_hash"]) == DIALECT_HASH()
+            out["unit_reported"] = {k: int(status[k]) for k in
+                                    ("samples", "samples_dropped", "frames_dropped", "rejected_samples",
+                                     "crc_errors", "unknown_messages", "param_rejects")}
+            out["unit_reported"]["battery_voltage_V"] = (None if int(status["battery_voltage"]) == 0xFFFF
+                                                         else int(status["battery_voltage"]) / 1000)
+    requested_header = header_stream.get("requested_rates_hz", {}) if header_stream else {}
+    clock_ref = None
+    for mid, arr in sorted(ds.arrays.items()):
+        rows = arr["sysid"] == sysid
+        if not rows.any():
+            continue
+        a = arr[rows]
+        spec = d.get(mid)
+        m: dict = {"count": int(a.size)}
+        if "time_boot_us" in a.dtype.names and a.size >= 2:
+            seg = a[_last_segment(a["time_boot_us"])]
+            t = seg["time_boot_us"].astype(np.int64)
+            span = (t[-1] - t[0]) / 1e6
+            if span > 0:
+                m["rate_hz"] = (seg.size - 1) / span
+                m["device_span_s"] = span
+            if "sample_counter" in a.dtype.names:
+                m.update(counter_analysis(a["sample_counter"]))
+        req = None
+        if status is not None and mid in REQUESTED_FIELD:
+            req = float(status[REQUESTED_FIELD[mid]]) or None
+        if req is None and spec is not None:
+            req = requested_header.get(spec.name)
+        if req:
+            m["requested_hz"] = req
+            if "rate_hz" in m:
+                m["rate_ratio"] = m["rate_hz"] / req
+        out["messages"][spec.name if spec else str(mid)] = m
+        if clock_ref is None and mid in (MSG_RAW, MSG_ORI, 52502, 52503) and ds.host_ns.get(mid) is not None:
+            clock_ref = mid
+    if clock_ref is not None:
+        arr = ds.arrays[clock_ref]
+        rows = arr["sysid"] == sysid
+        t_us = arr["time_boot_us"][rows]
+        seg = _last_segment(t_us)
+        host = (ds.host_ns[clock_ref][rows][seg] - start_ns) / 1e9
+        fit = fit_clock(t_us[seg].astype(np.float64) / 1e6, host)
+        if fit is not None:
+            fit["reference"] = d.get(clock_ref).name
+            out["clock"] = fit
+    if MSG_TIMESYNC in ds.arrays and ds.host_ns.get(MSG_TIMESYNC) is not None:
+        ts = ds.arrays[MSG_TIMESYNC]
+        sel = (ts["sysid"] == sysid) & (ts["tc1"] != 0)
+        rtt = (ds.host_ns[MSG_TIMESYNC][sel] - ts["ts1"][sel]) / 1e6
+        rtt = rtt[(rtt > 0) & (rtt < 10_000)]
+        if rtt.size:
+            lat = {"timesync_rtt_ms": {"min": float(rtt.min()), "median": float(np.median(rtt)),
+                                       "p95": float(np.percentile(rtt, 95)), "count": int(rtt.size)}}
+            excess = out.get("clock", {}).get("delay_above_min_ms", {}).get("median", 0.0)
+            lat["one_way_estimate_ms"] = float(rtt.min() / 2 + excess)
+            out["latency"] = lat
+    return out
+
+
+def compute(df: DecodedFile) -> dict:
+    start = df.start_monotonic_ns
+    header = df.header
+    result = {"file": str(df.path), "format": header.get("format"), "start_utc": header.get("start_utc"),
+              "streams": []}
+    for sid, ds in sorted(df.streams.items()):
+        s = {"id": sid, "connection": ds.info.get("connection"), "bytes": ds.rx_bytes, **ds.counters.as_dict()}
+        s.pop("bytes_in", None)
+        t_all = [h for h in ds.host_ns.values() if h is not None and h.size]
+        if t_all:
+            lo = min(int(h.min()) for h in t_all)
+            hi = max(int(h.max()) for h in t_all)
+            s["host_span_s"] = (hi - lo) / 1e9
+        sysids = sorted({int(x) for arr in ds.arrays.values() for x in np.unique(arr["sysid"])})
+        units = [_unit_stats(ds, sysid, start, ds.info) for sysid in sysids]
+        s["units"] = [u for u in units if any(k in KF_NAMES for k in u["messages"]) or "firmware_version" in u] \
+            or units
+        s["other_systems"] = [u["sysid"] for u in units if u not in s["units"]]
+        result["streams"].append(s)
+    return result
+
+
+KF_NAMES = ("KF_RAW_SAMPLE", "KF_ORIENTATION", "KF_JOINT_ANGLE", "KF_EFFORTS", "KF_UNIT_STATUS")
