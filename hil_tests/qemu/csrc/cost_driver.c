@@ -20,6 +20,9 @@
 
 #define KF_K_DIGITS 10
 
+/* Keeps K's parsing in the baseline program too, so it cancels out of size deltas. */
+static volatile uint32_t kf_k_sink;
+
 static uint32_t kf_parse_k(void)
 {
     char line[80];
@@ -43,7 +46,7 @@ static uint32_t kf_parse_k(void)
 int main(void)
 {
     uint32_t kf_k = kf_parse_k();
-    (void)kf_k;
+    kf_k_sink = kf_k;
 #ifndef KF_COST_BASELINE
     {
         /* ---- user setup ---- */
