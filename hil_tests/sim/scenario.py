@@ -16,7 +16,7 @@ description drives the Python models, the host SIL and QEMU runs::
       "duration_s": null                       # default: the motion's duration
     }
 
-:func:`run` returns one :class:`Recording` per sensor; :func:`simulate` one recording.
+:func:`run` returns one :class:`Recording` per sensor unit; :func:`simulate` one recording.
 Randomness: ``numpy.random.SeedSequence(seed)`` spawns independent streams for the motion,
 the disturbances and each sensor (timing, gyr, acc, mag), so the same seed gives identical
 arrays and the streams do not shift when a scenario gains a sensor or a disturbance.
@@ -148,17 +148,18 @@ def run(scenario, seed: int | None = None, **changes) -> dict:
             for (name, track), ss in zip(b.rig.tracks.items(), per_sensor)}
 
 
-def simulate(scenario, seed: int | None = None, sensor: str | None = None, **changes) -> Recording:
-    """One sensor's Recording; ``sensor`` names it when the rig has several."""
+def simulate(scenario, seed: int | None = None, unit: str | None = None, **changes) -> Recording:
+    """One sensor unit's Recording; ``unit`` names it when the rig has several (e.g.
+    ``unit="distal"``).  Keyword changes are Scenario fields, e.g. ``sensor={"preset": "ideal"}``."""
     sc = as_scenario(scenario)
     recs = run(sc, seed, **changes)
-    if sensor is None:
+    if unit is None:
         if len(recs) != 1:
-            raise SpecError(f"scenario {sc.name!r} has sensors {', '.join(recs)}; pass sensor=")
+            raise SpecError(f"scenario {sc.name!r} has sensor units {', '.join(recs)}; pass unit=")
         return next(iter(recs.values()))
-    if sensor not in recs:
-        raise SpecError(f"scenario {sc.name!r} has no sensor {sensor!r}; it has {', '.join(recs)}")
-    return recs[sensor]
+    if unit not in recs:
+        raise SpecError(f"scenario {sc.name!r} has no sensor unit {unit!r}; it has {', '.join(recs)}")
+    return recs[unit]
 
 
 def as_scenario(x) -> Scenario:

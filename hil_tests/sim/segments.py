@@ -28,16 +28,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from kinefuse.host.errors import KinefuseError
-
 from . import quat as Q
+from .errors import SpecError
 from .motion import (AxisRotation, Compose, Fixed, FixedPoint, OrientationSignal, Path3,
                      PositionSignal, RigidMotion)
 from .signals import Profile, SineSum, window
-
-
-class SpecError(KinefuseError, ValueError):
-    """A scenario/segment description is invalid (message is one line)."""
 
 
 def take(spec: dict, where: str, required=(), optional=()) -> dict:

@@ -19,6 +19,8 @@ import numpy as np
 from numpy.polynomial import Polynomial as P
 from scipy.interpolate import PPoly
 
+from .errors import SpecError
+
 
 class ScalarSignal:
     """Base class: ``__call__(t)`` returns ``(f, df/dt, d²f/dt²)`` as float64 arrays."""
@@ -184,6 +186,9 @@ class PPolySignal(ScalarSignal):
         return self.t1 - self.t0
 
 
+MIN_BLEND_S = 1e-3
+
+
 def _smoothstep5() -> P:
     """S(x) = 10x³ − 15x⁴ + 6x⁵: S, S', S'' vanish at 0; S(1) = 1, S'(1) = S''(1) = 0."""
     return P([0, 0, 0, 10, -15, 6])
@@ -229,7 +234,7 @@ class Profile:
 
     ``move_to(target, rate=r)`` moves at the constant rate ``r`` (unit/s) with smooth
     acceleration blends of ``blend`` s at both ends (velocity follows 3x²−2x³); it lasts
-    |Δ|/r + blend.  ``move_to(target, duration=T)`` fixes the duration instead (plateau rate
+    |Δ|/r + blend (a move shorter than that is one S-curve of 2·blend s with a lower peak).  ``move_to(target, duration=T)`` fixes the duration instead (plateau rate
     Δ/(T − blend)).  Holds are flagged as not moving; moves as moving.
     """
     start: float = 0.0
@@ -266,8 +271,8 @@ class Profile:
         self._value = float(poly(dur))
 
     def hold(self, duration: float) -> "Profile":
-        if duration < 0:
-            raise ValueError("hold duration must be >= 0")
+        if not duration >= 0:
+            raise SpecError("hold duration must be >= 0")
         self._add(float(duration), P([self._value]), False)
         return self
 
@@ -275,22 +280,27 @@ class Profile:
                 blend: float = 0.1) -> "Profile":
         delta = float(target) - self._value
         if (rate is None) == (duration is None):
-            raise ValueError("move_to needs exactly one of rate or duration")
+            raise SpecError("move_to needs exactly one of rate or duration")
+        if not blend >= MIN_BLEND_S:
+            # a zero blend would step the rate: infinite angular acceleration at the joint
+            raise SpecError(f"blend must be >= {MIN_BLEND_S} s, got {blend!r}")
         if delta == 0.0:
             return self.hold(duration if duration is not None else 0.0)
         b = float(blend)
         if rate is not None:
-            if rate <= 0:
-                raise ValueError("move rate must be positive")
+            if not rate > 0:
+                raise SpecError("move rate must be positive")
             t_lin = abs(delta) / rate
-            if t_lin < b:       # too short for a constant-rate part: accelerate, decelerate
-                b = t_lin
-            total = t_lin + b
-            v = np.sign(delta) * rate
+            if t_lin < b:       # too short for a constant-rate part: one S-curve, lower peak
+                total = 2 * b
+                v = delta / b
+            else:
+                total = t_lin + b
+                v = np.sign(delta) * rate
         else:
             total = float(duration)
-            if total <= 0:
-                raise ValueError("move duration must be positive")
+            if not total >= 2 * MIN_BLEND_S:
+                raise SpecError(f"move duration must be >= {2 * MIN_BLEND_S} s, got {duration!r}")
             b = min(b, total / 2.0)
             v = delta / (total - b)
         x0 = self._value
