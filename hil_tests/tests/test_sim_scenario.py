@@ -188,3 +188,26 @@ def test_profile_hits_targets_and_respects_rates(steps):
             start = d.c[-1, i + 1]
             scale = max(1.0, np.polyval(np.abs(d.c[:, i]), pp.x[i + 1] - pp.x[i]))  # size of the terms
             assert abs(end - start) <= 1e-9 * scale, (der, i, end, start)
+
+
+def _broad_errors_deg(q_est, q_ref, mask):
+    """BROAD metric (Laidig et al. 2021), written out here: e = q_est ⊗ q_ref⁻¹."""
+    e = Q.mul(Q.normalize(q_est), Q.conj(q_ref))
+    total = 2 * np.arccos(np.clip(np.abs(e[:, 0]), 0, 1))
+    heading = 2 * np.arctan(np.abs(e[:, 3] / e[:, 0]))
+    incl = 2 * np.arccos(np.clip(np.sqrt(e[:, 0] ** 2 + e[:, 3] ** 2), 0, 1))
+    return [float(np.degrees(np.sqrt(np.mean(x[mask] ** 2)))) for x in (total, heading, incl)]
+
+
+@pytest.mark.parametrize("name,unit,max_total", [("slow_rotation", None, 1.5), ("gait", "shank", 3.0),
+                                                 ("hinge_dynamic", "distal", 1.0)])
+def test_reference_filter_agrees_with_truth(name, unit, max_total):
+    """VQF (an independent implementation with the same ENU / +g / sensor→earth conventions)
+    tracks q_true closely on simulated data: any frame, sign or unit slip in the simulator
+    would show up as tens of degrees.  Measured (seed 1): 0.69°, 1.38°, 0.31° total RMSE."""
+    vqf = pytest.importorskip("vqf")
+    r = sim.simulate(name, seed=1, unit=unit)
+    out = vqf.VQF(1.0 / r.rate_hz).updateBatch(np.ascontiguousarray(r.gyr), np.ascontiguousarray(r.acc),
+                                               np.ascontiguousarray(r.mag))
+    total, heading, incl = _broad_errors_deg(out["quat9D"], r.q_true, r.movement)
+    assert total < max_total, (total, heading, incl)

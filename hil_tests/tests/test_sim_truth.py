@@ -231,3 +231,19 @@ def test_gait_truth_follows_design():
     # standing still before and after
     assert not th.movement[th.t < before].any() and not th.movement[th.t > before + walk].any()
     np.testing.assert_allclose(np.linalg.norm(sh.acc[sh.t < before - 0.01], axis=1), 9.81, atol=1e-12)
+
+
+def test_hinge_distal_sensor_feels_centripetal_acceleration():
+    """Independent physics: at a constant joint rate ω about a fixed hinge, a point at radius r
+    accelerates by ω²·r towards the hinge and not at all along its path."""
+    d = sim.simulate("hinge_dynamic_slow", sensor={"preset": "ideal"}, unit="distal")
+    w = np.linalg.norm(d.gyr, axis=1)
+    const = np.isclose(w, np.radians(45.0), rtol=0, atol=1e-12)
+    assert const.sum() > 1000
+    a_lin = Q.rotate(d.q_true, d.acc) - [0.0, 0.0, 9.81]       # earth frame
+    r = d.pos_true                                              # hinge at the origin
+    np.testing.assert_allclose(np.linalg.norm(r, axis=1), 0.10, atol=1e-12)
+    np.testing.assert_allclose(a_lin[const], -(w[const] ** 2)[:, None] * r[const], atol=1e-12)
+    # at rest before the cycles: nothing but gravity
+    rest = d.t < 29.9
+    np.testing.assert_allclose(a_lin[rest], 0.0, atol=1e-12)
