@@ -70,30 +70,39 @@ class Sym:
         nodes = [self._lift(a) for a in args]
         return Sym(self.g, self.g.add(op, nodes, attrs=attrs, loc=_loc()))
 
+    def _bin(self, op: str, a, b):
+        """Operator methods: NotImplemented for a foreign operand type (e.g. a dual number
+        holding Syms) so Python tries that type's reflected method; unsupported types still
+        end in Python's TypeError."""
+        for v in (a, b):
+            if not isinstance(v, (Sym, bool, int, float)) and not hasattr(v, "dtype"):
+                return NotImplemented
+        return self._op(op, a, b)
+
     # -- arithmetic -----------------------------------------------------------------------
-    def __add__(self, o): return self._op("add", self, o)
-    def __radd__(self, o): return self._op("add", o, self)
-    def __sub__(self, o): return self._op("sub", self, o)
-    def __rsub__(self, o): return self._op("sub", o, self)
-    def __mul__(self, o): return self._op("mul", self, o)
-    def __rmul__(self, o): return self._op("mul", o, self)
-    def __truediv__(self, o): return self._op("div", self, o)
-    def __rtruediv__(self, o): return self._op("div", o, self)
+    def __add__(self, o): return self._bin("add", self, o)
+    def __radd__(self, o): return self._bin("add", o, self)
+    def __sub__(self, o): return self._bin("sub", self, o)
+    def __rsub__(self, o): return self._bin("sub", o, self)
+    def __mul__(self, o): return self._bin("mul", self, o)
+    def __rmul__(self, o): return self._bin("mul", o, self)
+    def __truediv__(self, o): return self._bin("div", self, o)
+    def __rtruediv__(self, o): return self._bin("div", o, self)
     def __neg__(self): return self._op("neg", self)
     def __pos__(self): return self
     def __abs__(self): return self._op("abs", self)
 
     # -- comparisons (a > b is recorded as b < a: identical IEEE semantics, NaN included) ----
-    def __lt__(self, o): return self._op("lt", self, o)
-    def __le__(self, o): return self._op("le", self, o)
-    def __gt__(self, o): return self._op("lt", o, self)
-    def __ge__(self, o): return self._op("le", o, self)
+    def __lt__(self, o): return self._bin("lt", self, o)
+    def __le__(self, o): return self._bin("le", self, o)
+    def __gt__(self, o): return self._bin("lt", o, self)
+    def __ge__(self, o): return self._bin("le", o, self)
 
     # -- logic ----------------------------------------------------------------------------
-    def __and__(self, o): return self._op("and", self, o)
-    def __rand__(self, o): return self._op("and", o, self)
-    def __or__(self, o): return self._op("or", self, o)
-    def __ror__(self, o): return self._op("or", o, self)
+    def __and__(self, o): return self._bin("and", self, o)
+    def __rand__(self, o): return self._bin("and", o, self)
+    def __or__(self, o): return self._bin("or", self, o)
+    def __ror__(self, o): return self._bin("or", o, self)
     def __invert__(self): return self._op("not", self)
 
     def __bool__(self):

@@ -3,11 +3,19 @@ fixed-point C and their Python models by `kinefuse codegen`."""
 from __future__ import annotations
 
 from kinefuse.codegen.estimator import Estimator
+from kinefuse.codegen.estimators.complementary import Complementary
+from kinefuse.codegen.estimators.flagship import Flagship
 from kinefuse.codegen.estimators.madgwick import Madgwick
+from kinefuse.codegen.estimators.ecompass import Ecompass
+from kinefuse.codegen.estimators.mahony import Mahony
 
 # Registry order = order in `kinefuse filters`.
 ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
     Madgwick,
+    Mahony,
+    Complementary,
+    Ecompass,
+    Flagship,
 )}
 
 

@@ -12,8 +12,8 @@ import math
 from kinefuse.codegen.estimator import InputSpec, Var
 from kinefuse.codegen.ir import BOOL, INT
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
-from kinefuse.codegen.scalar import (all_of, any_of, assume, fabs, fmax, logical_and, logical_not,
-                                     rsqrt, select)
+from kinefuse.codegen.scalar import (all_of, any_of, assume, clamp, fabs, fmax, logical_and,
+                                     logical_not, rsqrt, select, sqrt)
 
 G = 9.81                                   # m/s^2, standard gravity used for ranges
 GYR_MAX = 2000.0 * math.pi / 180.0         # rad/s  (+-2000 deg/s full scale)
@@ -57,7 +57,9 @@ class SampleCheck:
         self.gyr = Vec3(*u.gyr)
         self.acc = Vec3(*u.acc)
         self.mag = Vec3(*u.mag)
-        self.dt = u.dt
+        # dt for computations: the raw value may be anything (the sample is then rejected), the
+        # clamped one keeps every intermediate bounded
+        self.dt = clamp(u.dt, 0.0, DT_MAX)
         core = all_of(within(self.gyr, GYR_MAX), within(self.acc, ACC_MAX),
                       u.dt > 0.0, u.dt <= DT_MAX)
         mag_ok = within(self.mag, MAG_MAX)
@@ -131,3 +133,41 @@ def quat_from_rows(r0: Vec3, r1: Vec3, r2: Vec3) -> Quat:
     # keep w >= 0 (the same rotation either way; a canonical sign helps comparisons)
     flip = q.w < 0.0
     return Quat(*(select(flip, -c_, c_) for c_ in q))
+
+
+# -- corrections shared by the complementary filters ------------------------------------------
+
+def tilt_correction(q: Quat, acc_unit: Vec3, gain):
+    """Rotate q towards the measured gravity direction by the fraction `gain` (0..1).
+
+    g = R(q) a (measured 'up' in the earth frame).  The rotation taking g onto e_z has the
+    unnormalised quaternion (1 + g_z, g_y, -g_x, 0) (half-angle form: no square root, no division
+    by 1 + g_z); it is blended with the identity (LERP) by `gain` and applied in the earth frame,
+    so q' = dq ⊗ q.  Rotations about the vertical are untouched: heading is not disturbed.
+    """
+    g = q.rotate(acc_unit)
+    g = Vec3(assume(g.x, -1.0, 1.0), assume(g.y, -1.0, 1.0), assume(g.z, -1.0, 1.0))
+    full = Quat(1.0 + g.z, g.y, -g.x, 0.0).normalized(1e-12)
+    dq = Quat(1.0 - gain + gain * full.w, gain * full.x, gain * full.y, 0.0).normalized(1e-12)
+    return dq * q
+
+
+def heading_correction(q: Quat, mag_unit: Vec3, gain):
+    """Rotate q about the earth's vertical towards magnetic north (+y in ENU) by `gain` (0..1).
+
+    l = R(q) m; the rotation about z taking (l_x, l_y) onto +y has the unnormalised quaternion
+    (L + l_y, 0, 0, l_x) with L = |(l_x, l_y)|.  Only heading changes: inclination is never
+    disturbed by the magnetometer.
+    """
+    l = q.rotate(mag_unit)
+    lx, ly = assume(l.x, -1.0, 1.0), assume(l.y, -1.0, 1.0)
+    horiz = sqrt(fmax(lx * lx + ly * ly, 0.0))
+    full = Quat(horiz + ly, 0.0, 0.0, lx).normalized(1e-12)
+    dq = Quat(1.0 - gain + gain * full.w, 0.0, 0.0, gain * full.z).normalized(1e-12)
+    return dq * q
+
+
+def integrate_gyro(q: Quat, omega: Vec3, dt) -> Quat:
+    """Strapdown step q + dt/2 q ⊗ (0, ω), normalised."""
+    qdot = (q * Quat(0.0, omega.x, omega.y, omega.z)).scale(0.5)
+    return (q + qdot.scale(dt)).normalized()
