@@ -42,9 +42,9 @@ def summarize(df) -> dict:
              "counters": ds.counters.as_dict(), "messages": {}, "events": [], "units": {}}
         for mid, arr in sorted(ds.arrays.items()):
             s["messages"][d.get(mid).name] = int(arr.size)
-            for sysid in np.unique(arr["sysid"]):
+            for sysid in np.unique(arr["_sysid"]):
                 s["units"].setdefault(str(int(sysid)), 0)
-                s["units"][str(int(sysid))] += int(np.sum(arr["sysid"] == sysid))
+                s["units"][str(int(sysid))] += int(np.sum(arr["_sysid"] == sysid))
         host = [h for h in ds.host_ns.values() if h is not None and h.size]
         if host:
             s["host_span_s"] = (max(int(h.max()) for h in host) - min(int(h.min()) for h in host)) / 1e9

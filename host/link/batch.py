@@ -1,7 +1,7 @@
 """Batch (numpy) decoding of a complete buffer into structured arrays.
 
     arr, info = decode_batch(data, "KF_RAW_SAMPLE")   # one message type
-    arr["acc_x"], arr["time_boot_us"], arr["offset"], arr["sysid"] ...
+    arr["acc_x"], arr["time_boot_us"], arr["_offset"], arr["_sysid"] ...
 
     result = decode_all(data)                        # every type, same frames as StreamDecoder
     result.arrays[52500], result.counters
@@ -28,7 +28,8 @@ from kinefuse.host.link.crc import crc_numpy
 from kinefuse.host.link.decoder import Counters
 from kinefuse.host.link.spec import Dialect, MessageSpec, kinefuse_dialect
 
-HEADER_FIELDS = [("offset", "<i8"), ("seq", "u1"), ("sysid", "u1"), ("compid", "u1"), ("signed", "?")]
+# header columns start with "_": MAVLink field names never do (PING and MISSION_* have a "seq")
+HEADER_FIELDS = [("_offset", "<i8"), ("_seq", "u1"), ("_sysid", "u1"), ("_compid", "u1"), ("_signed", "?")]
 
 
 def _windows(arr: np.ndarray, width: int) -> np.ndarray:
@@ -37,7 +38,7 @@ def _windows(arr: np.ndarray, width: int) -> np.ndarray:
 
 
 def batch_dtype(spec: MessageSpec) -> np.dtype:
-    """Header columns + the message's payload fields (wire order)."""
+    """Header columns (_offset, _seq, _sysid, _compid, _signed) + the payload fields (wire order)."""
     return np.dtype(HEADER_FIELDS + [(name, spec.dtype.fields[name][0]) for name in spec.fields])
 
 
@@ -69,11 +70,11 @@ def _records(arr, spec: MessageSpec, pos, plen, signed) -> np.ndarray:
         payload[idx, :length] = _windows(arr, int(length))[pos[idx] + 10]  # zero-pads truncated payloads
     fields = payload.view(spec.dtype).reshape(-1)
     out = np.empty(pos.size, dtype=batch_dtype(spec))
-    out["offset"] = pos
-    out["seq"] = arr[pos + 4]
-    out["sysid"] = arr[pos + 5]
-    out["compid"] = arr[pos + 6]
-    out["signed"] = signed
+    out["_offset"] = pos
+    out["_seq"] = arr[pos + 4]
+    out["_sysid"] = arr[pos + 5]
+    out["_compid"] = arr[pos + 6]
+    out["_signed"] = signed
     for name in spec.fields:
         out[name] = fields[name]
     return out
@@ -189,8 +190,11 @@ def decode_all(data, dialect: Dialect | None = None, key: bytes | None = None,
             deliver &= signed
     # candidates the streaming decoder never looks at: inside an accepted frame
     fstart, fstop = pos[frames], stop[frames]
-    k = np.searchsorted(fstart, pos, side="right") - 1
-    inside = (k >= 0) & (pos < np.where(k >= 0, fstop[np.maximum(k, 0)], 0))
+    if fstart.size:
+        k = np.searchsorted(fstart, pos, side="right") - 1
+        inside = (k >= 0) & (pos < fstop[np.maximum(k, 0)])
+    else:
+        inside = np.zeros(pos.size, dtype=bool)
     outside = ~inside
     c.bad_incompat = int(np.sum(outside & (kind == 1)))
     c.unknown_msgid = int(np.sum(outside & (kind == 2)))

@@ -122,12 +122,12 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
     written = []
     for mid, parts in sorted(by_msg.items()):
         spec = d.get(mid)
-        units = sorted({(sid, int(x)) for sid, arr, _ in parts for x in np.unique(arr["sysid"])})
+        units = sorted({(sid, int(x)) for sid, arr, _ in parts for x in np.unique(arr["_sysid"])})
         per_unit = spec.name.startswith("KF_") and len(units) > 1
         groups = units if per_unit else [None]
         for unit in groups:
-            sel = [(sid, arr if unit is None else arr[arr["sysid"] == unit[1]],
-                    host if unit is None or host is None else host[arr["sysid"] == unit[1]])
+            sel = [(sid, arr if unit is None else arr[arr["_sysid"] == unit[1]],
+                    host if unit is None or host is None else host[arr["_sysid"] == unit[1]])
                    for sid, arr, host in parts if unit is None or sid == unit[0]]
             arr = np.concatenate([p[1] for p in sel])
             stream = np.concatenate([np.full(p[1].size, p[0], np.int64) for p in sel])
@@ -142,8 +142,8 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
             if has_host:
                 cols.append(("host_time_s", (host - start_mono) / 1e9, "%.6f"))
                 cols.append(("host_unix_s", (start_unix + (host - start_mono)) / 1e9, "%.6f"))
-            cols += [("stream", stream, "%d"), ("sysid", arr["sysid"], "%d"), ("compid", arr["compid"], "%d"),
-                     ("seq", arr["seq"], "%d")]
+            cols += [("stream", stream, "%d"), ("sysid", arr["_sysid"], "%d"), ("compid", arr["_compid"], "%d"),
+                     ("seq", arr["_seq"], "%d")]
             cols += _columns(spec, arr)
             fname = spec.name if unit is None else f"{spec.name}_s{unit[0]}_u{unit[1]}"
             path = out_dir / f"{fname}.csv"

@@ -228,8 +228,7 @@ class FakeUnit:
         name = m._msgname
         if name == "TIMESYNC":
             if m.tc1 == 0:
-                return [self.enc.encode("TIMESYNC", tc1=self.device_time_us() * 1000, ts1=m.ts1,
-                                        target_system=f.sysid, target_component=f.compid)]
+                return [self.enc.encode("TIMESYNC", tc1=self.device_time_us() * 1000, ts1=m.ts1)]
             return []
         if not self._for_me(m):
             return []

@@ -2,7 +2,7 @@
 
     streams = decode_file("walk.kfr")
     s = streams[0]
-    raw = s.arrays[52500]          # structured array: offset, seq, sysid, compid, signed, fields...
+    raw = s.arrays[52500]          # structured array: _offset, _seq, _sysid, _compid, _signed, fields...
     t = s.host_ns[52500]           # host monotonic ns of each frame (read that completed it)
 
 Decoding uses :func:`kinefuse.host.link.batch.decode_all`, which yields exactly the frames of the
@@ -62,7 +62,7 @@ def decode_stream(sd: StreamData, info: dict, msgids=None) -> DecodedStream:
         out.arrays[mid] = arr
         if sd.read_end.size:
             # frame end offset: start + header + payload + CRC (+ signature)
-            end = arr["offset"] + 12 + _payload_len(sd.rx, arr["offset"]) + np.where(arr["signed"], 13, 0)
+            end = arr["_offset"] + 12 + _payload_len(sd.rx, arr["_offset"]) + np.where(arr["_signed"], 13, 0)
             out.host_ns[mid] = sd.host_time_ns(end)
         else:
             out.host_ns[mid] = None

@@ -197,8 +197,7 @@ class Recorder:
                     next_sync = now + 1.0
                     for st in open_streams:
                         try:
-                            st.session.send("TIMESYNC", tc1=0, ts1=time.monotonic_ns(), target_system=0,
-                                            target_component=0)
+                            st.session.send("TIMESYNC", tc1=0, ts1=time.monotonic_ns())
                         except OSError:
                             pass
                 if on_tick is not None and now >= next_tick:

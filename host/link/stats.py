@@ -87,7 +87,7 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
     status = None
     if MSG_STATUS in ds.arrays:
         st = ds.arrays[MSG_STATUS]
-        st = st[st["sysid"] == sysid]
+        st = st[st["_sysid"] == sysid]
         if st.size:
             status = st[-1]
             v = int(status["firmware_version"])
@@ -102,7 +102,7 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
     requested_header = header_stream.get("requested_rates_hz", {}) if header_stream else {}
     clock_ref = None
     for mid, arr in sorted(ds.arrays.items()):
-        rows = arr["sysid"] == sysid
+        rows = arr["_sysid"] == sysid
         if not rows.any():
             continue
         a = arr[rows]
@@ -131,7 +131,7 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
             clock_ref = mid
     if clock_ref is not None:
         arr = ds.arrays[clock_ref]
-        rows = arr["sysid"] == sysid
+        rows = arr["_sysid"] == sysid
         t_us = arr["time_boot_us"][rows]
         seg = _last_segment(t_us)
         host = (ds.host_ns[clock_ref][rows][seg] - start_ns) / 1e9
@@ -141,7 +141,7 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
             out["clock"] = fit
     if MSG_TIMESYNC in ds.arrays and ds.host_ns.get(MSG_TIMESYNC) is not None:
         ts = ds.arrays[MSG_TIMESYNC]
-        sel = (ts["sysid"] == sysid) & (ts["tc1"] != 0)
+        sel = (ts["_sysid"] == sysid) & (ts["tc1"] != 0)
         rtt = (ds.host_ns[MSG_TIMESYNC][sel] - ts["ts1"][sel]) / 1e6
         rtt = rtt[(rtt > 0) & (rtt < 10_000)]
         if rtt.size:
@@ -166,7 +166,7 @@ def compute(df: DecodedFile) -> dict:
             lo = min(int(h.min()) for h in t_all)
             hi = max(int(h.max()) for h in t_all)
             s["host_span_s"] = (hi - lo) / 1e9
-        sysids = sorted({int(x) for arr in ds.arrays.values() for x in np.unique(arr["sysid"])})
+        sysids = sorted({int(x) for arr in ds.arrays.values() for x in np.unique(arr["_sysid"])})
         units = [_unit_stats(ds, sysid, start, ds.info) for sysid in sysids]
         s["units"] = [u for u in units if any(k in KF_NAMES for k in u["messages"]) or "firmware_version" in u] \
             or units
