@@ -81,6 +81,8 @@ def _load_scenario(arg: str):
 
 def _run(args) -> int:
     from .scenario import run
+    if args.out:
+        _out_path(args.out, "x", 1)          # reject a bad file type before simulating
     sc = _load_scenario(args.scenario)
     sensor = dict(sc.sensor)
     if args.preset:

@@ -92,7 +92,8 @@ class Recording:
                 continue
             q = lsbs.get(ch) or 0.0
             if not q > 0:
-                raise KinefuseError(f"no LSB for {ch}: the sensor model has none; pass lsb={{'{ch}': ...}}")
+                raise KinefuseError(f"no LSB for {ch}: the sensor model does not quantise; set one "
+                                    f"(scenario sensor.{ch}.lsb_*, or to_raw(lsb={{'{ch}': ...}}))")
             c = np.round(x / q)
             if np.any(c > 32767) or np.any(c < -32768) or np.any(np.isnan(c)):
                 raise KinefuseError(f"{ch} does not fit int16 counts with LSB {q:g}")
