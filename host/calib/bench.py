@@ -15,7 +15,7 @@ import json
 
 import numpy as np
 
-from kinefuse.host.calib import accel, mag, static
+# the fitting modules (scipy) are imported on use: `kinefuse --help` must stay fast
 
 
 def register_bench(sub) -> None:
@@ -26,6 +26,7 @@ def register_bench(sub) -> None:
 
 
 def worked_example() -> dict:
+    from kinefuse.host.calib import accel
     ex = accel.SEED002_WORKED_EXAMPLE
     ls = accel.fit_ls(ex["raw_poses"], ex["targets"])
     pr = accel.fit_procrustes(ex["raw_poses"], ex["targets"])
@@ -43,6 +44,7 @@ def worked_example() -> dict:
 
 
 def mag_simulated(runs: int) -> dict:
+    from kinefuse.host.calib import mag
     from kinefuse.host.kinematics import simulate
     out = {}
     for model in ("full", "hard"):
@@ -67,6 +69,7 @@ def independent_sim() -> dict:
         from kinefuse.hil_tests import sim
     except ImportError:
         return {"available": False}
+    from kinefuse.host.calib import accel, mag, static
     from kinefuse.host.kinematics import quat as Q
     out: dict = {"available": True}
     r = sim.simulate("mag_calibration", seed=1)

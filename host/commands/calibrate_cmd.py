@@ -19,10 +19,10 @@ import sys
 
 import numpy as np
 
-from kinefuse.host.calib import accel, gyro, mag, static, unitfile
+from kinefuse.host.calib import static     # light (numpy); fitting modules load on use
 from kinefuse.host.errors import KinefuseError
-from kinefuse.host.readers import read_recording
-from kinefuse.host.readers.table import read as read_table
+
+G_STANDARD = 9.80665  # m/s²
 
 
 def register(subparsers) -> None:
@@ -55,7 +55,7 @@ def register(subparsers) -> None:
     a.add_argument("--targets", metavar="TARGETS.csv", help="expected gravity vector per pose")
     a.add_argument("--method", choices=["ls", "procrustes", "full"],
                    help="default: ls with targets, full (|acc| = g) without")
-    a.add_argument("--g", type=float, default=accel.G_STANDARD, help="gravity (m/s²) for |acc| = g")
+    a.add_argument("--g", type=float, default=G_STANDARD, help="gravity (m/s²) for |acc| = g")
     a.set_defaults(func=run_accel)
 
     gy = sub.add_parser("gyro", help="gyroscope bias from static windows (+ scale from known rates)")
@@ -80,6 +80,7 @@ def _static_cfg(args) -> static.StaticConfig:
 
 
 def _numeric_csv(path: str, ncols: tuple, what: str) -> np.ndarray:
+    from kinefuse.host.readers.table import read as read_table
     tab = read_table(path, has_header=False)
     rows, lines = tab.rows, list(tab.lines)
     rows = [(r, l) for r, l in zip(rows, lines) if not r[0].lstrip().startswith("#")]
@@ -117,6 +118,7 @@ def _ranges(args) -> dict:
 
 
 def _read(args):
+    from kinefuse.host.readers import read_recording
     opts = {}
     if args.fs:
         opts["fs"] = args.fs
@@ -136,6 +138,7 @@ def _emit(args, obj: dict, text: list[str]) -> None:
 def _save(args, sensor: str, M, b, **extra) -> None:
     if not args.out:
         return
+    from kinefuse.host.calib import unitfile
     doc = unitfile.load_or_new(args.out, args.serial, _ranges(args))
     unitfile.set_sensor(doc, sensor, M, b, **extra)
     unitfile.save(doc, args.out)
@@ -145,6 +148,7 @@ def _save(args, sensor: str, M, b, **extra) -> None:
 
 # ----------------------------------------------------------------------------- accel
 def run_accel(args) -> int:
+    from kinefuse.host.calib import accel
     targets = None
     n_samples = None
     if args.poses and args.input:
@@ -193,6 +197,7 @@ def run_accel(args) -> int:
 
 # ----------------------------------------------------------------------------- gyro
 def run_gyro(args) -> int:
+    from kinefuse.host.calib import gyro
     rec = _read(args)
     rec.require("gyr", "acc")
     cfg = _static_cfg(args)
@@ -214,6 +219,7 @@ def run_gyro(args) -> int:
 
 # ----------------------------------------------------------------------------- mag
 def run_mag(args) -> int:
+    from kinefuse.host.calib import mag
     rec = _read(args)
     samples = rec.mag_samples()
     if samples is None:

@@ -20,10 +20,8 @@ import json
 import os
 import sys
 
-from kinefuse.host.calib import static, unitfile
 from kinefuse.host.errors import KinefuseError
-from kinefuse.host.kinematics import joint, report
-from kinefuse.host.readers import read_recording
+from kinefuse.host.kinematics import joint   # light (numpy); the heavy modules load on use
 
 
 def register(subparsers) -> None:
@@ -69,12 +67,13 @@ def register(subparsers) -> None:
     e.add_argument("--unit-cal", nargs=2, metavar=("ARM.json", "FOREARM.json"))
     e.add_argument("--sequence", choices=list(joint.ELBOW_SEQUENCES), default="XYZ",
                    help="XYZ: seed 002 eqs. 2.7-2.9; ZYX: the seed's MATLAB code")
-    e.add_argument("--init", choices=list(report.ELBOW_INITS), default="zero-at-start")
+    e.add_argument("--init", choices=list(joint.ELBOW_INITS), default="zero-at-start")
     common(e)
     e.set_defaults(func=run_elbow)
 
 
 def _reader(args):
+    from kinefuse.host.readers import read_recording
     opts = {"fs": args.fs} if args.fs else {}
 
     def read(path):
@@ -116,6 +115,7 @@ class _Progress:
 
 
 def _finish(args, kind, res, title, inputs) -> int:
+    from kinefuse.host.kinematics import report
     cs = report.detect_cycles(res, kind, drop_edge=args.drop_edge_cycles,
                               max_rmse_deg=args.max_cycle_rmse)
     summary = report.write_report(args.out, kind, res, cs, title=title, inputs=inputs)
@@ -135,6 +135,8 @@ def _finish(args, kind, res, title, inputs) -> int:
 
 
 def run_knee(args) -> int:
+    from kinefuse.host.calib import static, unitfile
+    from kinefuse.host.kinematics import report
     if (args.calib_standing is None) != (args.calib_lying is None):
         raise KinefuseError("--calib-standing and --calib-lying go together (two-posture method)")
     read = _reader(args)
@@ -158,6 +160,8 @@ def run_knee(args) -> int:
 
 
 def run_elbow(args) -> int:
+    from kinefuse.host.calib import unitfile
+    from kinefuse.host.kinematics import report
     read = _reader(args)
     units = None
     if args.unit_cal:

@@ -16,8 +16,9 @@ import json
 
 import numpy as np
 
-from kinefuse.host.kinematics import alignment, joint, misalignment, report, simulate
+from kinefuse.host.kinematics import alignment, joint, misalignment
 from kinefuse.host.kinematics import quat as Q
+# report and simulate (scipy) are imported on use: `kinefuse --help` must stay fast
 
 PUBLISHED = {60: {"a": 0.01389, "c": 0.05043, "r2": 0.9995}, 70: {"a": 0.02013, "c": 0.1497, "r2": 0.9979}}
 
@@ -44,6 +45,7 @@ def misalignment_study() -> dict:
 
 def seed001_errata(seed: int = 0) -> dict:
     """Knee rotation (deg) at the calibration posture with the published eqs. 6.1–6.3."""
+    from kinefuse.host.kinematics import simulate
     rng = np.random.default_rng(seed)
     post = simulate.posture_orientations(0.0, rng)
     res = {}
@@ -60,6 +62,7 @@ def seed001_errata(seed: int = 0) -> dict:
 
 
 def knee_rmse(runs: int, misalign: float, posture: float) -> dict:
+    from kinefuse.host.kinematics import report, simulate
     cal, raw, mount = [], [], []
     for s in range(runs):
         P = simulate.knee_protocol(seed=s, misalign_deg=misalign, posture_deg=posture)

@@ -9,7 +9,8 @@ extension intervals: cycle k runs from mid(ext[k−1], ext[k]) to mid(ext[k], ex
 places extension at ≈ 50 % as in the seed.  The first and last extensions use the neighbouring
 interval mirrored, when the recording covers it.  This rule is documented in every report.
 
-Flexion–extension (elbow, seed 002): cycles run between consecutive extension minima.
+Flexion–extension (elbow, seed 002): cycles run between consecutive extension minima (the
+first starts at motion onset when the movement starts from rest).
 
 Cycles whose flexion curve deviates from the mean by more than ``max_rmse_deg`` (RMS over the
 normalised cycle) are rejected and listed (seed 001 ``media_ciclos`` does the same with an
@@ -79,8 +80,31 @@ def step_up_bounds(t, flexion, **kw) -> list:
     return [(int(s), int(e)) for s, e in zip(starts, ends) if s >= 0 and e <= n]
 
 
-def between_minima_bounds(t, flexion, **kw) -> list:
-    ext = extension_minima(t, flexion, **kw)
+def between_minima_bounds(t, flexion, *, min_prominence: float = 0.4, min_period_s: float = 1.0,
+                          onset_frac: float = 0.05) -> list:
+    """Cycles between consecutive extension minima.  A movement that starts (or ends) from rest
+    has no minimum there — the rest is a flat edge — so a complete flexion before the first
+    (after the last) minimum adds a cycle that starts at motion onset (ends at rest), found
+    where flexion leaves (returns to) the extension level ± ``onset_frac`` of the range."""
+    f = np.asarray(flexion, float)
+    ext = list(extension_minima(t, f, min_prominence=min_prominence, min_period_s=min_period_s))
+    span = float(np.nanmax(f) - np.nanmin(f))
+    if ext:
+        i0 = ext[0]
+        j = int(np.argmax(f[:i0])) if i0 > 0 else 0
+        if i0 > 0 and f[j] - max(f[0], f[i0]) >= min_prominence * span:
+            level = f[i0] + onset_frac * span
+            below = np.flatnonzero(f[:j] <= level)
+            if len(below):
+                ext.insert(0, int(below[-1]))
+        i1 = ext[-1]
+        if i1 < len(f) - 1:
+            j = i1 + int(np.argmax(f[i1:]))
+            if f[j] - max(f[-1], f[i1]) >= min_prominence * span:
+                level = f[i1] + onset_frac * span
+                above = np.flatnonzero(f[j:] <= level)
+                if len(above):
+                    ext.append(int(j + above[0]))
     if len(ext) < 2:
         raise KinefuseError(f"found {len(ext)} extension minimum/minima; need ≥ 2 to form a cycle")
     return [(int(a), int(b) + 1) for a, b in zip(ext[:-1], ext[1:])]

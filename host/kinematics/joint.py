@@ -34,6 +34,7 @@ from kinefuse.host.kinematics import quat as Q
 
 KNEE_CONVENTIONS = ("grood-suntay", "seed001-zyx")
 ELBOW_SEQUENCES = ("XYZ", "ZYX")
+ELBOW_INITS = ("zero-at-start", "seed002", "none")
 KNEE_COLUMNS = ("flexion_deg", "adduction_deg", "internal_rotation_deg")
 
 

@@ -188,9 +188,16 @@ def to_euler(q, seq: str) -> np.ndarray:
     i, j, k = _parse_seq(seq)
     eps = 1.0 if (i, j, k) in ((0, 1, 2), (1, 2, 0), (2, 0, 1)) else -1.0
     R = to_matrix(q)
-    b = np.arcsin(np.clip(eps * R[..., i, k], -1.0, 1.0))
+    sb = eps * R[..., i, k]
+    b = np.arcsin(np.clip(sb, -1.0, 1.0))
     a = np.arctan2(-eps * R[..., j, k], R[..., k, k])
     c = np.arctan2(-eps * R[..., i, j], R[..., i, i])
+    # gimbal lock (middle angle ±90°): only a ± c is defined; report c = 0 and take a from
+    # column j, which is Ri(a) e_j = cos a e_j + ε sin a e_k when c = 0
+    lock = np.abs(sb) > 1.0 - 1e-12
+    if np.any(lock):
+        a = np.where(lock, np.arctan2(eps * R[..., k, j], R[..., j, j]), a)
+        c = np.where(lock, 0.0, c)
     return np.stack([a, b, c], axis=-1)
 
 

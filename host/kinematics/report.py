@@ -101,14 +101,25 @@ def _interp_quat(t_src, q_src, t_dst) -> np.ndarray:
     return Q.normalize(out)
 
 
-def _first_still(rec: Recording, cfg: S.StaticConfig, i_max: int | None = None) -> slice:
-    if rec.acc is not None:
-        wins = S.detect_static(rec.t, rec.acc, rec.gyr, cfg)
-        if wins:
-            w = wins[0]
-            return slice(w.start, w.stop)
-    n = max(2, int(0.5 * rec.fs)) if np.isfinite(rec.fs) else 10
-    return slice(0, min(n, len(rec.t)))
+def _first_still(rec: Recording, cfg: S.StaticConfig, other: Recording | None = None) -> slice:
+    """Samples (on ``rec``'s time base) of the first period where ``rec`` — and ``other``, if
+    given, mapped by elapsed time — is still for ≥ ``cfg.min_duration_s``; else the first 0.5 s."""
+    n_default = max(2, int(0.5 * rec.fs)) if np.isfinite(rec.fs) else 10
+    if rec.acc is None:
+        return slice(0, min(n_default, len(rec.t)))
+    ok = S.still_mask(rec.t, rec.acc, rec.gyr, cfg)
+    if other is not None and other.acc is not None:
+        ok_o = S.still_mask(other.t, other.acc, other.gyr, cfg)
+        te = rec.t - rec.t[0]
+        j = np.clip(np.searchsorted(other.t - other.t[0], te), 0, len(other.t) - 1)
+        ok = ok & ok_o[j]
+    dt = float(np.median(np.diff(rec.t)))
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], ok.astype(np.int8), [0]])))
+    for a, b in zip(edges[::2], edges[1::2]):
+        if (b - a) * dt >= cfg.min_duration_s:
+            trim = int(round(cfg.trim_s / dt))
+            return slice(int(a + trim), int(b - trim))
+    return slice(0, min(n_default, len(rec.t)))
 
 
 def sensor_orientation(rec: Recording, *, filter="complementary", orientation: str = "auto",
@@ -235,12 +246,12 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
     if device or not use_mag:
         ref = None
         if device and stand[0] is not None and stand[0].quat is not None and stand[1].quat is not None:
-            st = [_first_still(r, static_config) for r in stand]
+            st = [_first_still(stand[0], static_config), _first_still(stand[1], static_config)]
             D = O.yaw_alignment(alignment.segment_orientation(stand[0].quat[st[0]], q_SB[0]),
                                 alignment.segment_orientation(stand[1].quat[st[1]], q_SB[1]))
             ref = "standing posture"
         else:
-            st = _first_still(task[0], static_config)
+            st = _first_still(task[0], static_config, task[1])
             i0, i1 = st.start, min(st.stop, len(t))
             D = O.yaw_alignment(qB_T[i0:i1], qB_S[i0:i1])
             ref = f"first still period of the task ({t[i0]:.1f}–{t[i1 - 1]:.1f} s)"
@@ -259,7 +270,7 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
 
 
 ELBOW_COLUMNS = ("flexion_deg", "abduction_deg", "internal_rotation_deg")
-ELBOW_INITS = ("zero-at-start", "seed002", "none")
+ELBOW_INITS = joint.ELBOW_INITS
 
 
 def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter="complementary",
@@ -295,7 +306,7 @@ def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter="complem
     t = t_a[sel]
     qA = qs[0][sel]
     qF = _interp_quat(t_f, qs[1], t)
-    st = _first_still(recs[0], static_config)
+    st = _first_still(recs[0], static_config, recs[1])   # both segments still
     i0, i1 = st.start, min(st.stop, len(t))
     if init == "zero-at-start":
         q_SB_A = Q.identity()
@@ -344,7 +355,9 @@ def _plot(path: str, res: JointResult, cs: cycles.CycleSet, title: str) -> None:
         ax.grid(True, alpha=0.3)
     axes[0].legend(loc="best", fontsize=8)
     axes[-1].set_xlabel("cycle (%)")
-    fig.suptitle(f"{title}\n{len(cs.curves)} cycles; {res.convention}", fontsize=8)
+    import textwrap
+    conv = "\n".join(textwrap.wrap(res.convention, 110))
+    fig.suptitle(f"{title} — {len(cs.curves)} cycles\n{conv}", fontsize=8)
     fig.savefig(path)
 
 
@@ -396,6 +409,17 @@ def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet,
     return summary
 
 
+def _fmt(v) -> str:
+    """Compact human-readable rendering of summary values (floats to 3 decimals)."""
+    if isinstance(v, float):
+        return f"{v:.3f}"
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_fmt(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "; ".join(f"{k.replace('_', ' ')} {_fmt(x)}" for k, x in v.items())
+    return str(v)
+
+
 def _markdown(path: str, s: dict) -> None:
     L = [f"# {s['title']}", "", f"**Convention:** {s['convention']}", "", "## Inputs", ""]
     L += [f"- {k}: `{v}`" for k, v in s["inputs"].items() if v]
@@ -412,7 +436,7 @@ def _markdown(path: str, s: dict) -> None:
                  f"{v['max_mean']:.1f} | {v['min_mean']:.1f} |")
     L += ["", "## Processing", ""]
     for k, v in s["processing"].items():
-        L.append(f"- {k.replace('_', ' ')}: {v}")
+        L.append(f"- {k.replace('_', ' ')}: {_fmt(v)}")
     if s["warnings"]:
         L += ["", "## Warnings", ""] + [f"- {w}" for w in s["warnings"]]
     L += ["", "## Files", ""] + [f"- {f}" for f in s["files"]]

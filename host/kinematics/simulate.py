@@ -20,7 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import CubicSpline
+from scipy.interpolate import PchipInterpolator
 
 from kinefuse.host.kinematics import quat as Q
 from kinefuse.host.readers.recording import Recording
@@ -42,9 +42,12 @@ class StepUpTruth:
 
 
 def _periodic(phase: np.ndarray, keys: list[tuple[float, float]]) -> np.ndarray:
-    x = np.array([k[0] for k in keys] + [1.0])
-    y = np.array([k[1] for k in keys] + [keys[0][1]])
-    return CubicSpline(x, y, bc_type="periodic")(phase % 1.0)
+    """Shape-preserving (PCHIP, no overshoot) periodic interpolation through key points."""
+    x = np.array([k[0] for k in keys])
+    y = np.array([k[1] for k in keys])
+    xx = np.concatenate([x - 1.0, x, x + 1.0])
+    yy = np.concatenate([y, y, y])
+    return PchipInterpolator(xx, yy)(phase % 1.0)
 
 
 def step_up(fs: float = 100.0, n_cycles: int = 10, cycle_s: float = 3.4, rest_s: float = 4.0,

@@ -153,8 +153,8 @@ def check_gyro_range(path: str, gyr_dps: np.ndarray, expected_range_dps: float |
             ratio = rng / expected_range_dps
             if not 0.8 < ratio < 1.25:
                 warnings.append(
-                    f"{path}: gyroscope values are quantised at {lsb:.4g} °/s, i.e. a ±{rng:.0f} °/s "
-                    f"range, but ±{expected_range_dps:g} °/s was configured")
+                    f"{path}: gyroscope values are quantised at {lsb:.4g} °/s, i.e. a "
+                    f"≈ ±{round(rng, -1):.0f} °/s range, but ±{expected_range_dps:g} °/s was configured")
     if expected_range_dps is not None:
         sat = np.abs(gyr_dps) >= 0.999 * expected_range_dps
         if sat.any():

@@ -33,27 +33,32 @@ class Table:
     def numeric(self, idx: list[int], *, allow_empty: bool = False, sentinel: float | None = None,
                 names: list[str] | None = None) -> np.ndarray:
         """Columns ``idx`` as float (N×k); blank cells → NaN only if ``allow_empty``."""
-        out = np.full((len(self.rows), len(idx)), np.nan)
-        for r, (row, ln) in enumerate(zip(self.rows, self.lines)):
-            for c, j in enumerate(idx):
-                cell = row[j].strip() if j < len(row) else ""
-                if cell == "":
-                    if allow_empty:
-                        continue
-                    nm = names[c] if names else self.header[j]
-                    raise ReaderError(self.path, f"column {nm!r} is empty", int(ln))
-                if self.decimal == ",":
-                    cell = cell.replace(",", ".")
-                try:
-                    v = float(cell)
-                except ValueError:
-                    nm = names[c] if names else self.header[j]
-                    raise ReaderError(self.path, f"column {nm!r}: {cell!r} is not a number",
-                                      int(ln)) from None
-                if sentinel is not None and v == sentinel:
-                    v = np.nan
-                out[r, c] = v
+        out = np.empty((len(self.rows), len(idx)))
+        for c, j in enumerate(idx):
+            cells = [row[j].strip() if j < len(row) else "" for row in self.rows]
+            if self.decimal == ",":
+                cells = [x.replace(",", ".") for x in cells]
+            if allow_empty:
+                cells = [x if x else "nan" for x in cells]
+            try:
+                col = np.array(cells, dtype=float)       # fast path
+            except ValueError:
+                col = self._locate_bad(cells, j, c, names)
+            if sentinel is not None:
+                col[col == sentinel] = np.nan
+            out[:, c] = col
         return out
+
+    def _locate_bad(self, cells, j, c, names):
+        nm = names[c] if names else self.header[j]
+        for cell, ln in zip(cells, self.lines):
+            if cell == "":
+                raise ReaderError(self.path, f"column {nm!r} is empty", int(ln))
+            try:
+                float(cell)
+            except ValueError:
+                raise ReaderError(self.path, f"column {nm!r}: {cell!r} is not a number", int(ln)) from None
+        raise AssertionError("unreachable")
 
 
 def sniff_sep(sample_lines: list[str]) -> str:

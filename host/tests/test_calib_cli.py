@@ -1,0 +1,139 @@
+"""``kinefuse calibrate`` through the real CLI entry point (one-line errors, exit codes, JSON)."""
+import json
+
+import numpy as np
+import pytest
+
+from kinefuse.host import cli
+from kinefuse.host.kinematics import quat as Q
+from kinefuse.host.kinematics import simulate
+from kinefuse.host.readers import kinefuse_csv
+
+RAW = """# seed 002 Annex G, mean raw acceleration per pose (m/s²)
+ax,ay,az
+7.6467,6.1838,-0.2367
+6.3236,-7.5506,-0.2625
+0.0265,-0.0547,9.6081
+0.0657,-0.0071,-10.0659
+-7.5156,-6.2212,-0.2421
+7.6009,6.2452,-0.2297
+"""
+G = 9.80665
+TARGETS = "\n".join(",".join(f"{v:.5f}" for v in r) for r in
+                    [[-G, 0, 0], [0, -G, 0], [0, 0, -G], [0, 0, G], [G, 0, 0], [-G, 0, 0]]) + "\n"
+
+
+@pytest.fixture
+def run(monkeypatch, capsys):
+    monkeypatch.setattr(cli, "COMMAND_MODULES", ["kinefuse.host.commands.calibrate_cmd",
+                                                 "kinefuse.host.commands.report_cmd"])
+    monkeypatch.setattr(cli, "BENCH_MODULES", [])
+
+    def _run(*argv):
+        code = cli.main([str(a) for a in argv])
+        out, err = capsys.readouterr()
+        return code, out, err
+    return _run
+
+
+def test_accel_poses_json_exact(run, tmp_path):
+    (tmp_path / "p.csv").write_text(RAW)
+    (tmp_path / "t.csv").write_text(TARGETS)
+    code, out, err = run("calibrate", "accel", "--poses", tmp_path / "p.csv", "--targets", tmp_path / "t.csv",
+                         "--method", "ls", "--json")
+    assert code == 0, err
+    obj = json.loads(out)                      # exactly one JSON object on stdout
+    assert list(obj) == ["R", "bias", "det", "residual_rms"]
+    assert obj["bias"] is None
+    np.testing.assert_allclose(obj["R"], [[-0.7665, -0.6419, -0.0032], [-0.6310, 0.7702, 0.0004],
+                                          [-0.0230, 0.0160, -0.9956]], atol=5e-5)
+    assert round(obj["det"], 4) == 0.9910
+    code, out, _ = run("calibrate", "accel", "--poses", tmp_path / "p.csv", "--targets", tmp_path / "t.csv",
+                       "--method", "full", "--json")
+    obj = json.loads(out)
+    assert len(obj["bias"]) == 3 and obj["residual_rms"] < 0.05
+    code, out, _ = run("calibrate", "accel", "--poses", tmp_path / "p.csv", "--targets", tmp_path / "t.csv",
+                       "--method", "procrustes")
+    assert code == 0 and "det = 1.00000" in out
+
+
+def test_accel_cli_errors_are_one_line_exit_2(run, tmp_path):
+    (tmp_path / "p.csv").write_text(RAW)
+    (tmp_path / "t5.csv").write_text("\n".join(TARGETS.splitlines()[:5]) + "\n")
+    (tmp_path / "bad.csv").write_text("1,2,3\n4,x,6\n")
+    cases = [
+        (["--poses", tmp_path / "p.csv", "--targets", tmp_path / "t5.csv"], "5 targets for 6"),
+        (["--poses", tmp_path / "bad.csv", "--targets", tmp_path / "t5.csv"], "line 2"),
+        (["--poses", tmp_path / "p.csv"], "needs --targets"),
+        (["--poses", tmp_path / "missing.csv", "--targets", tmp_path / "t5.csv"], "not found"),
+        ([], "give --poses"),
+    ]
+    for args, msg in cases:
+        code, out, err = run("calibrate", "accel", *args, "--json")
+        assert code == 2 and out == ""
+        assert err.count("\n") == 1 and err.startswith("kinefuse: error:") and msg in err, err
+
+
+def _six_pose_recording(path, rng):
+    """Six still poses (±x, ±y, ±z up) joined by 2 s rotations, with accelerometer errors."""
+    poses = [Q.identity(), Q.elementary("X", np.pi), Q.elementary("X", np.pi / 2),
+             Q.elementary("X", -np.pi / 2), Q.elementary("Y", np.pi / 2), Q.elementary("Y", -np.pi / 2)]
+    fs, hold, move = 100.0, 4.0, 2.0
+    qs = []
+    for k, q in enumerate(poses):
+        qs.append(np.broadcast_to(q, (int(hold * fs), 4)))
+        if k + 1 < len(poses):
+            rv = Q.to_rotvec(Q.mul(Q.conj(q), poses[k + 1]))
+            s = np.linspace(0, 1, int(move * fs))
+            s = 0.5 - 0.5 * np.cos(np.pi * s)
+            qs.append(Q.mul(q, Q.from_rotvec(s[:, None] * rv)))
+    q = np.vstack(qs)
+    t = np.arange(len(q)) / fs
+    rec = simulate.imu(t, q, rng=rng, acc_noise=0.02)
+    M_err = np.array([[1.02, 0.01, 0], [0, 0.98, -0.01], [0, 0, 1.01]])
+    b = np.array([0.1, -0.2, 0.15])
+    rec.acc = rec.acc @ M_err.T + b
+    kinefuse_csv.write(str(path), rec)
+    return M_err, b
+
+
+def test_accel_from_recording_and_unit_file(run, tmp_path):
+    rng = np.random.default_rng(0)
+    M_err, b = _six_pose_recording(tmp_path / "six.csv", rng)
+    tg = np.array([[0, 0, 1], [0, 0, -1], [0, 1, 0], [0, -1, 0], [-1, 0, 0], [1, 0, 0]]) * 9.81
+    np.savetxt(tmp_path / "tg.csv", tg, delimiter=",")
+    out_json = tmp_path / "unit.json"
+    code, out, err = run("calibrate", "accel", "--input", tmp_path / "six.csv", "--targets", tmp_path / "tg.csv",
+                         "--method", "full", "--json", "--out", out_json, "--serial", "U1", "--range", "acc_g=8")
+    assert code == 0, err
+    obj = json.loads(out)
+    np.testing.assert_allclose(obj["bias"], b, atol=0.02)
+    np.testing.assert_allclose(obj["R"], np.linalg.inv(M_err), atol=0.005)
+    doc = json.loads(out_json.read_text())
+    assert doc["serial"] == "U1" and doc["sensor_ranges"] == {"acc_g": 8.0}
+    assert doc["sensors"]["accel"]["n_poses"] == 6 and doc["sensors"]["accel"]["units"] == "m/s^2"
+    # |acc| = g with only six poses: diagonal model (documented), still a JSON object
+    code, out, err = run("calibrate", "accel", "--input", tmp_path / "six.csv", "--json")
+    assert code == 0 and len(json.loads(out)["bias"]) == 3
+    # gyro bias into the same unit file
+    code, out, err = run("calibrate", "gyro", "--input", tmp_path / "six.csv", "--json", "--out", out_json)
+    assert code == 0, err
+    g = json.loads(out)
+    assert g["n_windows"] == 6 and g["units"] == "rad/s"
+    assert set(json.loads(out_json.read_text())["sensors"]) == {"accel", "gyro"}
+
+
+def test_mag_cli(run, tmp_path):
+    rec = simulate.tumble(60.0, 50.0, rng=np.random.default_rng(1), hard_iron=[15.05, 9.45, -19.7],
+                          soft_iron=np.eye(3) * 1.05)
+    kinefuse_csv.write(str(tmp_path / "fig8.csv"), rec)
+    code, out, err = run("calibrate", "mag", "--input", tmp_path / "fig8.csv", "--field-norm", 22.6, "--json")
+    assert code == 0, err
+    obj = json.loads(out)
+    assert np.linalg.norm(np.array(obj["bias"]) - [15.05, 9.45, -19.7]) < 0.5
+    assert obj["spread_reduction"] >= 10 and obj["warnings"] == []
+    # a recording without magnetometer: one-line error
+    rec.mag = None
+    kinefuse_csv.write(str(tmp_path / "nomag.csv"), rec)
+    code, out, err = run("calibrate", "mag", "--input", tmp_path / "nomag.csv")
+    assert code == 2 and "no magnetometer" in err and err.count("\n") == 1
