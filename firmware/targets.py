@@ -153,6 +153,12 @@ class BuildResult:
                 rows.append((sym_name, int(addr, 16) & ~1, int(size, 16), kind))
         return rows
 
+    def size_by_origin(self) -> dict[str, SizeReport]:
+        """Linked bytes per input file, from the linker map: archives by name (``libm.a``,
+        ``libgcc.a``, ``libc.a``, ``libstdc++.a``), objects by source stem (``FusionAhrs``,
+        ``kf_cost_driver``, ``startup_mps2``...), alignment padding as ``*fill*``."""
+        return map_size_by_origin(self.map)
+
     def disassemble(self, symbol: str | None = None) -> str:
         """objdump -d text of the whole ELF or of one symbol."""
         cmd = [tool("objdump"), "-d", "--no-show-raw-insn"]
@@ -322,6 +328,55 @@ def size_of(elf: str | os.PathLike) -> SizeReport:
     out = _run([tool("size"), "-B", str(elf)], "size").stdout.splitlines()
     text, data, bss = (int(v) for v in out[1].split()[:3])
     return SizeReport(text, data, bss)
+
+
+_ALLOC_OUTPUTS = {".vectors": "text", ".text": "text", ".ARM.extab": "text", ".ARM.exidx": "text",
+                  ".init_array": "text", ".data": "data", ".bss": "bss", ".noinit": "bss"}
+_MAP_INPUT = re.compile(r"^ (\S+)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S.*)$")
+
+
+def map_size_by_origin(map_path: str | os.PathLike) -> dict[str, SizeReport]:
+    """Sum a GNU ld map's allocated input sections by origin (see ``size_by_origin``)."""
+    sums: dict[str, list[int]] = {}
+    kind_index = {"text": 0, "data": 1, "bss": 2}
+    current: str | None = None
+    in_map = False
+    pending_name = False
+    for line in Path(map_path).read_text(errors="replace").splitlines():
+        if line.startswith("Linker script and memory map"):
+            in_map = True
+            continue
+        if not in_map:
+            continue
+        if line and not line[0].isspace():
+            out_name = line.split()[0]
+            current = _ALLOC_OUTPUTS.get(out_name)
+            continue
+        if current is None:
+            continue
+        if line.startswith(" *fill*"):
+            parts = line.split()
+            if len(parts) >= 3:
+                sums.setdefault("*fill*", [0, 0, 0])[kind_index[current]] += int(parts[2], 16)
+            continue
+        m = _MAP_INPUT.match(line)
+        if m is None:
+            pending_name = bool(re.match(r"^ \S+$", line))   # long section name on its own line
+            continue
+        if m.group(1) is None and not pending_name:
+            continue
+        pending_name = False
+        size = int(m.group(3), 16)
+        origin = m.group(4).strip()
+        if size == 0 or origin.startswith("load address"):
+            continue
+        arch = re.search(r"([^/]+\.a)\(", origin)
+        if arch:
+            key = arch.group(1)
+        else:
+            key = re.sub(r"^\d+_", "", Path(origin).stem)
+        sums.setdefault(key, [0, 0, 0])[kind_index[current]] += size
+    return {k: SizeReport(*v) for k, v in sums.items()}
 
 
 # ---------------------------------------------------------------------------------------------

@@ -39,6 +39,7 @@ BENCH_MODULES = [
     "kinefuse.host.calib.bench",
     "kinefuse.host.kinematics.bench",
     "kinefuse.host.bench.decode",
+    "kinefuse.hil_tests.qemu.bench",
 ]
 
 

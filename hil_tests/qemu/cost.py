@@ -40,12 +40,15 @@ class CallCost:
     per_call: float              # (count_k - count_0) / k
     opt: str
     size: dict[str, SizeReport] = field(default_factory=dict)   # opt flag -> size delta
+    size_origin: dict[str, dict[str, SizeReport]] = field(default_factory=dict)  # opt -> origin -> delta
     build: BuildResult | None = None
 
     def as_dict(self) -> dict:
         return {"target": self.target, "k": self.k, "count_k": self.count_k,
                 "count_0": self.count_0, "instructions_per_call": self.per_call, "opt": self.opt,
-                "size": {o: s.as_dict() for o, s in self.size.items()}}
+                "size": {o: s.as_dict() for o, s in self.size.items()},
+                "size_by_origin": {o: {k: v.as_dict() for k, v in d.items()}
+                                   for o, d in self.size_origin.items()}}
 
 
 def cost_program(sources: Paths, setup: str, call: str, target: str | Target, *,
@@ -103,7 +106,9 @@ def measure_call_cost(sources: Paths, setup: str, call: str, target: str | Targe
     ck = count_calls(prog, k, timeout)
     result = CallCost(tgt.name, k, ck, c0, (ck - c0) / k, opt, build=prog)
     for size_opt in size_opts:
-        result.size[size_opt] = size_delta(sources, setup, call, tgt, opt=size_opt, **common)
+        total, origin = size_delta_by_origin(sources, setup, call, tgt, opt=size_opt, **common)
+        result.size[size_opt] = total
+        result.size_origin[size_opt] = origin
     return result
 
 
@@ -123,16 +128,31 @@ def loop_overhead(target: str | Target, *, opt: str = "-O2", k: int = 100) -> fl
     return instructions_per_call([], "", '__asm__ volatile("");', target, k=k, opt=opt)
 
 
-def size_delta(sources: Paths, setup: str, call: str, target: str | Target, *,
-               opt: str = "-Os", prelude: str = "", finish: str = "", baseline_code: str = "",
-               include_dirs: Paths = (),
-               defines: Mapping[str, str | int | None] | None = None, language: str = "c",
-               extra_cflags: Sequence[str] = ()) -> SizeReport:
-    """Bytes the setup + call add: size(driver with them) - size(driver without them)."""
+def size_delta(sources: Paths, setup: str, call: str, target: str | Target, **kwargs) -> SizeReport:
+    """Bytes the setup + call add: size(driver with them) - size(driver without them).
+
+    Keyword arguments: ``opt`` (default ``-Os``), ``prelude``, ``finish``, ``baseline_code``,
+    ``include_dirs``, ``defines``, ``language``, ``extra_cflags``.
+    """
+    return size_delta_by_origin(sources, setup, call, target, **kwargs)[0]
+
+
+def size_delta_by_origin(sources: Paths, setup: str, call: str, target: str | Target, *,
+                         opt: str = "-Os", prelude: str = "", finish: str = "",
+                         baseline_code: str = "", include_dirs: Paths = (),
+                         defines: Mapping[str, str | int | None] | None = None,
+                         language: str = "c", extra_cflags: Sequence[str] = ()
+                         ) -> tuple[SizeReport, dict[str, SizeReport]]:
+    """:func:`size_delta` and its split by origin (the sources' objects by stem, ``libm.a``,
+    ``libgcc.a``, ``libc.a``...; from the linker maps), zero entries left out."""
     sources = list(sources)
     common = dict(prelude=prelude, finish=finish, baseline_code=baseline_code,
                   include_dirs=list(include_dirs), defines=defines, opt=opt, language=language,
                   extra_cflags=extra_cflags)
     with_it = cost_program(sources, setup, call, target, **common)
     without = cost_program(sources, setup, call, target, baseline=True, **common)
-    return with_it.size - without.size
+    a, b = with_it.size_by_origin(), without.size_by_origin()
+    zero = SizeReport(0, 0, 0)
+    origin = {k: a.get(k, zero) - b.get(k, zero) for k in sorted(set(a) | set(b))}
+    origin = {k: v for k, v in origin.items() if v != zero}
+    return with_it.size - without.size, origin

@@ -110,3 +110,25 @@ def _loop_body_length(disasm: str) -> int:
             if target <= insns[call][0]:
                 return sum(1 for a, _, _ in insns if target <= a <= addr)
     raise AssertionError("no loop around the call in:\n" + disasm)
+
+
+@pytest.mark.parametrize("target", TARGETS)
+def test_size_by_origin_adds_up_to_size(target):
+    prog = known_loop_program(target)
+    origin = prog.size_by_origin()
+    assert sum(v.text for v in origin.values()) == prog.size.text
+    assert sum(v.data for v in origin.values()) == prog.size.data
+    assert sum(v.bss for v in origin.values()) == prog.size.bss
+    assert origin["selftest_known_loop"].text == 12
+
+
+def test_competitor_motion_is_physically_consistent():
+    np = pytest.importorskip("numpy")
+    from kinefuse.hil_tests.qemu.competitors import motion
+    m = motion(n=300)
+    assert all(v.dtype == np.float32 and v.shape == (300, 3) for v in m.values())
+    assert np.allclose(np.linalg.norm(m["acc"], axis=1), 9.81, atol=0.2)            # m/s^2
+    assert np.allclose(np.linalg.norm(m["mag"], axis=1), np.hypot(20, 44), atol=1.5)  # uT
+    assert np.abs(m["gyr"]).max() < np.deg2rad(200)                                  # rad/s
+    again = motion(n=300)
+    assert all(np.array_equal(m[k], again[k]) for k in m)
