@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .motion import AxisRotation, Compose, FixedPoint, RigidMotion, Track
+from .motion import AxisRotation, Compose, RigidMotion, Track
 from .rig import Rig, body_sequence_from_spec, mount_from_spec
 from .segments import BodySequence, SpecError, positive, take, unit3, vec3
 from .signals import Profile

@@ -7,8 +7,8 @@ from typing import Callable
 import numpy as np
 
 from . import quat as Q
-from .motion import RigidMotion, Track
-from .segments import BodySequence, SpecError, orientation_from_spec, take, vec3
+from .motion import Track
+from .segments import BodySequence, orientation_from_spec, take, vec3
 
 
 @dataclass

@@ -104,6 +104,16 @@ def _streams(seed: int):
 
 
 def build(sc: Scenario) -> Built:
+    """Parse and assemble a scenario; any malformed value becomes a one-line SpecError."""
+    try:
+        return _build(sc)
+    except SpecError:
+        raise
+    except (TypeError, ValueError, KeyError, IndexError) as exc:
+        raise SpecError(f"scenario {sc.name!r}: invalid value ({type(exc).__name__}: {exc})") from None
+
+
+def _build(sc: Scenario) -> Built:
     if not isinstance(sc.motion, dict) or sc.motion.get("kind") not in RIGS:
         got = sc.motion.get("kind") if isinstance(sc.motion, dict) else sc.motion
         raise SpecError(f"motion.kind: unknown {got!r}; known: {', '.join(RIGS)}")

@@ -211,11 +211,11 @@ def window(duration: float, ramp: float, t_start: float = 0.0) -> PPolySignal:
     Zero before ``t_start`` and after ``t_start + duration``.
     """
     if duration <= 0:
-        raise ValueError("window duration must be positive")
+        raise SpecError("window duration must be positive")
     r = min(float(ramp), duration / 2.0)
     s = _smoothstep5()
     if r <= 0:
-        raise ValueError("window ramp must be positive")
+        raise SpecError("ramp_s must be positive")
     breaks = [t_start, t_start + r]
     polys = [s(P([0, 1.0 / r]))]
     if duration - 2 * r > 1e-12:

@@ -56,6 +56,10 @@ def test_every_library_scenario_runs(name):
       "timing": {"drop_prob": 1.5}}, "drop_prob"),
     ({"name": "x", "motion": {"kind": "body", "segments": [{"type": "rest", "duration": 1}]},
       "disturbances": [{"type": "field_scale", "t_start_s": 5, "t_end_s": 1, "factor": 2}]}, "t_end_s"),
+    ({"name": "x", "motion": {"kind": "body", "segments": [{"type": "random_rotation", "duration": 5,
+                                                            "n_sines": "abc"}]}}, "invalid value"),
+    ({"name": "x", "motion": {"kind": "hinge", "joint": {"steps": [{"move_to_deg": 10, "rate_dps": 10,
+                                                                    "blend_s": 0}]}}}, "blend"),
 ])
 def test_bad_specs_give_one_line_errors(bad, msg):
     with pytest.raises(KinefuseError) as exc:
