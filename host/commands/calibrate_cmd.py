@@ -69,6 +69,9 @@ def register(subparsers) -> None:
     m.add_argument("--model", choices=["full", "hard"], default="full",
                    help="full: hard + soft iron (default); hard: offset only")
     m.add_argument("--field-norm", type=float, help="local field magnitude (µT) to scale to")
+    m.add_argument("--gate", type=float, metavar="UT",
+                   help="seed-001 gating: report the samples whose calibrated |m| leaves ±UT of the "
+                        "mean (seed: 0.5); the report command applies it with --mag-gate")
     m.set_defaults(func=run_mag)
 
 
@@ -227,6 +230,13 @@ def run_mag(args) -> int:
     cal = mag.calibrate(samples, model=args.model, field_norm=args.field_norm)
     for w in cal.warnings:
         print(f"kinefuse: warning: {w}", file=sys.stderr)
+    obj = cal.to_json()
+    gate_txt = []
+    if args.gate is not None:
+        _, keep = mag.gate_norm(cal.apply(samples), args.gate)
+        obj["gate_uT"] = args.gate
+        obj["gated_fraction"] = float(1.0 - keep.mean())
+        gate_txt = [f"gating ±{args.gate:g} µT: {100 * obj['gated_fraction']:.1f}% of samples would be held"]
     _save(args, "mag", cal.W, cal.b, method=f"ellipsoid-{cal.model}", field_norm=cal.field_norm,
           n_samples=cal.n_samples, residual_rms=cal.residual_rms,
           norm_std_before=cal.norm_std_before, norm_std_after=cal.norm_std_after,
@@ -238,6 +248,6 @@ def run_mag(args) -> int:
             f"{cal.norm_std_after:.3f} µT ({100 * cal.rel_spread_after:.2f} %) after "
             f"(×{cal.spread_reduction:.1f})",
             f"coverage: {100 * cal.coverage['cells_visited']:.0f}% of directions, "
-            f"smallest spread {cal.coverage['min_eigenvalue']:.3f} (sphere 0.333)"]
-    _emit(args, cal.to_json(), text)
+            f"smallest spread {cal.coverage['min_eigenvalue']:.3f} (sphere 0.333)"] + gate_txt
+    _emit(args, obj, text)
     return 0

@@ -127,9 +127,11 @@ def test_mag_cli(run, tmp_path):
     rec = simulate.tumble(60.0, 50.0, rng=np.random.default_rng(1), hard_iron=[15.05, 9.45, -19.7],
                           soft_iron=np.eye(3) * 1.05)
     kinefuse_csv.write(str(tmp_path / "fig8.csv"), rec)
-    code, out, err = run("calibrate", "mag", "--input", tmp_path / "fig8.csv", "--field-norm", 22.6, "--json")
+    code, out, err = run("calibrate", "mag", "--input", tmp_path / "fig8.csv", "--field-norm", 22.6, "--json",
+                         "--gate", 0.5)
     assert code == 0, err
     obj = json.loads(out)
+    assert 0.0 <= obj["gated_fraction"] < 0.05            # 0.2 µT noise: few samples beyond ±0.5 µT
     assert np.linalg.norm(np.array(obj["bias"]) - [15.05, 9.45, -19.7]) < 0.5
     assert obj["spread_reduction"] >= 10 and obj["warnings"] == []
     # a recording without magnetometer: one-line error

@@ -157,3 +157,16 @@ def test_static_pose_offset_zeroes_the_joint_at_the_initial_pose():
     qf1 = Q.mul(Q.elementary("X", D(30)), q0_f)
     qj1 = joint.joint_quaternion(q0_a, qf1, qa, qf)
     np.testing.assert_allclose(joint.elbow_angles(qj1), [30, 0, 0], atol=1e-9)
+
+
+def test_flexion_convention_matches_the_independent_simulator():
+    """kinefuse.hil_tests.sim 'gait' (written independently): its true thigh/shank sensor
+    orientations, sensors along its segment axes (x forward, y left, z up), give exactly its
+    knee flexion truth through our G&S decomposition — same sign, same zero."""
+    sim = pytest.importorskip("kinefuse.hil_tests.sim")
+    recs = sim.run("gait", seed=1)
+    q_SB = Q.from_matrix(np.column_stack([[0, 1.0, 0], [0, 0, 1.0], [1.0, 0, 0]]))
+    qj = joint.joint_quaternion(recs["thigh"].q_true, recs["shank"].q_true, q_SB, q_SB)
+    ang = joint.knee_angles(qj)
+    np.testing.assert_allclose(ang[:, 0], np.degrees(recs["thigh"].truth["knee_flexion"]), atol=1e-9)
+    np.testing.assert_allclose(ang[:, 1:], 0.0, atol=1e-9)
