@@ -43,7 +43,9 @@ def render_all(names: list[str] | None = None) -> dict[str, str]:
     rows = []
     for name in names or list(estimators.ESTIMATORS):
         src = source_file(name)
-        for system in SYSTEMS:
+        # an estimator may restrict its number systems (e.g. float32 only: a covariance
+        # filter whose fixed-point ranges cannot be bounded)
+        for system in getattr(estimators.get(name), "systems", SYSTEMS):
             lo = lowered(name, system)
             P = lo.prefix
             files[f"{P}.h"] = c_header(lo, src)
