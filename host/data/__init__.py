@@ -1,0 +1,1 @@
+"""Data shipped with kinefuse (BROAD excerpt) and the script that cuts it."""
