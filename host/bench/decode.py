@@ -25,6 +25,8 @@ def register_bench(bench_subparsers) -> None:
     p.add_argument("--frames", type=int, default=100_000, help="frames for the throughput test (default 100000)")
     p.add_argument("--repeat", type=int, default=3, help="interleaved repetitions, best kept (default 3)")
     p.add_argument("--ber", type=float, default=1e-4, help="bit error rate of the bit-error test (default 1e-4)")
+    p.add_argument("--bit-error-frames", type=int, default=100_000, help="frames of the bit-error test (default 100000)")
+    p.add_argument("--fake-magic-frames", type=int, default=20_000, help="frames of the fake-magic test (default 20000)")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=run)
@@ -141,8 +143,9 @@ def run(args) -> int:
     from kinefuse.host.errors import KinefuseError
     from kinefuse.host.link.cli_util import console, print_json
     from kinefuse.host.link.fakeunit import raw_frames
-    if args.frames < 1000 or args.repeat < 1 or not 0 <= args.ber < 0.01:
-        raise KinefuseError("need --frames >= 1000, --repeat >= 1 and 0 <= --ber < 0.01")
+    if min(args.frames, args.bit_error_frames, args.fake_magic_frames) < 1000 or args.repeat < 1 \
+            or not 0 <= args.ber < 0.01:
+        raise KinefuseError("need at least 1000 frames per test, --repeat >= 1 and 0 <= --ber < 0.01")
     con = console(args.json)
     rng = np.random.default_rng(args.seed)
     make_pm = _pymavlink()
@@ -153,9 +156,9 @@ def run(args) -> int:
         prog.update(t, advance=1, description="throughput")
         speed = throughput(frames, args.frames, args.repeat, make_pm)
         prog.update(t, advance=1, description="fake magic bytes")
-        fm = fake_magic(make_pm, rng)
+        fm = fake_magic(make_pm, rng, args.fake_magic_frames)
         prog.update(t, advance=1, description="bit errors")
-        be_n = max(args.frames, 100_000)
+        be_n = args.bit_error_frames
         be_frames = frames if args.frames == be_n else raw_frames(be_n, seed=args.seed)
         be = bit_errors(be_frames, be_n, args.ber, rng)
         prog.update(t, advance=1)

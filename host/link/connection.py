@@ -403,9 +403,9 @@ class FileConnection(Connection):
 
 
 # ---------------------------------------------------------------------------------- factory
-def _host_port(rest: str, url: str) -> tuple[str, int]:
+def _host_port(rest: str, url: str, listen: bool = False) -> tuple[str, int]:
     host, sep, port = rest.rpartition(":")
-    if not sep or not port.isdigit() or not 0 < int(port) < 65536:
+    if not sep or not port.isdigit() or not (0 if listen else 1) <= int(port) < 65536:  # 0: any free port
         raise KinefuseError(f"bad connection string {url!r}: expected HOST:PORT")
     return host or "127.0.0.1", int(port)
 
@@ -427,10 +427,10 @@ def open_connection(url: str, baud: int = DEFAULT_BAUD) -> Connection:
     scheme, sep, rest = url.partition(":")
     scheme = scheme.lower() if sep else ""
     if scheme in ("tcp", "tcpin"):
-        host, port = _host_port(rest, url)
+        host, port = _host_port(rest, url, listen=scheme == "tcpin")
         return TcpConnection(host, port, listen=scheme == "tcpin")
     if scheme in ("udp", "udpin", "udpout"):
-        host, port = _host_port(rest, url)
+        host, port = _host_port(rest, url, listen=scheme != "udpout")
         return UdpConnection(host, port, listen=scheme != "udpout")
     if scheme == "file":
         return FileConnection(rest)

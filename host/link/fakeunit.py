@@ -14,7 +14,6 @@ corrupt bytes on purpose.
 from __future__ import annotations
 
 import math
-import struct
 import threading
 import time
 
@@ -62,7 +61,8 @@ def _rotate_to_sensor(q, v):
 class FakeUnit:
     def __init__(self, conn: Connection, unit_id: int = 1, rate_hz: float = 1000.0, orientation_rate_hz: float = 100.0,
                  drift_ppm: float = 0.0, boot_offset_us: int = 0, streaming: bool = True, drop_every: int = 0,
-                 corrupt_probability: float = 0.0, seed: int = 0, answer_params: bool = True):
+                 corrupt_probability: float = 0.0, seed: int = 0, answer_params: bool = True,
+                 param_list_loss_every: int = 0):
         self.conn = conn
         self.params = {k: v[1] for k, v in DEFAULT_PARAMS.items()}
         self.params["KF_UNIT_ID"] = unit_id
@@ -74,6 +74,7 @@ class FakeUnit:
         self.drop_every = drop_every
         self.corrupt_probability = corrupt_probability
         self.answer_params = answer_params
+        self.param_list_loss_every = param_list_loss_every  # drop every k-th PARAM_VALUE of a list
         self.rng = np.random.default_rng(seed)
         self.enc = Encoder(sysid=unit_id, compid=UNIT_COMPONENT_ID)
         self.dec = StreamDecoder()
@@ -233,7 +234,10 @@ class FakeUnit:
         if not self._for_me(m):
             return []
         if name == "PARAM_REQUEST_LIST":
-            return [self._param_value(k) for k in range(len(self.params))] if self.answer_params else []
+            if not self.answer_params:
+                return []
+            k_loss = self.param_list_loss_every
+            return [self._param_value(k) for k in range(len(self.params)) if not (k_loss and k % k_loss == 0)]
         if name == "PARAM_REQUEST_READ":
             if not self.answer_params:
                 return []

@@ -1,0 +1,88 @@
+"""Link statistics on synthetic data with known loss, drift, offset and latency."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from kinefuse.host.link import stats
+from kinefuse.host.link.codec import Encoder
+from kinefuse.host.link.frames import decode_file
+from kinefuse.host.link.recording import RecordingWriter, make_header
+
+
+def test_counter_loss_is_wrap_safe():
+    c = np.array([2**32 - 3, 2**32 - 2, 2**32 - 1, 0, 1, 3, 4], dtype=np.uint32)
+    r = stats.counter_analysis(c)
+    assert r["stride"] == 1 and r["samples_lost"] == 1 and r["resets"] == 0
+
+
+def test_decimated_stream_is_not_loss_and_resets_are_counted():
+    c = np.concatenate([np.arange(0, 500, 5), np.arange(510, 700, 5), np.arange(0, 100, 5), [95]])
+    r = stats.counter_analysis(c.astype(np.uint32))
+    assert r["stride"] == 5 and r["samples_lost"] == 2  # 500 and 505 missing
+    assert r["resets"] == 1 and r["duplicates"] == 1
+
+
+def test_clock_fit_is_robust_to_delay_spikes():
+    rng = np.random.default_rng(0)
+    device = np.arange(0, 60, 0.005)                          # 200 Hz for 60 s
+    drift = 30e-6                                              # unit clock 30 ppm fast
+    delay = 0.002 + rng.exponential(0.0005, device.size)
+    delay[-2000:] += rng.uniform(0, 0.05, 2000)                # congestion at the end
+    host = 5.0 + device / (1 + drift) + delay
+    fit = stats.fit_clock(device, host)
+    assert abs(fit["drift_ppm"] - 30) < 1.0
+    assert abs(fit["offset_s"] - 5.002) < 2e-4
+    assert fit["delay_above_min_ms"]["median"] == pytest.approx(np.median(delay - 0.002) * 1e3, abs=0.1)
+    slope_ls = np.polyfit(device, host, 1)[0]                  # ordinary least squares is pulled away
+    assert abs((1 / slope_ls - 1) * 1e6 - 30) > 3.0
+
+
+@pytest.fixture(scope="module")
+def synthetic(tmp_path_factory):
+    """200 Hz samples for 40 s, unit clock +50 ppm, 3 samples lost, counter wrapping, 1 Hz TIMESYNC."""
+    rng = np.random.default_rng(1)
+    path = tmp_path_factory.mktemp("stats") / "s.kfr"
+    head = make_header([{"id": 0, "connection": "synthetic"}])
+    t0 = head["start_monotonic_ns"]
+    enc = Encoder(sysid=3, compid=200)
+    n = 8000
+    counters = (np.arange(n, dtype=np.int64) + 2**32 - 4000) & 0xFFFFFFFF
+    keep = np.ones(n, bool)
+    keep[[100, 101, 5000]] = False
+    reads, last = [], t0
+    for k in np.flatnonzero(keep):
+        dev_us = 1_000_000 + 5000 * int(k)
+        host = t0 + 250_000_000 + int(dev_us * 1000 / (1 + 50e-6)) + 1_500_000 + int(rng.exponential(400_000))
+        last = max(last + 1, host)
+        frame = enc.encode("KF_RAW_SAMPLE", time_boot_us=dev_us, sample_counter=int(counters[k]), acc_z=1000, flags=8)
+        if k % 200 == 0:  # once a second: a TIMESYNC answer (round trip 3 ms + jitter) and a unit status
+            rtt = 3_000_000 + int(rng.exponential(300_000))
+            frame += enc.encode("TIMESYNC", tc1=dev_us * 1000, ts1=last - rtt)
+            frame += enc.encode("KF_UNIT_STATUS", time_boot_us=dev_us, firmware_version=(1 << 24) | (2 << 16),
+                                raw_rate_requested=200.0, frames_dropped=3, dialect_hash=0)
+        reads.append((last, frame))
+    with RecordingWriter(path, head) as w:
+        for a in range(0, len(reads), 50):
+            w.rx(0, reads[a:a + 50])
+    return path
+
+
+def test_stats_recover_known_values(synthetic):
+    r = stats.compute(decode_file(synthetic))
+    (s,) = r["streams"]
+    ticks = 39  # k % 200 == 0 for k < 8000, minus the lost k = 5000
+    assert s["frames_ok"] == 8000 - 3 + 2 * ticks and s["crc_errors"] == 0
+    (u,) = s["units"]
+    assert u["sysid"] == 3 and u["firmware_version"] == "1.2.0" and u["dialect_match"] is False
+    m = u["messages"]["KF_RAW_SAMPLE"]
+    assert m["count"] == 7997 and m["samples_lost"] == 3 and m["resets"] == 0 and m["stride"] == 1
+    assert m["requested_hz"] == 200.0
+    assert m["rate_hz"] == pytest.approx(7996 / 39.995, rel=1e-9)  # received frames per unit second
+    clock = u["clock"]
+    assert abs(clock["drift_ppm"] - 50) < 2.0
+    assert clock["offset_s"] == pytest.approx(0.25 + 0.0015, abs=3e-4)
+    lat = u["latency"]
+    assert 3.0 <= lat["timesync_rtt_ms"]["min"] < 3.1 and lat["timesync_rtt_ms"]["count"] == ticks
+    assert lat["one_way_estimate_ms"] == pytest.approx(1.5 + clock["delay_above_min_ms"]["median"], abs=0.05)
+    assert u["unit_reported"]["frames_dropped"] == 3
