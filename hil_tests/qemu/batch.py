@@ -66,8 +66,9 @@ def write_generated(text: str, filename: str) -> Path:
     d = cache_dir("generated", tag)
     path = d / filename
     if not path.is_file() or path.read_text() != text:
-        tmp = d / (filename + ".tmp")
-        tmp.write_text(text)
+        fd, tmp = tempfile.mkstemp(dir=d, prefix=".tmp-")   # unique: parallel writers
+        with os.fdopen(fd, "w") as f:
+            f.write(text)
         os.replace(tmp, path)
     return path
 

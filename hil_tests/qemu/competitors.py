@@ -137,7 +137,9 @@ def motion_sources() -> tuple[Path, Path]:
     # the .c includes the header from its own directory: copy the header next to it
     sibling = cpath.parent / "kf_motion.h"
     if not sibling.is_file() or sibling.read_text() != header:
-        sibling.write_text(header)
+        tmp = sibling.with_name(f".kf_motion.h.{os.getpid()}")
+        tmp.write_text(header)
+        os.replace(tmp, sibling)
     return cpath, hpath.parent
 
 
