@@ -99,8 +99,10 @@ def independent_sim() -> dict:
 
 
 def run(args) -> int:
-    res = {"worked_example": worked_example(), "magnetometer_simulated": mag_simulated(args.runs),
-           "independent_simulator": independent_sim()}
+    from rich.console import Console
+    with Console(stderr=True).status("calibration benchmark: worked example, simulated magnetometers"):
+        res = {"worked_example": worked_example(), "magnetometer_simulated": mag_simulated(args.runs),
+               "independent_simulator": independent_sim()}
     if args.json:
         print(json.dumps(res))
         return 0

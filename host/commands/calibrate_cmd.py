@@ -27,7 +27,7 @@ G_STANDARD = 9.80665  # m/s²
 
 def register(subparsers) -> None:
     p = subparsers.add_parser("calibrate", help="calibrate a unit's accelerometer, gyroscope or magnetometer",
-                              description=__doc__.split("\n\n")[0])
+                              description=__doc__.split("\n\n")[0].replace("``", ""))
     sub = p.add_subparsers(dest="sensor", metavar="SENSOR", parser_class=type(p))
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
 

@@ -26,7 +26,7 @@ from kinefuse.host.kinematics import joint   # light (numpy); the heavy modules 
 
 def register(subparsers) -> None:
     p = subparsers.add_parser("report", help="clinical joint-angle reports (knee step-up, elbow)",
-                              description=__doc__.split("\n\n")[0])
+                              description=__doc__.split("\n\n")[0].replace("``", ""))
     sub = p.add_subparsers(dest="joint", metavar="JOINT", parser_class=type(p))
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
 

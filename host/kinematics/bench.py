@@ -119,9 +119,11 @@ def independent_gait() -> dict:
 
 
 def run(args) -> int:
-    res = {"misalignment_study": misalignment_study(), "seed001_calibration_posture": seed001_errata(),
-           "knee_step_up": knee_rmse(args.runs, args.misalign, args.posture),
-           "independent_gait": independent_gait()}
+    from rich.console import Console
+    with Console(stderr=True).status("joint-angle benchmark: misalignment study, simulated step-ups, gait"):
+        res = {"misalignment_study": misalignment_study(), "seed001_calibration_posture": seed001_errata(),
+               "knee_step_up": knee_rmse(args.runs, args.misalign, args.posture),
+               "independent_gait": independent_gait()}
     if args.json:
         print(json.dumps(res))
         return 0

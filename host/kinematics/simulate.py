@@ -222,3 +222,19 @@ def knee_protocol(*, seed: int = 0, misalign_deg: float = 10.0, posture_deg: flo
         out.lying[seg] = static_posture(post[f"lying_{seg}"], q_SB, 10.0, fs, rng=rng, **kw)
         out.mag[seg] = tumble(60.0, fs, rng=rng, **kw)
     return out
+
+
+def elbow_flexion(seed: int = 0, n_cycles: int = 6, period_s: float = 2.5, rest_s: float = 3.0):
+    """Seed-002-like elbow: arm still (tilted 10°, heading 20°), forearm flexing 0→90° about the
+    arm's X axis for ``n_cycles`` cycles between rests; raw IMU recordings with gyro biases.
+    Returns (arm Recording, forearm Recording, true flexion in degrees)."""
+    rng = np.random.default_rng(seed)
+    t = np.arange(0, 2 * rest_s + n_cycles * period_s, 0.01)
+    ph = np.clip((t - rest_s) / period_s, 0, n_cycles)
+    flex = np.radians(45) * (1 - np.cos(2 * np.pi * ph))
+    q_arm = Q.mul(Q.elementary("Z", np.radians(20)), Q.elementary("X", np.radians(-10)))
+    q_arm = np.broadcast_to(q_arm, (len(t), 4))
+    q_fore = Q.mul(q_arm, Q.elementary("X", flex))
+    arm = imu(t, q_arm, rng=rng, gyr_bias=[0.01, -0.02, 0.01], name="sim-arm")
+    fore = imu(t, q_fore, rng=rng, gyr_bias=[-0.01, 0.0, 0.02], name="sim-forearm")
+    return arm, fore, np.degrees(flex)

@@ -71,8 +71,7 @@ def test_report_knee_errors(run, files):
 
 
 def test_report_elbow(run, tmp_path):
-    from test_kinematics_report import _elbow_recordings
-    arm, fore, _ = _elbow_recordings()
+    arm, fore, _ = simulate.elbow_flexion()
     kinefuse_csv.write(str(tmp_path / "arm.csv"), arm)
     kinefuse_csv.write(str(tmp_path / "fore.csv"), fore)
     code, out, err = run("report", "elbow", "--arm", tmp_path / "arm.csv", "--forearm", tmp_path / "fore.csv",

@@ -103,17 +103,7 @@ def test_report_files(tmp_path, calibrated):
 
 
 def _elbow_recordings(seed=0):
-    """Arm still-ish, forearm flexing 0→90° about the arm X axis, 6 cycles, raw IMU data."""
-    rng = np.random.default_rng(seed)
-    t = np.arange(0, 3 + 6 * 2.5 + 3, 0.01)
-    ph = np.clip((t - 3) / 2.5, 0, 6)
-    flex = np.radians(45) * (1 - np.cos(2 * np.pi * ph))
-    q_arm = Q.mul(Q.elementary("Z", np.radians(20)), Q.elementary("X", np.radians(-10)))
-    q_arm = np.broadcast_to(q_arm, (len(t), 4))
-    q_fore = Q.mul(q_arm, Q.elementary("X", flex))
-    arm = simulate.imu(t, q_arm, rng=rng, gyr_bias=[0.01, -0.02, 0.01])
-    fore = simulate.imu(t, q_fore, rng=rng, gyr_bias=[-0.01, 0.0, 0.02])
-    return arm, fore, np.degrees(flex)
+    return simulate.elbow_flexion(seed)
 
 
 def test_elbow_pipeline_flexion():
