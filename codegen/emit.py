@@ -6,15 +6,15 @@ C and the model are printed from identical statements in identical order.
 from __future__ import annotations
 
 import inspect
-import os
 import textwrap
 
-from kinefuse.codegen.estimator import Estimator, Interface, Var, initial_state
+from kinefuse.codegen.estimator import Estimator, Interface, Var
 from kinefuse.codegen.fixed import FixedLowering
 from kinefuse.codegen.float32 import Float32Lowering
 from kinefuse.codegen.ir import BOOL, INT, REAL, Graph, Node
-from kinefuse.codegen.render import (Assign, F32, Int, Var as EVar, render_c, render_c_assign,
-                                     render_py, render_py_assign)
+from kinefuse.codegen.render import (C_TYPES, C_ZERO, Assign, F32, Int, blocks,
+                                     escaping, expr_names, render_c, render_c_assign, render_py,
+                                     render_py_assign)
 
 SYSTEMS = {"f32": Float32Lowering, "q": FixedLowering}
 SYSTEM_TITLES = {
@@ -44,6 +44,7 @@ class Lowered:
         self.names: dict[int, str] = {}
         self.cls: dict[int, int] = {}
         self.body: list[tuple[Node, list[Assign]]] = []
+        self.guard_name: dict[int, str | None] = {}
         for n in graph.nodes:
             if n.op == "const":
                 self.cls[n.id] = CLASS_CONST
@@ -53,7 +54,9 @@ class Lowered:
                 self.cls[n.id] = _LEAF_CLASS[n.kind]
                 self.names[n.id] = leaf_name(n.kind, self.vars[(n.kind, n.name)], n.index)
                 continue
-            self.cls[n.id] = max(self.cls[a.id] for a in n.args)
+            deps = list(n.args) + ([n.guard] if n.guard is not None else [])
+            self.cls[n.id] = max(self.cls[a.id] for a in deps)
+            self.guard_name[n.id] = self.names[n.guard.id] if n.guard is not None else None
             self.names[n.id] = f"t{n.id}"
             r = self.sys.lower(n, self.names)
             if isinstance(r, str):
@@ -76,6 +79,14 @@ class Lowered:
 
     def op_summary(self) -> str:
         return self.g.op_summary()
+
+    def result_refs(self) -> set[str]:
+        return set().union(*(expr_names(self.result_expr(r)) for r in self.g.results)) \
+            if self.g.results else set()
+
+    def zero_expr(self, kind: str):
+        """The value of a guarded statement whose region did not run."""
+        return {"f32": F32(0.0), "i32": Int(0), "i64": Int(0), "bool": Int(0)}.get(kind)
 
 
 # =========================================================================================
@@ -143,7 +154,7 @@ def c_header(lo: Lowered, source_file: str) -> str:
     lines += _wrap_comment(est.__doc__ or "")
     lines += [" */", f"#ifndef {guard}", f"#define {guard}", "", "#include <stdint.h>",
               "", f'#include "kf_{est.inputs.name}_{lo.system}.h"', ""]
-    lines.append("/* Parameters; set them with " + P + "_default_params() and change what you need. */")
+    lines.append(f"/* Parameters; set them with {P}_default_params() and change what you need. */")
     lines.append("typedef struct {")
     for p in est.params:
         lines.append(_c_field(lo, "param", p.as_var(), p.default))
@@ -156,14 +167,14 @@ def c_header(lo: Lowered, source_file: str) -> str:
     lines += [_c_field(lo, "output", v) for v in est.outputs]
     lines += [f"}} {P}_output;", ""]
     lines += [
-        f"/* Fill p with the documented defaults. */",
+        "/* Fill p with the documented defaults. */",
         f"void {P}_default_params({P}_params *p);", "",
-        f"/* Initialise the state with parameters p.  Returns 0, or -(i + 1) when parameter i is",
-        f" * out of its range (NaN included); the defaults are used then. */",
+        "/* Initialise the state with parameters p.  Returns 0, or -(i + 1) when parameter i is",
+        " * out of its range (NaN included); the defaults are used then. */",
         f"int {P}_init({P}_state *s, const {P}_params *p);", "",
-        f"/* One step: consume one input record, update the state, write the outputs. */",
+        "/* One step: consume one input record, update the state, write the outputs. */",
         f"void {P}_update({P}_state *s, const {lo.input_struct} *in, {P}_output *out);", "",
-        f"/* n steps over arrays of records (the host's batch entry point). */",
+        "/* n steps over arrays of records (the host's batch entry point). */",
         f"void {P}_run({P}_state *s, const {lo.input_struct} *in, {P}_output *out, uint32_t n);",
         "", f"#endif /* {guard} */", ""]
     return "\n".join(lines)
@@ -191,7 +202,6 @@ def _c_state_init(lo: Lowered, var: Var) -> list[str]:
 
 
 def _c_param_check(lo: Lowered, p, i: int) -> str:
-    var = p.as_var()
     if lo.system == "f32":
         a, b = render_c(F32(p.lo)), render_c(F32(p.hi))
     else:
@@ -243,9 +253,18 @@ def c_source(lo: Lowered, source_file: str) -> str:
         if var.type == BOOL:
             src = f"({src} != 0u)"
         lines.append(f"    const {ctype} {lo.names[n.id]} = {src};")
-    for n, stmts in lo.body:
-        for s in stmts:
-            lines.append(render_c_assign(s))
+    blks = blocks([(lo.guard_name[n.id], stmts) for n, stmts in lo.body])
+    esc = escaping(blks, lo.result_refs())
+    for guard, stmts in blks:
+        if guard is None:
+            lines += [render_c_assign(s) for s in stmts]
+            continue
+        for s in stmts:   # values used after the region: declared before it, 0 if it is skipped
+            if s.name in esc:
+                lines.append(f"    {C_TYPES[s.kind]} {s.name} = {C_ZERO[s.kind]};")
+        lines.append(f"    if ({guard}) {{")
+        lines += [render_c_assign(s, "        ", declare=s.name not in esc) for s in stmts]
+        lines.append("    }")
     for r in lo.g.results:
         var = lo.vars[(r.kind, r.name)]
         dst = ("s->" if r.kind == "state" else "out->") + var.name + (
@@ -278,6 +297,8 @@ def py_model(lo: Lowered, source_file: str) -> str:
     for n, _ in lo.body:
         if lo.cls[n.id] == CLASS_STATE:
             users_in_loop.update(a.id for a in n.args)
+            if n.guard is not None:
+                users_in_loop.add(n.guard.id)
     for r in lo.g.results:
         if lo.cls[r.node.id] == CLASS_STATE or r.kind == "state":
             users_in_loop.add(r.node.id)
@@ -285,7 +306,40 @@ def py_model(lo: Lowered, source_file: str) -> str:
     hoisted, vector, loop = [], [], []
     for n, stmts in lo.body:
         c = lo.cls[n.id]
-        (hoisted if c <= CLASS_PARAM else vector if c == CLASS_INPUT else loop).append(stmts)
+        (hoisted if c <= CLASS_PARAM else vector if c == CLASS_INPUT else loop).append(
+            (lo.guard_name[n.id], stmts))
+    # names used after the conditional region that computed them (as in the C)
+    esc = escaping(blocks([(lo.guard_name[n.id], st) for n, st in lo.body]), lo.result_refs())
+    zero_py = {"f32": "K_ZERO", "i32": "0", "i64": "0", "bool": "False", "dyn": "(0, 0)"}
+
+    def masked(items, vector: bool, indent: str) -> list[str]:
+        """Regions outside the loop run unconditionally; their escaping values are then set to
+        0 where the region's condition is false, exactly what the C reads."""
+        out = []
+        for guard, stmts in items:
+            for st in stmts:
+                out.append(render_py_assign(st, vector, consts, indent))
+                if guard is not None and st.name in esc:
+                    z = zero_py[st.kind]
+                    if st.kind == "dyn":
+                        out.append(f"{indent}{st.name} = tuple(_where({guard}, c_, 0) for c_ in {st.name})"
+                                   if vector else f"{indent}{st.name} = {st.name} if {guard} else (0, 0)")
+                    elif vector:
+                        out.append(f"{indent}{st.name} = _where({guard}, {st.name}, {z})")
+                    else:
+                        out.append(f"{indent}{st.name} = {st.name} if {guard} else {z}")
+        return out
+
+    def looped(items, indent: str) -> list[str]:
+        out = []
+        for guard, stmts in blocks(items):
+            if guard is None:
+                out += [render_py_assign(st, False, consts, indent) for st in stmts]
+                continue
+            out += [f"{indent}{st.name} = {zero_py[st.kind]}" for st in stmts if st.name in esc]
+            out.append(f"{indent}if {guard}:")
+            out += [render_py_assign(st, False, consts, indent + "    ") for st in stmts]
+        return out
 
     ind1, ind2 = "    ", "        "
     code = []
@@ -293,27 +347,26 @@ def py_model(lo: Lowered, source_file: str) -> str:
     for n in lo.g.inputs("param"):
         var = lo.vars[(n.kind, n.name)]
         code.append(f"{ind1}{lo.names[n.id]} = params[{var.name!r}][{n.index}]")
-    for stmts in hoisted:
-        code += [render_py_assign(s, False, consts, ind1) for s in stmts]
+    code += masked(hoisted, False, ind1)
     # inputs (columns) and input-only nodes, all samples at once
     for n in lo.g.inputs("input"):
         var = lo.vars[(n.kind, n.name)]
         code.append(f"{ind1}{lo.names[n.id]} = inputs[{var.name!r}][{n.index}]")
-    for stmts in vector:
-        code += [render_py_assign(s, True, consts, ind1) for s in stmts]
+    code += masked(vector, True, ind1)
     # per-sample extraction of vector values the loop needs
     extract = []
     for n in lo.g.nodes:
         if lo.cls.get(n.id) == CLASS_INPUT and n.id in users_in_loop and n.op != "const":
             name = lo.names[n.id]
             if name.startswith("t") or name.startswith("u_"):
-                extract.append(name)
+                extract.append((name, n.type))
     extract = sorted(set(extract))
-    for name in extract:
-        if is_f32:
+    for name, typ in extract:
+        if is_f32 and typ == REAL:
             code.append(f"{ind1}L_{name} = _f32_list({name}, n)")
         else:
             code.append(f"{ind1}L_{name} = _int_list({name}, n)")
+    extract = [e[0] for e in extract]
     # state
     for v in est.state:
         code.append(f"{ind1}_st = state[{v.name!r}]")
@@ -329,8 +382,7 @@ def py_model(lo: Lowered, source_file: str) -> str:
     code.append(f"{ind1}for k in range(n):")
     for name in extract:
         code.append(f"{ind2}{name} = L_{name}[k]")
-    for stmts in loop:
-        code += [render_py_assign(s, False, consts, ind2) for s in stmts]
+    code += looped(loop, ind2)
     for r in out_loop:
         code.append(f"{ind2}A_{r.name}{r.index}({render_py(lo.result_expr(r), False, consts)})")
     st_results = lo.g.results_of("state")
@@ -364,7 +416,7 @@ def py_model(lo: Lowered, source_file: str) -> str:
             f"NAME = {est.name!r}", f"SYSTEM = {lo.system!r}", "_where = np.where", ""]
     head += model_metadata(lo)
     if is_f32:
-        head += ["F = np.float32", ""]
+        head += ["F = np.float32", "K_ZERO = F(0.0)", ""]
         for k, v in sorted(consts.items()):
             head.append(f"{k} = F(float.fromhex({v.hex()!r}))" if v == v else f"{k} = F('nan')")
     head += ["", "",

@@ -25,8 +25,8 @@ import math
 import numpy as np
 
 from kinefuse.codegen.ir import BOOL, INT, REAL, Graph, Node
-from kinefuse.codegen.render import (Assign, Bin, Call, Field, Int, Narrow, Rsh, RshRound, Sel,
-                                     Shl, Un, Var, Wide)
+from kinefuse.codegen.render import (Assign, Bin, Call, Int, Narrow, Rsh, RshRound, Sel, Shl, Un,
+                                     Var, Wide)
 from kinefuse.codegen.runtime import q as qrt
 
 NAME = "q"

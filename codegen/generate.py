@@ -3,7 +3,6 @@ check that the committed files are up to date (`kinefuse codegen --check`, run i
 from __future__ import annotations
 
 import functools
-import shutil
 from pathlib import Path
 
 from kinefuse.codegen import estimators

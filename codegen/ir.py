@@ -77,10 +77,10 @@ COMPARE = ("lt", "le", "eq")
 class Node:
     """One SSA value.  Identity is the object; structural equality is :meth:`key`."""
 
-    __slots__ = ("id", "op", "args", "type", "value", "attrs", "loc")
+    __slots__ = ("id", "op", "args", "type", "value", "attrs", "loc", "guard")
 
     def __init__(self, id: int, op: str, args: tuple["Node", ...], type: str,
-                 value=None, attrs: tuple = (), loc: str = ""):
+                 value=None, attrs: tuple = (), loc: str = "", guard: "Node | None" = None):
         self.id = id
         self.op = op
         self.args = args
@@ -88,6 +88,9 @@ class Node:
         self.value = value   # const: the value (float/int/bool); input: None
         self.attrs = attrs   # ('kind', 'name', index) for inputs, (lo, hi) for assume
         self.loc = loc       # "file.py:line" of the estimator code that created it
+        # bool node: the operation only runs when it holds (a conditional region); its value is
+        # 0 / false otherwise, in every number system
+        self.guard = guard
 
     def key(self):
         """Structural key used for common-subexpression elimination."""
@@ -98,7 +101,8 @@ class Node:
         if self.op == "const" and self.type == REAL:
             # distinguish 0.0 and -0.0, and NaNs (never merged: NaN != NaN)
             value = (float(value).hex(),)
-        return (self.op, self.type, args, value, self.attrs)
+        return (self.op, self.type, args, value, self.attrs,
+                self.guard.id if self.guard is not None else None)
 
     # -- input attributes ---------------------------------------------------------------
     @property
@@ -120,7 +124,8 @@ class Node:
             return f"%{self.id}=input({self.kind}.{self.name}[{self.index}]:{self.type})"
         a = ", ".join(f"%{x.id}" for x in self.args)
         extra = f" {self.attrs}" if self.attrs else ""
-        return f"%{self.id}={self.op}({a}){extra}:{self.type}"
+        g = f" if %{self.guard.id}" if self.guard is not None else ""
+        return f"%{self.id}={self.op}({a}){extra}:{self.type}{g}"
 
 
 @dataclasses.dataclass(frozen=True)
@@ -140,11 +145,16 @@ class Graph:
         self.nodes: list[Node] = []
         self.results: list[Result] = []
         self._next_id = 0
+        self.guards: list[Node] = []   # stack of open conditional regions (tracing)
 
     # -- construction ---------------------------------------------------------------------
     def add(self, op: str, args: Iterable[Node] = (), type: str | None = None, value=None,
-            attrs: tuple = (), loc: str = "") -> Node:
+            attrs: tuple = (), loc: str = "", guard: "Node | None | bool" = True) -> Node:
+        """Append a node.  guard=True: the innermost open conditional region (none for leaves);
+        a Node or None: exactly that."""
         args = tuple(args)
+        if guard is True:
+            guard = self.guards[-1] if (self.guards and op not in ("const", "input")) else None
         info = OPS.get(op)
         if info is None:
             raise ValueError(f"unknown operation {op!r}")
@@ -154,7 +164,9 @@ class Graph:
         elif len(args) != info.arity:
             raise ValueError(f"{op} takes {info.arity} arguments, got {len(args)}")
         rtype = _result_type(op, info, args, type)
-        node = Node(self._next_id, op, args, rtype, value, attrs, loc)
+        if guard is not None and guard.type != BOOL:
+            raise TypeError("a guard must be a bool value")
+        node = Node(self._next_id, op, args, rtype, value, attrs, loc, guard)
         self._next_id += 1
         self.nodes.append(node)
         return node
@@ -210,7 +222,7 @@ class Graph:
         """Verify topological order and that results reference nodes of this graph."""
         seen = set()
         for n in self.nodes:
-            for a in n.args:
+            for a in n.args + ((n.guard,) if n.guard is not None else ()):
                 if a.id not in seen:
                     raise AssertionError(f"{n!r} uses %{a.id} before its definition")
             seen.add(n.id)

@@ -67,15 +67,21 @@ def eval_op(op: str, vals: list, attrs: tuple = ()):
     raise ValueError(f"cannot evaluate {op}")
 
 
+def zero_of(type_: str):
+    return {REAL: 0.0, INT: 0, BOOL: False}[type_]
+
+
 def evaluate(g: Graph, env: dict[tuple[str, str, int], object]) -> dict[tuple[str, str, int], object]:
-    """Evaluate the graph in float64.  env maps (kind, name, index) of inputs to values;
-    returns (kind, name, index) of results to values."""
+    """Evaluate the graph in float64 (a guarded node whose guard is false is 0 / false).
+    env maps (kind, name, index) of inputs to values; returns (kind, name, index) of results."""
     val: dict[int, object] = {}
     for n in g.nodes:
         if n.op == "const":
             val[n.id] = n.value
         elif n.op == "input":
             val[n.id] = env[n.attrs]
+        elif n.guard is not None and not val[n.guard.id]:
+            val[n.id] = zero_of(n.type)
         else:
             val[n.id] = eval_op(n.op, [val[a.id] for a in n.args], n.attrs)
     return {(r.kind, r.name, r.index): val[r.node.id] for r in g.results}
@@ -83,17 +89,29 @@ def evaluate(g: Graph, env: dict[tuple[str, str, int], object]) -> dict[tuple[st
 
 # -- rebuilding ----------------------------------------------------------------------------
 
+_MAP: dict[int, Node] = {}
+
+
 def _copy(ng: Graph, n: Node, args: tuple[Node, ...]) -> Node:
     leaf = n.op in ("const", "input")
-    return ng.add(n.op, args, type=n.type if leaf else None, value=n.value, attrs=n.attrs, loc=n.loc)
+    guard = _MAP.get(n.guard.id) if n.guard is not None else None
+    if guard is not None and guard.op == "const":
+        guard = None if guard.value else guard   # always true: no region
+    return ng.add(n.op, args, type=n.type if leaf else None, value=n.value, attrs=n.attrs,
+                  loc=n.loc, guard=guard)
 
 
 def rebuild(g: Graph, fn: Callable[[Graph, Node, tuple[Node, ...]], Node]) -> Graph:
     """New graph whose node for each old node is fn(new_graph, old_node, new_args)."""
+    global _MAP
     ng = Graph(g.name)
     m: dict[int, Node] = {}
-    for n in g.nodes:
-        m[n.id] = fn(ng, n, tuple(m[a.id] for a in n.args))
+    saved, _MAP = _MAP, m
+    try:
+        for n in g.nodes:
+            m[n.id] = fn(ng, n, tuple(m[a.id] for a in n.args))
+    finally:
+        _MAP = saved
     for r in g.results:
         ng.set_result(r.kind, r.name, r.index, m[r.node.id])
     return ng
@@ -117,6 +135,8 @@ def fold_constants(g: Graph) -> Graph:
         if n.op in ("const", "input"):
             return _copy(ng, n, args)
         op = n.op
+        if n.guard is not None and m_guard_false(n):
+            return ng.const(zero_of(n.type), n.type)   # a region that never runs
         if all(a.op == "const" for a in args):
             v = eval_op(op, [a.value for a in args], n.attrs)
             t = n.type
@@ -153,8 +173,14 @@ def fold_constants(g: Graph) -> Graph:
     return rebuild(g, fn)
 
 
+def m_guard_false(n: Node) -> bool:
+    g = _MAP.get(n.guard.id)
+    return g is not None and g.op == "const" and not g.value
+
+
 def cse(g: Graph) -> Graph:
-    """Merge structurally identical nodes (commutative operands sorted)."""
+    """Merge structurally identical nodes (commutative operands sorted).  A node in a conditional
+    region also reuses an identical unconditional node computed before it."""
     seen: dict[tuple, Node] = {}
 
     def fn(ng: Graph, n: Node, args: tuple[Node, ...]) -> Node:
@@ -163,6 +189,8 @@ def cse(g: Graph) -> Graph:
         if n.op == "const" and n.type == REAL and n.value != n.value:
             return new  # NaN constants are never merged
         old = seen.get(k)
+        if old is None and new.guard is not None:
+            old = seen.get(k[:-1] + (None,))
         if old is not None:
             ng.nodes.pop()   # drop the duplicate we just appended
             return old
@@ -178,14 +206,21 @@ def dce(g: Graph, keep_inputs: bool = True) -> Graph:
     for n in reversed(g.nodes):
         if n.id in live:
             live.update(a.id for a in n.args)
+            if n.guard is not None:
+                live.add(n.guard.id)
     if keep_inputs:
         live.update(n.id for n in g.nodes if n.op == "input")
 
+    global _MAP
     ng = Graph(g.name)
     m: dict[int, Node] = {}
-    for n in g.nodes:
-        if n.id in live:
-            m[n.id] = _copy(ng, n, tuple(m[a.id] for a in n.args))
+    saved, _MAP = _MAP, m
+    try:
+        for n in g.nodes:
+            if n.id in live:
+                m[n.id] = _copy(ng, n, tuple(m[a.id] for a in n.args))
+    finally:
+        _MAP = saved
     for r in g.results:
         ng.set_result(r.kind, r.name, r.index, m[r.node.id])
     return ng

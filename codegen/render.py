@@ -183,11 +183,59 @@ def render_c(e: Expr) -> str:
     raise TypeError(e)
 
 
-def render_c_assign(s: Assign, indent: str = "    ") -> str:
-    line = f"{indent}const {C_TYPES[s.kind]} {s.name} = {render_c(s.expr)};"
+def render_c_assign(s: Assign, indent: str = "    ", declare: bool = True) -> str:
+    lhs = f"const {C_TYPES[s.kind]} {s.name}" if declare else s.name
+    line = f"{indent}{lhs} = {render_c(s.expr)};"
     if s.comment:
         line += f"  /* {s.comment} */"
     return line
+
+
+C_ZERO = {"f32": "0.0f", "i32": "0", "i64": "0", "bool": "0", "dyn": "{0, 0}"}
+
+
+def expr_names(e) -> set[str]:
+    """Names of the variables an expression reads."""
+    if isinstance(e, Var):
+        return {e.name}
+    out: set[str] = set()
+    for f in dataclasses.fields(e):
+        v = getattr(e, f.name)
+        if isinstance(v, tuple):
+            for x in v:
+                if not isinstance(x, (int, float, str)):
+                    out |= expr_names(x)
+        elif not isinstance(v, (int, float, str)) and v is not None:
+            out |= expr_names(v)
+    return out
+
+
+def blocks(items):
+    """Group (guard_name | None, [Assign]) items into maximal runs with the same guard:
+    [(guard, [Assign, ...]), ...]."""
+    out: list[tuple[str | None, list[Assign]]] = []
+    for guard, stmts in items:
+        if out and out[-1][0] == guard:
+            out[-1][1].extend(stmts)
+        else:
+            out.append((guard, list(stmts)))
+    return out
+
+
+def escaping(blks, extra_refs: set[str]) -> set[str]:
+    """Names assigned inside a guarded block and read outside it (or in extra_refs)."""
+    all_reads = [set().union(*(expr_names(s.expr) for s in st)) if st else set() for _, st in blks]
+    out: set[str] = set()
+    for i, (guard, st) in enumerate(blks):
+        if guard is None:
+            continue
+        assigned = {s.name for s in st}
+        outside = set(extra_refs)
+        for j, r in enumerate(all_reads):
+            if j != i:
+                outside |= r
+        out |= assigned & outside
+    return out
 
 
 # -- Python -------------------------------------------------------------------------------------

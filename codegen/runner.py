@@ -129,6 +129,13 @@ class CRunner(ModelInfo):
                          "itemsize": ffi.sizeof(ctype)})
 
     def run_encoded(self, e: Encoded) -> dict[str, np.ndarray]:
+        call, collect = self.prepare(e)
+        call()
+        return collect()
+
+    def prepare(self, e: Encoded):
+        """(call, collect): `call()` runs the whole recording in one C call on records packed
+        beforehand (what `kinefuse bench speed` times); `collect()` unpacks the outputs."""
         ffi, lib, P = self.ffi, self.lib, self.P
         in_dt = self._dtype(self.in_type, "input")
         out_dt = self._dtype(f"{P}_output", "output")
@@ -141,22 +148,30 @@ class CRunner(ModelInfo):
         for name, size, typ in self.fields["param"]:
             setattr(params, name, e.params[name].item())
         state = ffi.new(f"{P}_state *")
-        status = getattr(lib, f"{P}_init")(state, params)
-        if status != 0:
-            raise ValueError(f"{self.name}: parameter {-status - 1} rejected by {P}_init")
-        getattr(lib, f"{P}_run")(state, ffi.cast(f"{self.in_type} *", ffi.from_buffer(rec)),
-                                 ffi.cast(f"{P}_output *", ffi.from_buffer(out, require_writable=True)),
-                                 e.n)
-        res = {}
-        for name, size, typ in self.fields["output"]:
-            col = out[name].reshape(e.n, size)
-            if typ == "real":
-                res[name] = col.astype(np.float32 if self.system == "f32" else np.int64)
-            elif typ == "bool":
-                res[name] = col.astype(bool)
-            else:
-                res[name] = col.astype(np.int64)
-        return res
+        init, run_fn = getattr(lib, f"{P}_init"), getattr(lib, f"{P}_run")
+        in_ptr = ffi.cast(f"{self.in_type} *", ffi.from_buffer(rec))
+        out_ptr = ffi.cast(f"{P}_output *", ffi.from_buffer(out, require_writable=True))
+
+        def call():
+            status = init(state, params)
+            if status != 0:
+                raise ValueError(f"{self.name}: parameter {-status - 1} rejected by {P}_init")
+            run_fn(state, in_ptr, out_ptr, e.n)
+
+        def collect():
+            res = {}
+            for name, size, typ in self.fields["output"]:
+                col = out[name].reshape(e.n, size)
+                if typ == "real":
+                    res[name] = col.astype(np.float32 if self.system == "f32" else np.int64)
+                elif typ == "bool":
+                    res[name] = col.astype(bool)
+                else:
+                    res[name] = col.astype(np.int64)
+            return res
+
+        call.keep = (rec, out, params, state)   # keep buffers alive with the closure
+        return call, collect
 
 
 _RUNNERS: dict[tuple[str, str], ModelInfo] = {}

@@ -269,5 +269,33 @@ def inc_if(counter, cond):
     return min(counter + 1, INT32_MAX) if cond else counter
 
 
+class when:
+    """A conditional region: ``with when(cond): ...``.
+
+    Operations recorded inside only run when cond holds (an ``if`` in the generated C and in the
+    models); a value computed inside reads as 0 (false) when cond does not hold.  Use such values
+    under their condition only, e.g. ``select(cond, inside_value, other)`` or ``cond & inside``:
+    the float64 reference (plain Python) computes the region unconditionally.  Regions only change
+    cost, never results.  They nest.
+    """
+
+    def __init__(self, cond):
+        self.cond = cond
+        self.g = cond.g if isinstance(cond, Sym) else None
+
+    def __enter__(self):
+        if self.g is not None:
+            c = self.cond.n
+            if self.g.guards:   # nested: the conjunction, computed in the outer region
+                c = self.g.add("and", [self.g.guards[-1], c], loc=_loc())
+            self.g.guards.append(c)
+        return self
+
+    def __exit__(self, *exc):
+        if self.g is not None:
+            self.g.guards.pop()
+        return False
+
+
 def is_traced(*vals) -> bool:
     return _first_sym(*vals) is not None

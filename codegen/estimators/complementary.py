@@ -9,7 +9,7 @@ from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISE
                                                 initial_quaternion, integrate_gyro,
                                                 tilt_correction)
 from kinefuse.codegen.linalg import Quat, vselect
-from kinefuse.codegen.scalar import all_of, inc_if, logical_and, logical_not, logical_or, select
+from kinefuse.codegen.scalar import all_of, inc_if, logical_and, logical_not, logical_or, select, when
 
 
 class Complementary(Estimator):
@@ -51,13 +51,17 @@ class Complementary(Estimator):
         k_acc = chk.dt / (p.tau_acc + chk.dt)
         q_tilt = vselect(use_acc, tilt_correction(q_pred, a, k_acc), q_pred)
 
-        m, m2 = chk.mag.normalized(1e-6)
+        with when(chk.use_mag):   # the heading correction runs only when a reading arrived
+            m, m2 = chk.mag.normalized(1e-6)
+            k_mag = chk.dt / (p.tau_mag + chk.dt)
+            q_head = heading_correction(q_tilt, m, k_mag)
         use_mag = logical_and(chk.use_mag, m2 >= MAG_NORM_MIN_SQ)
-        k_mag = chk.dt / (p.tau_mag + chk.dt)
-        q_new = vselect(use_mag, heading_correction(q_tilt, m, k_mag), q_tilt)
+        q_new = vselect(use_mag, q_head, q_tilt)
 
-        q_init, init_ok = initial_quaternion(chk.acc, chk.mag, chk.use_mag)
-        do_init = all_of(chk.ok, logical_not(x.initialised), init_ok)
+        start = logical_and(chk.ok, logical_not(x.initialised))
+        with when(start):   # only the first valid sample pays for the initial orientation
+            q_init, init_ok = initial_quaternion(chk.acc, chk.mag, chk.use_mag)
+        do_init = logical_and(start, init_ok)
         run = logical_and(chk.ok, x.initialised)
         q_next = vselect(do_init, q_init, vselect(run, q_new, q))
         rejected = inc_if(x.rejected, chk.bad)

@@ -9,8 +9,8 @@ import dataclasses
 
 from kinefuse.codegen.estimator import Estimator, Param, Var
 from kinefuse.codegen.linalg import Quat, vselect
-from kinefuse.codegen.scalar import (all_of, assume, clamp, fmax, inc_if, logical_and,
-                                     logical_not, logical_or, select, sqrt)
+from kinefuse.codegen.scalar import (assume, clamp, fmax, inc_if, logical_and, logical_not,
+                                     logical_or, select, sqrt, when)
 from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISED,
                                                 MAG_NORM_MIN_SQ, Q_OUT, Q_STATE, REJECTED,
                                                 SampleCheck, initial_quaternion)
@@ -72,22 +72,23 @@ class Madgwick(Estimator):
                       2.0 * qx * f1 + 2.0 * qy * f2)
 
         # magnetic objective f_b = R(q)^T (b_x, 0, b_z) - m/|m|, reference from the measurement
-        # rotated into the earth frame (eq. 27-28, 45-46)
-        m, m2 = chk.mag.normalized(1e-6)
-        h = q.rotate(m)
-        bx = sqrt(fmax(h.x * h.x + h.y * h.y, 0.0))
-        bz = h.z
-        fb1 = 2.0 * bx * (0.5 - qy * qy - qz * qz) + 2.0 * bz * (qx * qz - w * qy) - m.x
-        fb2 = 2.0 * bx * (qx * qy - w * qz) + 2.0 * bz * (w * qx + qy * qz) - m.y
-        fb3 = 2.0 * bx * (w * qy + qx * qz) + 2.0 * bz * (0.5 - qx * qx - qy * qy) - m.z
-        grad_b = Quat(-2.0 * bz * qy * fb1 + (-2.0 * bx * qz + 2.0 * bz * qx) * fb2
-                      + 2.0 * bx * qy * fb3,
-                      2.0 * bz * qz * fb1 + (2.0 * bx * qy + 2.0 * bz * w) * fb2
-                      + (2.0 * bx * qz - 4.0 * bz * qx) * fb3,
-                      (-4.0 * bx * qy - 2.0 * bz * w) * fb1 + (2.0 * bx * qx + 2.0 * bz * qz) * fb2
-                      + (2.0 * bx * w - 4.0 * bz * qy) * fb3,
-                      (-4.0 * bx * qz + 2.0 * bz * qx) * fb1 + (-2.0 * bx * w + 2.0 * bz * qy) * fb2
-                      + 2.0 * bx * qx * fb3)
+        # rotated into the earth frame (eq. 27-28, 45-46); computed only when a reading arrived
+        with when(chk.use_mag):
+            m, m2 = chk.mag.normalized(1e-6)
+            h = q.rotate(m)
+            bx = sqrt(fmax(h.x * h.x + h.y * h.y, 0.0))
+            bz = h.z
+            fb1 = 2.0 * bx * (0.5 - qy * qy - qz * qz) + 2.0 * bz * (qx * qz - w * qy) - m.x
+            fb2 = 2.0 * bx * (qx * qy - w * qz) + 2.0 * bz * (w * qx + qy * qz) - m.y
+            fb3 = 2.0 * bx * (w * qy + qx * qz) + 2.0 * bz * (0.5 - qx * qx - qy * qy) - m.z
+            grad_b = Quat(-2.0 * bz * qy * fb1 + (-2.0 * bx * qz + 2.0 * bz * qx) * fb2
+                          + 2.0 * bx * qy * fb3,
+                          2.0 * bz * qz * fb1 + (2.0 * bx * qy + 2.0 * bz * w) * fb2
+                          + (2.0 * bx * qz - 4.0 * bz * qx) * fb3,
+                          (-4.0 * bx * qy - 2.0 * bz * w) * fb1 + (2.0 * bx * qx + 2.0 * bz * qz) * fb2
+                          + (2.0 * bx * w - 4.0 * bz * qy) * fb3,
+                          (-4.0 * bx * qz + 2.0 * bz * qx) * fb1 + (-2.0 * bx * w + 2.0 * bz * qy) * fb2
+                          + 2.0 * bx * qx * fb3)
 
         use_acc = a2 >= ACC_NORM_MIN_SQ
         use_mag = logical_and(chk.use_mag, m2 >= MAG_NORM_MIN_SQ)
@@ -101,8 +102,10 @@ class Madgwick(Estimator):
         q_new = (q + qdot.scale(chk.dt)).normalized()
 
         # first valid sample: orientation from gravity and magnetic north (ENU -> Madgwick frame)
-        q_init, init_ok = initial_quaternion(chk.acc, chk.mag, chk.use_mag)
-        do_init = all_of(chk.ok, logical_not(x.initialised), init_ok)
+        start = logical_and(chk.ok, logical_not(x.initialised))
+        with when(start):
+            q_init, init_ok = initial_quaternion(chk.acc, chk.mag, chk.use_mag)
+        do_init = logical_and(start, init_ok)
         run = logical_and(chk.ok, x.initialised)
         q_next = vselect(do_init, enu_to_nwu(q_init), vselect(run, q_new, q))
         t_next = select(run, clamp(x.t_run + chk.dt, 0.0, T_RUN_MAX), x.t_run)

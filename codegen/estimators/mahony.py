@@ -11,7 +11,7 @@ from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISE
                                                 SampleCheck, initial_quaternion, integrate_gyro)
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
 from kinefuse.codegen.scalar import (all_of, assume, clamp, fmax, inc_if, logical_and,
-                                     logical_not, logical_or, select, sqrt)
+                                     logical_not, logical_or, select, sqrt, when)
 
 BIAS_MAX = 0.5   # rad/s: the integral (gyro bias) state is limited to +-28.6 deg/s
 
@@ -60,14 +60,15 @@ class Mahony(Estimator):
         e_acc = a.cross(v)
 
         # magnetic field: reference (0, b_h, b_z) from the measurement in the earth frame
-        m, m2 = chk.mag.normalized(1e-6)
-        h = q.rotate(m)
-        bh = sqrt(fmax(assume(h.x, -1.0, 1.0) * assume(h.x, -1.0, 1.0)
-                       + assume(h.y, -1.0, 1.0) * assume(h.y, -1.0, 1.0), 0.0))
-        wv = q.rotate_inv(Vec3(0.0, bh, assume(h.z, -1.0, 1.0)))
-        wv = Vec3(*(assume(c, -1.0, 1.0) for c in wv))
+        with when(chk.use_mag):
+            m, m2 = chk.mag.normalized(1e-6)
+            h = q.rotate(m)
+            bh = sqrt(fmax(assume(h.x, -1.0, 1.0) * assume(h.x, -1.0, 1.0)
+                           + assume(h.y, -1.0, 1.0) * assume(h.y, -1.0, 1.0), 0.0))
+            wv = q.rotate_inv(Vec3(0.0, bh, assume(h.z, -1.0, 1.0)))
+            wv = Vec3(*(assume(c, -1.0, 1.0) for c in wv))
+            e_mag = m.cross(wv)
         use_mag = logical_and(chk.use_mag, m2 >= MAG_NORM_MIN_SQ)
-        e_mag = m.cross(wv)
 
         zero = Vec3(0.0, 0.0, 0.0)
         e = vselect(use_acc, e_acc, zero) + vselect(use_mag, e_mag, zero)
@@ -75,8 +76,10 @@ class Mahony(Estimator):
         omega = chk.gyr - b_new + e * p.kp
         q_new = integrate_gyro(q, omega, chk.dt)
 
-        q_init, init_ok = initial_quaternion(chk.acc, chk.mag, chk.use_mag)
-        do_init = all_of(chk.ok, logical_not(x.initialised), init_ok)
+        start = logical_and(chk.ok, logical_not(x.initialised))
+        with when(start):   # only the first valid sample pays for the initial orientation
+            q_init, init_ok = initial_quaternion(chk.acc, chk.mag, chk.use_mag)
+        do_init = logical_and(start, init_ok)
         run = logical_and(chk.ok, x.initialised)
         q_next = vselect(do_init, q_init, vselect(run, q_new, q))
         b_next = vselect(run, b_new, b)

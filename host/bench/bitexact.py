@@ -1,0 +1,97 @@
+"""`kinefuse bench bitexact`: generated C against its Python model, bit for bit, on every output
+of every sample; and the deviation of both number systems from the float64 reference."""
+from __future__ import annotations
+
+import json
+from concurrent.futures import ProcessPoolExecutor
+
+import numpy as np
+
+from kinefuse.host import runner
+from kinefuse.host.bench.common import eprint, progress, quat_angle_deg, trial_files
+
+
+def register_bench(sub):
+    p = sub.add_parser("bitexact", help="generated C vs Python models (bits) and vs the reference")
+    p.add_argument("--data", help="BROAD folder or trial file (default: shared BROAD, else bundled)")
+    p.add_argument("--filter", default=None, help="filter name (default: the default filter)")
+    p.add_argument("--param", action="append", metavar="NAME=VALUE")
+    p.add_argument("--jobs", type=int, default=2, help="parallel processes (default 2)")
+    p.add_argument("--json", action="store_true")
+    p.set_defaults(func=run)
+
+
+def compare_trial(name: str, path: str, params: dict) -> dict:
+    """Per-trial result for f32 and q: samples, differing samples, angle deviations, first diff."""
+    from kinefuse.codegen import runner as cg
+    from kinefuse.codegen import estimators
+    from kinefuse.host.broad import load_trial
+    trial = load_trial(path)
+    est = estimators.get(name)
+    prm = est.resolve_params(params)
+    inputs = runner.imu_inputs(trial)
+    ref = cg.run(name, "ref", inputs, prm)["q"]
+    out = {}
+    for system in ("f32", "q"):
+        c = cg.run(name, system, inputs, prm, raw=True)
+        m = cg.run(name, f"{system}-model", inputs, prm, raw=True)
+        differ = np.zeros(len(ref), dtype=bool)
+        for k in c:
+            differ |= np.any(cg.bits(c[k]).reshape(len(ref), -1)
+                             != cg.bits(m[k]).reshape(len(ref), -1), axis=1)
+        r = cg.runner(name, f"{system}-model")
+        q = r.decode_values("output", "q", "real", c["q"])
+        dev = quat_angle_deg(ref, q)
+        first = None
+        if differ.any():
+            i = int(np.argmax(differ))
+            first = {"sample": i, "inputs": {k: np.asarray(v[i]).tolist() for k, v in inputs.items()},
+                     "c": {k: np.asarray(v[i]).tolist() for k, v in c.items()},
+                     "model": {k: np.asarray(v[i]).tolist() for k, v in m.items()}}
+        out[system] = {"samples": int(len(ref)), "differing": int(differ.sum()),
+                       "sq_dev": float(np.sum(dev ** 2)), "max_deg": float(np.max(dev)),
+                       "first_difference": first}
+    return out
+
+
+def run(args) -> int:
+    name = args.filter or runner.default_filter()
+    if name not in runner.filter_names():
+        from kinefuse.host.errors import KinefuseError
+        raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
+    files, where = trial_files(args.data)
+    params = runner.parse_params(args.param)
+    eprint(f"bench bitexact: {name} on {len(files)} trial(s) from {where}")
+    results = {}
+    with progress(not args.json) as bar, ProcessPoolExecutor(max(1, args.jobs)) as pool:
+        task = bar.add_task(f"{name}: C vs model vs reference", total=len(files))
+        futs = {pool.submit(compare_trial, name, str(f), params): f for f in files}
+        for fut in futs:
+            results[futs[fut].stem] = fut.result()
+            bar.advance(task)
+    summary = {"filter": name}
+    for system in ("f32", "q"):
+        n = sum(r[system]["samples"] for r in results.values())
+        summary[system] = {
+            "samples": n,
+            "differing": sum(r[system]["differing"] for r in results.values()),
+            "rms_deg": float(np.sqrt(sum(r[system]["sq_dev"] for r in results.values()) / max(n, 1))),
+            "max_deg": max(r[system]["max_deg"] for r in results.values()),
+        }
+    if args.json:
+        print(json.dumps(summary))
+    else:
+        print(f"{name}: generated C vs its Python model (bits of every output), and vs the float64 "
+              f"reference (orientation angle)")
+        print(f"{'system':<8}{'samples':>10}{'differing':>11}{'RMS dev [deg]':>15}{'max dev [deg]':>15}")
+        for system in ("f32", "q"):
+            s = summary[system]
+            print(f"{system:<8}{s['samples']:>10}{s['differing']:>11}{s['rms_deg']:>15.2e}"
+                  f"{s['max_deg']:>15.2e}")
+    for tname, r in results.items():
+        for system in ("f32", "q"):
+            fd = r[system]["first_difference"]
+            if fd:
+                eprint(f"MISMATCH {system} in {tname} at sample {fd['sample']}: inputs {fd['inputs']}; "
+                       f"C {fd['c']}; model {fd['model']}")
+    return 1 if any(summary[s]["differing"] for s in ("f32", "q")) else 0
