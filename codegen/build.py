@@ -17,7 +17,11 @@ from pathlib import Path
 from kinefuse.codegen.generate import GENERATED_DIR
 
 HOST_CFLAGS = ["-O2", "-std=c99", "-ffp-contract=off", "-fno-wrapv", "-fno-fast-math",
-               "-Wall", "-Wno-unused-function", "-Wno-unused-variable"]
+               "-Wall", "-Wno-unused-function", "-Wno-unused-variable",
+               # cffi adds -g; GCC's variable tracking then dominates the build of a long
+               # generated function (a 9k-statement EKF update: 24 s -> 10 s).  Debug info only:
+               # the generated code is unchanged.
+               "-fno-var-tracking-assignments"]
 
 
 def cache_dir() -> Path:
