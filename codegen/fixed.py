@@ -516,7 +516,12 @@ class FixedLowering:
                     vals.append(self.ref(x, names))   # already in format and bounds
                     continue
                 e = self._conv(x, names, f)
-                if fm.sat:
+                k_in = src.frac - f
+                if fm.sat or (op in ("min", "max") and (_rescale(src.lo, k_in) < -RAW_MAX or
+                                                      _rescale(src.hi, k_in) > RAW_MAX)):
+                    # an operand of min/max may lie far outside the result's range (e.g. the
+                    # very negative side of max(x, 0)) and not fit int32 in the result's finer
+                    # format: clamping it into the result's bounds is exact for min/max
                     e = Call("kf_sat", (e, Int(fm.lo), Int(fm.hi)))
                 else:
                     e = Narrow(e)

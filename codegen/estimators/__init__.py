@@ -7,6 +7,8 @@ from kinefuse.codegen.estimators.complementary import Complementary
 from kinefuse.codegen.estimators.flagship import Flagship
 from kinefuse.codegen.estimators.madgwick import Madgwick
 from kinefuse.codegen.estimators.ecompass import Ecompass
+from kinefuse.codegen.estimators.triad import Triad
+from kinefuse.codegen.estimators.vac import Vac
 from kinefuse.codegen.estimators.mahony import Mahony
 
 # Registry order = order in `kinefuse filters`.
@@ -15,6 +17,8 @@ ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
     Mahony,
     Complementary,
     Ecompass,
+    Triad,
+    Vac,
     Flagship,
 )}
 

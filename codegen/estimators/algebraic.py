@@ -57,12 +57,17 @@ def tilt_quaternion(up: Vec3) -> Quat:
     return vselect(upper, q1, q2)
 
 
-def tilt_correction(g_p: Vec3) -> Quat:
+def tilt_correction(g_p: Vec3, eps: float = 1e-9) -> Quat:
     """The smallest rotation (earth frame) that maps the unit vector ``g_p`` (the measured up
     direction rotated into the earth frame by a predicted orientation) onto +z: Valenti's
-    Δq_acc.  For g_z < 0 (an estimate more than 90° off) the rotation is bounded to 180° about
-    a horizontal axis through the formula's second branch."""
-    return tilt_quaternion(g_p)
+    Δq_acc = (λ, g_y/(2λ), −g_x/(2λ), 0), λ = sqrt((1 + g_z)/2), written as the normalised
+    (1 + g_z, g_y, −g_x, 0) so that it stays accurate for any g_z (an estimate up to 180° off);
+    w >= 0 always.  Exactly upside down (|.|² = 2(1 + g_z) < eps) it is a half turn about x."""
+    gx, gy, gz = g_p
+    v = Quat(1.0 + gz, gy, -gx, 0.0)
+    k, n2 = rnorm(v, eps)
+    dq = Quat(*(assume(c * k, -1.0, 1.0) for c in v))
+    return vselect(n2 > eps, dq, Quat(0.0, 1.0, 0.0, 0.0))
 
 
 def heading_quaternion(lx, ly, eps: float = 1e-6):

@@ -17,6 +17,7 @@ DEFAULTS = {'min_angle_deg': 5.0}
 STATE_INIT = {'q': (1.0, 0.0, 0.0, 0.0), 'valid': (False,), 'rejected': (0,)}
 
 F = np.float32
+K_ZERO = F(0.0)
 
 K_0x0_0pp0 = F(float.fromhex('0x0.0p+0'))
 K_0x1_0000000000000pm1 = F(float.fromhex('0x1.0000000000000p-1'))
@@ -306,12 +307,12 @@ def _run(inputs, params, state, n):
     t269 = (-t189)
     t270 = _where(t262, t269, t189)
     t277 = (~t261)
-    L_t261 = _f32_list(t261, n)
+    L_t261 = _int_list(t261, n)
     L_t264 = _f32_list(t264, n)
     L_t266 = _f32_list(t266, n)
     L_t268 = _f32_list(t268, n)
     L_t270 = _f32_list(t270, n)
-    L_t58 = _f32_list(t58, n)
+    L_t58 = _int_list(t58, n)
     _st = state['q']
     x_q0 = _st[0]
     x_q1 = _st[1]
