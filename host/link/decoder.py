@@ -58,7 +58,8 @@ class StreamDecoder:
     """Incremental decoder: ``feed(bytes) -> list[Frame]``; never raises on any input."""
 
     def __init__(self, dialect: Dialect | None = None, key: bytes | None = None,
-                 accept_unsigned: bool = True, msgids: set[int] | None = None):
+                 accept_unsigned: bool = True, msgids: set[int] | None = None, native: bool | None = None):
+        """``native``: use the compiled scanner (None: when available, see ``native.py``)."""
         self.dialect = dialect or kinefuse_dialect()
         self.key = key
         self.accept_unsigned = accept_unsigned
@@ -67,6 +68,21 @@ class StreamDecoder:
         self._buf = b""
         # msgid -> (reversed CRC_EXTRA byte, payload length, unpack_from, unpack, record class, converter)
         self._table: dict = {}
+        self._native = None
+        if native is not False:
+            from kinefuse.host.link import native as nat
+            lib = nat.load()
+            if lib is not None:
+                table = getattr(self.dialect, "_native_table", None)
+                if table is None:
+                    table = self.dialect._native_table = nat.message_table(self.dialect.module)
+                self._native = (lib[0], lib[1], *table)
+            elif native:
+                raise RuntimeError("the compiled scanner is not available (no C compiler or cffi?)")
+
+    @property
+    def is_native(self) -> bool:
+        return self._native is not None
 
     # -- table -----------------------------------------------------------------------------
     def _entry(self, msgid: int):
@@ -105,13 +121,65 @@ class StreamDecoder:
     def _scan_paused_gc(self, buf: bytes, final: bool):
         # The records are acyclic tuples; letting the cyclic GC walk the growing result list
         # every 700 allocations costs up to 40 % of the decoding time, so pause it meanwhile.
+        scan = self._scan_native if self._native is not None else self._scan
         if not gc.isenabled():
-            return self._scan(buf, final)
+            return scan(buf, final)
         gc.disable()
         try:
-            return self._scan(buf, final)
+            return scan(buf, final)
         finally:
             gc.enable()
+
+    def _scan_native(self, buf: bytes, final: bool):
+        ffi, lib, keys, vals, mask = self._native
+        n = len(buf)
+        starts = ffi.new("int32_t[]", n // 13 + 1)
+        cnt = ffi.new("uint64_t[5]")
+        keep = ffi.new("int32_t *")
+        found = lib.kf_scan(ffi.from_buffer(buf), n, 1 if final else 0, keys, vals, mask, starts, cnt, keep)
+        unpack_header = _HEADER.unpack_from
+        table_get = self._table.get
+        new = tuple.__new__
+        out = []
+        append = out.append
+        key, only, strict = self.key, self.only, self.key is not None and not self.accept_unsigned
+        skipped = sig_fail = uns_rej = 0
+        checks = key is not None or only is not None
+        last_id = -1
+        full = unpack_from = unpack = record = conv = None
+        for i in ffi.unpack(starts, found):
+            plen, inc, seq, sysid, compid, mid16, mid8 = unpack_header(buf, i)
+            msgid = mid16 | (mid8 << 16)
+            if msgid != last_id:  # streams are mostly runs of one message type
+                _, full, unpack_from, unpack, record, conv = table_get(msgid) or self._entry(msgid)
+                last_id = msgid
+            if checks:
+                stop = i + 12 + plen + (13 if inc else 0)
+                if inc:
+                    if key is not None and \
+                            hashlib.sha256(key + buf[i:stop - 6]).digest()[:6] != buf[stop - 6:stop]:
+                        sig_fail += 1
+                        skipped += stop - i
+                        continue
+                elif strict:
+                    uns_rej += 1
+                    skipped += stop - i
+                    continue
+                if only is not None and msgid not in only:
+                    continue
+            values = unpack_from(buf, i + 10) if plen == full else unpack(buf[i + 10:i + 10 + plen] + bytes(full - plen))
+            append(new(Frame, (msgid, sysid, compid, seq, new(record, values) if conv is None else conv(values),
+                               inc == 1)))
+        c = self.counters
+        c.frames_ok += found - sig_fail - uns_rej
+        c.crc_errors += cnt[0]
+        c.unknown_msgid += cnt[1]
+        c.bad_incompat += cnt[2]
+        c.bad_length += cnt[3]
+        c.bytes_skipped += cnt[4] + skipped
+        c.signature_failures += sig_fail
+        c.unsigned_rejected += uns_rej
+        return out, keep[0]
 
     def _scan(self, buf: bytes, final: bool):
         n = len(buf)

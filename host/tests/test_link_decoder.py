@@ -16,6 +16,7 @@ from kinefuse.host.link.codec import Encoder, frame_from_payload, signing_timest
 from kinefuse.host.link.crc import crc_numpy, x25, x25_reference
 from kinefuse.host.link.decoder import MAX_FRAME, StreamDecoder, decode_bytes
 from kinefuse.host.link.dialect import module
+from kinefuse.host.link import native as native_scanner
 from kinefuse.host.link.fakeunit import raw_frames
 from kinefuse.host.link.spec import kinefuse_dialect
 
@@ -160,7 +161,10 @@ def test_truncated_payload_is_zero_padded():
     assert got.msg.flags == 0 and got.msg.unit_id == 0 and got.msg.acc_z == 1000
 
 
-def test_signed_frames_and_key():
+@pytest.mark.parametrize("native", [False, True])
+def test_signed_frames_and_key(native):
+    if native and native_scanner.load() is None:
+        pytest.skip("no compiled scanner")
     key = hashlib.sha256(b"secret").digest()
     enc = Encoder(sysid=3, compid=200, key=key, link_id=1)
     signed = [enc.encode("KF_RAW_SAMPLE", sample_counter=i, acc_z=1000, flags=1) for i in range(3)]
@@ -172,27 +176,30 @@ def test_signed_frames_and_key():
     pm.signing.link_id = 1
     pm.signing.timestamp = signing_timestamp() - 100_000
     assert len(pm.parse_buffer(b"".join(signed)) or []) == 3
-    got, c = decode_bytes(b"".join(signed) + unsigned)  # no key: everything with a good CRC
+    got, c = decode_bytes(b"".join(signed) + unsigned, native=native)  # no key: everything with a good CRC
     assert [f.signed for f in got] == [True, True, True, False]
-    got, c = decode_bytes(b"".join(signed) + unsigned, key=key, accept_unsigned=False)
+    got, c = decode_bytes(b"".join(signed) + unsigned, key=key, accept_unsigned=False, native=native)
     assert [f.msg.sample_counter for f in got] == [0, 1, 2] and c.unsigned_rejected == 1
     bad = bytearray(signed[1])
     bad[-1] ^= 0x40  # signature byte: not covered by the CRC
-    got, c = decode_bytes(signed[0] + bytes(bad) + signed[2], key=key)
+    got, c = decode_bytes(signed[0] + bytes(bad) + signed[2], key=key, native=native)
     assert [f.msg.sample_counter for f in got] == [0, 2] and c.signature_failures == 1
     res = decode_all(signed[0] + bytes(bad) + signed[2], key=key)
     assert res.counters == c
 
 
-def test_decoder_never_raises_and_memory_is_bounded():
+@pytest.mark.parametrize("native", [False, True])
+def test_decoder_never_raises_and_memory_is_bounded(native):
+    if native and native_scanner.load() is None:
+        pytest.skip("no compiled scanner")
     rng = np.random.default_rng(7)
-    dec = StreamDecoder()
+    dec = StreamDecoder(native=native)
     for _ in range(200):  # 2 MB of garbage rich in 0xFD and known message ids
         junk = rng.integers(0, 256, 10_000, dtype=np.uint8)
         junk[rng.integers(0, 10_000, 500)] = 0xFD
         dec.feed(junk.tobytes())
         assert dec.pending <= MAX_FRAME
-    dec = StreamDecoder()
+    dec = StreamDecoder(native=native)
     fake = b"\xfd\x22\x00\x00\x00\x01\xc8\x14\xcd\x00" + b"\x00" * 20  # claims a 34-byte KF_RAW_SAMPLE
     assert dec.feed(fake) == [] and dec.pending == len(fake)  # waits for the claimed length
     good = _sample(1)
@@ -201,8 +208,8 @@ def test_decoder_never_raises_and_memory_is_bounded():
     assert [f.msg.sample_counter for f in got] == [1] and dec.pending == 0
     assert dec.counters.crc_errors == 1 and dec.counters.bytes_skipped == len(fake)
     for bad in (b"", b"\xfd", b"\xfd" * 300, bytes(range(256)) * 3):
-        StreamDecoder().feed(bad)
-        StreamDecoder().flush()
+        StreamDecoder(native=native).feed(bad)
+        StreamDecoder(native=native).flush()
 
 
 def test_batch_decoder_matches_stream_and_pymavlink_on_samples():
@@ -252,11 +259,12 @@ def _frame_for(kind: str, i: int, enc: Encoder, signed_key=None) -> bytes:
 
 class DecoderMachine(RuleBasedStateMachine):
     """Frames, garbage, damaged frames and arbitrary re-chunking: exactly the valid frames, in order."""
+    native = False  # the pure-Python scanner; the subclass below runs the compiled one
 
     def __init__(self):
         super().__init__()
         self.enc = Encoder(sysid=9, compid=200)
-        self.dec = StreamDecoder()
+        self.dec = StreamDecoder(native=self.native)
         self.expected = []      # (msgid, seq) of the valid frames sent
         self.stream = b""       # all bytes produced
         self.fed = 0            # bytes fed so far
@@ -327,14 +335,25 @@ TestDecoderMachine = DecoderMachine.TestCase
 TestDecoderMachine.settings = settings(max_examples=75, stateful_step_count=30, deadline=None,
                                        suppress_health_check=[HealthCheck.too_slow])
 
+needs_native = pytest.mark.skipif(native_scanner.load() is None, reason="no C compiler / cffi for the scanner")
+
+
+class NativeDecoderMachine(DecoderMachine):
+    native = True
+
+
+TestNativeDecoderMachine = needs_native(NativeDecoderMachine.TestCase)
+TestNativeDecoderMachine.settings = TestDecoderMachine.settings
+
 
 @settings(max_examples=200, deadline=None)
-@given(st.binary(max_size=600), st.lists(st.integers(1, 64), max_size=30))
-def test_any_bytes_any_chunking_same_result(data, cuts):
-    """Never raises; chunking never changes the frames or the counters; decode_all agrees."""
+@given(st.binary(max_size=600), st.lists(st.integers(1, 64), max_size=30), st.booleans())
+def test_any_bytes_any_chunking_same_result(data, cuts, native):
+    """Never raises; chunking never changes the frames or the counters; decode_all and both scanners agree."""
+    native = native and native_scanner.load() is not None
     data = data + _sample(1) + data[:50]
-    whole, c_whole = decode_bytes(data)
-    dec, got, pos = StreamDecoder(), [], 0
+    whole, c_whole = decode_bytes(data, native=False)
+    dec, got, pos = StreamDecoder(native=native), [], 0
     for k in cuts:
         got += dec.feed(data[pos:pos + k])
         pos += k
