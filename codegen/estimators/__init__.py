@@ -10,6 +10,8 @@ from kinefuse.codegen.estimators.ecompass import Ecompass
 from kinefuse.codegen.estimators.triad import Triad
 from kinefuse.codegen.estimators.vac import Vac
 from kinefuse.codegen.estimators.mahony import Mahony
+from kinefuse.codegen.estimators.dynamics.pendulum import PendulumEKF
+from kinefuse.codegen.estimators.dynamics.leg import LegEKF, LegFootEKF
 
 # Registry order = order in `kinefuse filters`.
 ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
@@ -20,6 +22,9 @@ ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
     Triad,
     Vac,
     Flagship,
+    PendulumEKF,
+    LegEKF,
+    LegFootEKF,
 )}
 
 

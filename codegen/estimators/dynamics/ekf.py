@@ -428,3 +428,33 @@ def _not(a):
 __all__ = ["Variant", "predict", "sequential_update", "measurement_jacobian", "integrate",
            "phi_matrix", "sigma_ct", "van_loan", "expm_taylor", "build_F", "noise_matrix",
            "unpack_sym", "pack_sym", "tri_size", "diag_sym_init"]
+
+
+def start_run_or_hold(initialised, do_init, run, x_init, P0diag, x_upd, P_upd, x_old, P_old,
+                      lims, p_lim):
+    """The next state of a filter step: started (do_init: x_init, diagonal P0), updated (run),
+    or held; then the sanity check (every value finite and within lims, every variance in
+    [0, p_lim]) that resets a filter whose estimate broke down.  Returns
+    (x, P, initialised, reset_now)."""
+    from kinefuse.codegen.scalar import all_of, fabs, logical_and, logical_not, logical_or
+    N = len(x_old)
+    xs = [select(do_init, a, select(run, b, c)) for a, b, c in zip(x_init, x_upd, x_old)]
+    Pn = [[None] * N for _ in range(N)]
+    for i in range(N):
+        for j in range(i, N):
+            p0 = P0diag[i] if i == j else 0.0
+            v = select(do_init, p0, select(run, P_upd[i][j], P_old[i][j]))
+            Pn[i][j] = v
+            Pn[j][i] = v
+    init_next = logical_or(initialised, do_init)
+    sane = all_of(*(fabs(a) <= lim for a, lim in zip(xs, lims)),
+                  *(logical_and(Pn[i][i] >= 0.0, Pn[i][i] <= p_lim) for i in range(N)))
+    reset_now = logical_and(init_next, logical_not(sane))
+    xs = [select(reset_now, 0.0, a) for a in xs]
+    for i in range(N):
+        for j in range(i, N):
+            p0 = P0diag[i] if i == j else 0.0
+            v = select(reset_now, p0, Pn[i][j])
+            Pn[i][j] = v
+            Pn[j][i] = v
+    return xs, Pn, logical_and(init_next, logical_not(reset_now)), reset_now

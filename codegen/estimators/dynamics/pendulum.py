@@ -18,7 +18,7 @@ from kinefuse.codegen.scalar import (all_of, any_of, fabs, fmax, inc_if, logical
                                      logical_not, logical_or, select, sqrt)
 from kinefuse.codegen.estimators.dynamics.ekf import (Variant, diag_sym_init, measurement_jacobian,
                                                       pack_sym, predict, sequential_update,
-                                                      tri_size, unpack_sym)
+                                                      start_run_or_hold, tri_size, unpack_sym)
 from kinefuse.codegen.estimators.dynamics.models import (PENDULUM_MARKERS, Pendulum,
                                                          pendulum_markers)
 
@@ -74,6 +74,50 @@ def _params(residual: bool):
     return tuple(ps)
 
 
+def _state_outputs(residual: bool):
+    """(state, outputs) declarations of the filter with or without the base residual."""
+    efforts = Pendulum(residual).efforts
+    ne = len(efforts)
+    N = 8 + ne
+    defaults = {p.name: p.default for p in _params(residual)}
+    p0 = [defaults["p0_pos"] ** 2] * 4 + [defaults["p0_vel"] ** 2] * 4 + \
+        [defaults["p0_torque"] ** 2, defaults["p0_force"] ** 2, defaults["p0_force"] ** 2,
+         defaults["p0_torque"] ** 2] + ([defaults["p0_residual"] ** 2] * 3 if residual else [])
+    state = (
+        Var("z", 4, -20.0, 20.0, "m, m, rad, rad", "x0, y0, theta1, theta2"),
+        Var("zd", 4, -ZD_LIM, ZD_LIM, "m/s, m/s, rad/s, rad/s", "rates of z"),
+        Var("te", ne, -TE_LIM, TE_LIM, "N*m, N, N, N*m" + (", N, N, N*m" if residual else ""),
+            "efforts " + " ".join(efforts)),
+        Var("P", tri_size(N), -P_LIM, P_LIM, "SI", "error covariance, upper triangle "
+            "row by row (order z, zd, te)", init=diag_sym_init(p0)),
+        Var("initialised", 1, 0, 1, "", "1 once started from a full set of markers", BOOL,
+            init=False),
+        Var("rejected", 1, 0, 2 ** 31 - 1, "samples", "sensor samples rejected (non-finite "
+            "or out of range) and frames with an invalid dt", INT, init=0),
+        Var("skipped", 1, 0, 2 ** 31 - 1, "updates", "scalar updates skipped because the "
+            "innovation variance was not positive", INT, init=0),
+        Var("resets", 1, 0, 2 ** 31 - 1, "", "restarts after a non-finite or out-of-range "
+            "estimate", INT, init=0),
+    )
+    outputs = (
+        Var("z", 4, -20.0, 20.0, "m, m, rad, rad", "estimated x0, y0, theta1, theta2"),
+        Var("zd", 4, -ZD_LIM, ZD_LIM, "m/s, m/s, rad/s, rad/s", "estimated rates"),
+        Var("te", ne, -TE_LIM, TE_LIM, "N*m, N, N, N*m", "estimated efforts "
+            + " ".join(efforts)),
+        Var("te_std", ne, 0.0, 1e5, "N*m, N, N, N*m", "standard deviation of the effort "
+            "estimates (from P)"),
+        Var("initialised", 1, 0, 1, "", "1 when the outputs are estimates", BOOL),
+        Var("bar_lost", 1, 0, 1, "", "1 when both markers of a bar are missing in this frame "
+            "(the state is not observable from positions: seed 000 §3.3.4)", BOOL),
+        Var("skipped_now", 1, 0, 1, "", "1 when an update was skipped in this frame", BOOL),
+        Var("reset_now", 1, 0, 1, "", "1 when the filter reset in this frame", BOOL),
+        Var("rejected", 1, 0, 2 ** 31 - 1, "samples", "running count (see state)", INT),
+        Var("skipped", 1, 0, 2 ** 31 - 1, "updates", "running count (see state)", INT),
+        Var("resets", 1, 0, 2 ** 31 - 1, "", "running count (see state)", INT),
+    )
+    return state, outputs
+
+
 class PendulumEKF(Estimator):
     """Reduced dynamic EKF of the double pendulum (seed 000 §3.3 / Annex A).
 
@@ -93,6 +137,7 @@ class PendulumEKF(Estimator):
     title = "Double-pendulum reduced dynamic EKF (seed 000)"
     inputs = PENDULUM_INPUT
     params = _params(False)
+    state, outputs = _state_outputs(False)
     residual = False
     # float32 only: interval analysis cannot bound a covariance filter's values without
     # assumptions that would not hold for this 12-state filter (see the leg filter's q attempt)
@@ -106,39 +151,6 @@ class PendulumEKF(Estimator):
         self.N = 8 + ne
         if name is not None:
             self.name = name
-        p0 = self._p0_diag(type("D", (), {p.name: p.default for p in self.params})())
-        self.state = (
-            Var("z", 4, -20.0, 20.0, "m, m, rad, rad", "x0, y0, theta1, theta2"),
-            Var("zd", 4, -ZD_LIM, ZD_LIM, "m/s, m/s, rad/s, rad/s", "rates of z"),
-            Var("te", ne, -TE_LIM, TE_LIM, "N*m, N, N, N*m" + (", N, N, N*m" if residual else ""),
-                "efforts " + " ".join(self.model.efforts)),
-            Var("P", tri_size(self.N), -P_LIM, P_LIM, "SI", "error covariance, upper triangle "
-                "row by row (order z, zd, te)", init=diag_sym_init(p0)),
-            Var("initialised", 1, 0, 1, "", "1 once started from a full set of markers", BOOL,
-                init=False),
-            Var("rejected", 1, 0, 2 ** 31 - 1, "samples", "sensor samples rejected (non-finite "
-                "or out of range) and frames with an invalid dt", INT, init=0),
-            Var("skipped", 1, 0, 2 ** 31 - 1, "updates", "scalar updates skipped because the "
-                "innovation variance was not positive", INT, init=0),
-            Var("resets", 1, 0, 2 ** 31 - 1, "", "restarts after a non-finite or out-of-range "
-                "estimate", INT, init=0),
-        )
-        self.outputs = (
-            Var("z", 4, -20.0, 20.0, "m, m, rad, rad", "estimated x0, y0, theta1, theta2"),
-            Var("zd", 4, -ZD_LIM, ZD_LIM, "m/s, m/s, rad/s, rad/s", "estimated rates"),
-            Var("te", ne, -TE_LIM, TE_LIM, "N*m, N, N, N*m", "estimated efforts "
-                + " ".join(self.model.efforts)),
-            Var("te_std", ne, 0.0, 1e5, "N*m, N, N, N*m", "standard deviation of the effort "
-                "estimates (from P)"),
-            Var("initialised", 1, 0, 1, "", "1 when the outputs are estimates", BOOL),
-            Var("bar_lost", 1, 0, 1, "", "1 when both markers of a bar are missing in this frame "
-                "(the state is not observable from positions: seed 000 §3.3.4)", BOOL),
-            Var("skipped_now", 1, 0, 1, "", "1 when an update was skipped in this frame", BOOL),
-            Var("reset_now", 1, 0, 1, "", "1 when the filter reset in this frame", BOOL),
-            Var("rejected", 1, 0, 2 ** 31 - 1, "samples", "running count (see state)", INT),
-            Var("skipped", 1, 0, 2 ** 31 - 1, "updates", "running count (see state)", INT),
-            Var("resets", 1, 0, 2 ** 31 - 1, "", "running count (see state)", INT),
-        )
 
     # -- pieces ---------------------------------------------------------------------------
     def _p0_diag(self, p):
@@ -226,30 +238,9 @@ class PendulumEKF(Estimator):
         P0 = self._p0_diag(p)
         do_init = logical_and(logical_not(x.initialised), all_of(*mk_ok))
         run = logical_and(x.initialised, dt_ok)
-        xs_old = z + zd + te
-        xs = [select(do_init, a, select(run, b, c)) for a, b, c in zip(x_init, xu, xs_old)]
-        Pn = [[None] * N for _ in range(N)]
-        for i in range(N):
-            for j in range(i, N):
-                p_init = P0[i] if i == j else 0.0
-                val = select(do_init, p_init, select(run, Pu[i][j], P[i][j]))
-                Pn[i][j] = val
-                Pn[j][i] = val
-        init_next = logical_or(x.initialised, do_init)
-
-        # sanity: finite and within range, or restart
         lims = list(Z_LIM) + [ZD_LIM] * 4 + [TE_LIM] * ne
-        sane = all_of(*(fabs(a) <= lim for a, lim in zip(xs, lims)),
-                      *(logical_and(Pn[i][i] >= 0.0, Pn[i][i] <= P_LIM) for i in range(N)))
-        reset_now = logical_and(init_next, logical_not(sane))
-        xs = [select(reset_now, 0.0, a) for a in xs]
-        for i in range(N):
-            for j in range(i, N):
-                p_init = P0[i] if i == j else 0.0
-                val = select(reset_now, p_init, Pn[i][j])
-                Pn[i][j] = val
-                Pn[j][i] = val
-        init_next = logical_and(init_next, logical_not(reset_now))
+        xs, Pn, init_next, reset_now = start_run_or_hold(
+            x.initialised, do_init, run, x_init, P0, xu, Pu, z + zd + te, P, lims, P_LIM)
         skipped_now = logical_and(run, skipped_now)
         skipped = inc_if(x.skipped, skipped_now)
         resets = inc_if(x.resets, reset_now)
@@ -274,6 +265,7 @@ class PendulumResidualEKF(PendulumEKF):
     name = "pendulum_res"
     title = "Double-pendulum reduced dynamic EKF with base residual (seed 000)"
     params = _params(True)
+    state, outputs = _state_outputs(True)
     residual = True
 
 

@@ -1,0 +1,289 @@
+"""The wearable dynamic EKF: a planar thigh-shank leg observed by one IMU (gyroscope +
+accelerometer) per segment, estimating hip and knee torques in real time.
+
+Seed 000 names velocity and acceleration sensors as the way to cut the delay of the efforts
+estimated from positions; seed 003 says the same of gyroscopes and accelerometers.  With an
+accelerometer the torque enters the measurement through z̈ = M⁻¹(Q_g + Bᵀ T_e), so its row
+of H carries ∂a/∂z̈ · [z̈_z, z̈_ż, z̈_T] (chain rule through the same AD sensitivity).
+The mean is integrated with classical Runge-Kutta 4 by default: forward Euler's truncation
+error on the mean becomes a torque bias (shared/notes/dynamic-ekf.md).
+"""
+from __future__ import annotations
+
+import math
+
+from kinefuse.codegen.estimator import Estimator, InputSpec, Param, Var
+from kinefuse.codegen.ir import BOOL, INT
+from kinefuse.codegen.mathlib import atan2
+from kinefuse.codegen.scalar import (all_of, fabs, fmax, inc_if, logical_and, logical_not,
+                                     select, sqrt)
+from kinefuse.codegen.estimators.dynamics.ad import sincos
+from kinefuse.codegen.estimators.dynamics.ekf import (Variant, diag_sym_init, measurement_jacobian,
+                                                      pack_sym, predict, sequential_update,
+                                                      start_run_or_hold, tri_size, unpack_sym)
+from kinefuse.codegen.estimators.dynamics.mbs import Dynamics, point_kinematics
+from kinefuse.codegen.estimators.dynamics.models import Leg
+
+GYR_MAX = 2000.0 * math.pi / 180.0      # rad/s
+ACC_MAX = 16.0 * 9.80665                # m/s^2
+FOOT_MAX = 5000.0                       # N
+DT_MAX = 0.1                            # s
+Z_LIM = 4.0 * math.pi                   # rad: estimates beyond these reset the filter
+ZD_LIM = GYR_MAX                        # rad/s
+TE_LIM = 1000.0                         # N*m or N
+P_LIM = 1e8
+
+LEG_INPUT = InputSpec("leg", (
+    Var("gyr", 2, -GYR_MAX, GYR_MAX, "rad/s",
+        "angular rate of the thigh and of the shank about the medio-lateral axis "
+        "(counter-clockwise seen with walking direction +x: hip flexion positive)"),
+    Var("acc", 4, -ACC_MAX, ACC_MAX, "m/s^2",
+        "specific force in the segment frames: thigh (along the thigh towards the knee, "
+        "anterior), shank (along the shank towards the ankle, anterior); +g along the "
+        "segment's upward direction at rest"),
+    Var("foot", 2, -FOOT_MAX, FOOT_MAX, "N", "external force at the ankle (x forward, y up), "
+        "for the filter built with the foot force sensor"),
+    Var("gyr_valid", 2, 0, 1, "", "1 when gyroscope i (thigh, shank) has a sample", BOOL),
+    Var("acc_valid", 2, 0, 1, "", "1 when accelerometer i (thigh, shank) has a sample", BOOL),
+    Var("foot_valid", 1, 0, 1, "", "1 when the foot force sensor has a sample", BOOL),
+    Var("dt", 1, 0.0, DT_MAX, "s", "time since the previous sample"),
+), doc="One sample of the two leg IMUs (and the optional ankle force sensor).  Non-finite or "
+       "out-of-range values of a valid sensor are rejected (counted) and that sensor is "
+       "treated as lost for the sample.")
+
+# Winter (2009) for a 75 kg, 1.75 m adult (see host/dynamics/truth.py LegConfig)
+_H, _M = 1.75, 75.0
+_L1, _L2 = 0.245 * _H, 0.246 * _H
+_DEFAULTS = dict(m1=0.100 * _M, m2=0.061 * _M, L1=_L1, c1=0.433 * _L1, c2=0.606 * _L2,
+                 I1=0.100 * _M * (0.323 * _L1) ** 2, I2=0.061 * _M * (0.416 * _L2) ** 2)
+
+
+def _params(foot: bool):
+    d = _DEFAULTS
+    ps = [
+        Param("m1", d["m1"], "kg", 0.5, 50.0, "thigh mass"),
+        Param("m2", d["m2"], "kg", 0.2, 30.0, "shank + foot mass"),
+        Param("L1", d["L1"], "m", 0.1, 1.0, "hip to knee"),
+        Param("c1", d["c1"], "m", 0.02, 1.0, "thigh centre of mass from the hip"),
+        Param("c2", d["c2"], "m", 0.02, 1.0, "shank+foot centre of mass from the knee"),
+        Param("I1", d["I1"], "kg*m^2", 1e-3, 5.0, "thigh moment of inertia about its CoM"),
+        Param("I2", d["I2"], "kg*m^2", 1e-3, 5.0, "shank+foot moment of inertia about its CoM"),
+        Param("g", 9.81, "m/s^2", 0.0, 20.0, "gravity"),
+        Param("a1", 0.20, "m", 0.0, 1.0, "thigh IMU: distance along the thigh from the hip"),
+        Param("b1", 0.07, "m", -0.3, 0.3, "thigh IMU: anterior offset from the thigh axis"),
+        Param("a2", 0.20, "m", 0.0, 1.0, "shank IMU: distance along the shank from the knee"),
+        Param("b2", 0.05, "m", -0.3, 0.3, "shank IMU: anterior offset from the shank axis"),
+        Param("sigma_gyr", 0.005, "rad/s", 1e-5, 10.0, "gyroscope noise (standard deviation)"),
+        Param("sigma_acc", 0.05, "m/s^2", 1e-4, 50.0,
+              "accelerometer noise (standard deviation; include model error: soft tissue)"),
+        Param("q_torque", 2.0e4, "(N*m)^2/s", 1e-6, 1e9,
+              "power spectral density of the rate of the joint torques (random walk)"),
+        Param("p0_angle", 0.2, "rad", 1e-5, 10.0, "initial standard deviation of the angles"),
+        Param("p0_rate", 0.1, "rad/s", 1e-5, 100.0, "initial standard deviation of the rates"),
+        Param("p0_torque", 30.0, "N*m", 1e-3, 1e4, "initial standard deviation of the torques"),
+    ]
+    if foot:
+        ps += [Param("sigma_foot", 2.0, "N", 1e-3, 1e3, "foot force sensor noise (std)"),
+               Param("q_force", 1.0e6, "N^2/s", 1e-6, 1e10,
+                     "power spectral density of the rate of the ankle force"),
+               Param("p0_force", 100.0, "N", 1e-3, 1e4, "initial standard deviation of the "
+                     "ankle force")]
+    return tuple(ps)
+
+
+def _state_outputs(foot: bool):
+    """(state, outputs) declarations of the filter with or without the ankle force."""
+    efforts = Leg(foot=foot).efforts
+    ne = len(efforts)
+    N = 4 + ne
+    d = {p.name: p.default for p in _params(foot)}
+    p0 = [d["p0_angle"] ** 2] * 2 + [d["p0_rate"] ** 2] * 2 + [d["p0_torque"] ** 2] * 2 + \
+        ([d["p0_force"] ** 2] * 2 if foot else [])
+    units = "N*m, N*m" + (", N, N" if foot else "")
+    state = (
+        Var("z", 2, -Z_LIM, Z_LIM, "rad", "thigh and shank angles"),
+        Var("zd", 2, -ZD_LIM, ZD_LIM, "rad/s", "their rates"),
+        Var("te", ne, -TE_LIM, TE_LIM, units, "efforts " + " ".join(efforts)),
+        Var("P", tri_size(N), -P_LIM, P_LIM, "SI", "error covariance, upper triangle "
+            "row by row (order z, zd, te)", init=diag_sym_init(p0)),
+        Var("initialised", 1, 0, 1, "", "1 once started", BOOL, init=False),
+        Var("rejected", 1, 0, 2 ** 31 - 1, "samples", "sensor samples rejected (non-finite "
+            "or out of range) and samples with an invalid dt", INT, init=0),
+        Var("skipped", 1, 0, 2 ** 31 - 1, "updates", "scalar updates skipped because the "
+            "innovation variance was not positive", INT, init=0),
+        Var("resets", 1, 0, 2 ** 31 - 1, "", "restarts after a non-finite or out-of-range "
+            "estimate", INT, init=0),
+    )
+    outputs = (
+        Var("z", 2, -Z_LIM, Z_LIM, "rad", "estimated thigh and shank angles"),
+        Var("zd", 2, -ZD_LIM, ZD_LIM, "rad/s", "estimated rates"),
+        Var("te", ne, -TE_LIM, TE_LIM, units, "estimated " + " ".join(efforts)),
+        Var("te_std", ne, 0.0, 1e4, units, "standard deviation of the effort estimates"),
+        Var("initialised", 1, 0, 1, "", "1 when the outputs are estimates", BOOL),
+        Var("imu_lost", 1, 0, 1, "", "1 when a segment has neither gyroscope nor "
+            "accelerometer in this sample", BOOL),
+        Var("skipped_now", 1, 0, 1, "", "1 when an update was skipped in this sample", BOOL),
+        Var("reset_now", 1, 0, 1, "", "1 when the filter reset in this sample", BOOL),
+        Var("rejected", 1, 0, 2 ** 31 - 1, "samples", "running count (see state)", INT),
+        Var("skipped", 1, 0, 2 ** 31 - 1, "updates", "running count (see state)", INT),
+        Var("resets", 1, 0, 2 ** 31 - 1, "", "running count (see state)", INT),
+    )
+    return state, outputs
+
+
+class LegEKF(Estimator):
+    """Reduced dynamic EKF of a planar thigh-shank leg with the hip fixed: state
+    z = [theta1 theta2] (rad, thigh and shank from the downward vertical, counter-clockwise =
+    hip flexion), rates (rad/s), and the joint torques T_e = [tau_hip tau_knee] (N*m;
+    tau_hip on the thigh from the pelvis, + flexing; tau_knee on the shank from the thigh, +
+    extending the knee) as random walks.  Sensors: gyroscope and 2-axis accelerometer on each
+    segment (positions a_i, b_i in the segment frames).  Runge-Kutta 4 for the mean,
+    second-order Phi, Taylor noise covariance, scalar Joseph updates.  Starts from the first
+    sample with both accelerometers (angles from the gravity direction, rates from the
+    gyroscopes, torques 0); a non-finite or out-of-range estimate resets it (counted).
+    """
+
+    name = "leg"
+    title = "Wearable leg dynamic EKF: hip and knee torques from two IMUs"
+    inputs = LEG_INPUT
+    params = _params(False)
+    state, outputs = _state_outputs(False)
+    foot = False
+    systems = ("f32",)      # the fixed-point attempt is documented in host/dynamics/fixed_leg.py
+
+    def __init__(self, variant: Variant | None = None, name: str | None = None):
+        self.variant = variant or Variant(integrator="rk4", phi="se", sigma="ct")
+        self.model = Leg(foot=self.foot)
+        ne = len(self.model.efforts)
+        self.ne = ne
+        self.N = 4 + ne
+        if name is not None:
+            self.name = name
+
+    def _p0_diag(self, p):
+        a, r, t = p.p0_angle * p.p0_angle, p.p0_rate * p.p0_rate, p.p0_torque * p.p0_torque
+        d = [a, a, r, r, t, t]
+        if self.foot:
+            f = p.p0_force * p.p0_force
+            d += [f, f]
+        return d
+
+    def _qdiag(self, p):
+        q = [p.q_torque, p.q_torque]
+        if self.foot:
+            q += [p.q_force, p.q_force]
+        return q
+
+    def h_fn(self, z, zd, te, zdd, p):
+        """Predicted sensors: gyro thigh, gyro shank, acc thigh (along, anterior), acc shank
+        (along, anterior) [, foot x, y]."""
+        _, _, acc = point_kinematics(self.model.imu_points, z, zd, zdd, p)
+        out = [zd[0], zd[1]]
+        for i in range(2):
+            s, c = sincos(z[i])
+            ax, ay = acc[2 * i], acc[2 * i + 1] + p.g     # a - g_vec, g_vec = (0, -g)
+            out += [s * ax - c * ay, c * ax + s * ay]      # u = (s, -c), v = (c, s)
+        if self.foot:
+            out += [te[2], te[3]]
+        return out
+
+    def step(self, x, u, p):
+        model, v, ne, N = self.model, self.variant, self.ne, self.N
+        z, zd, te = list(x.z), list(x.zd), list(x.te)
+        P = unpack_sym(list(x.P), N)
+        dt = u.dt
+        dt_ok = all_of(dt > 0.0, dt <= DT_MAX)
+
+        gyr, acc, foot = list(u.gyr), list(u.acc), list(u.foot)
+        g_ok = [logical_and(u.gyr_valid[i], fabs(gyr[i]) <= GYR_MAX) for i in range(2)]
+        a_ok = [all_of(u.acc_valid[i], fabs(acc[2 * i]) <= ACC_MAX,
+                       fabs(acc[2 * i + 1]) <= ACC_MAX) for i in range(2)]
+        bad = [logical_and(u.gyr_valid[i], logical_not(g_ok[i])) for i in range(2)] + \
+              [logical_and(u.acc_valid[i], logical_not(a_ok[i])) for i in range(2)]
+        ys = gyr + acc
+        use = g_ok + [a_ok[0], a_ok[0], a_ok[1], a_ok[1]]
+        sg, sa = p.sigma_gyr, p.sigma_acc
+        rvar = [sg * sg] * 2 + [sa * sa] * 4
+        if self.foot:
+            f_ok = all_of(u.foot_valid, fabs(foot[0]) <= FOOT_MAX, fabs(foot[1]) <= FOOT_MAX)
+            bad.append(logical_and(u.foot_valid, logical_not(f_ok)))
+            ys += foot
+            use += [f_ok, f_ok]
+            rvar += [p.sigma_foot * p.sigma_foot] * 2
+        rejected = x.rejected
+        for b in bad:
+            rejected = inc_if(rejected, b)
+        rejected = inc_if(rejected, logical_and(x.initialised, logical_not(dt_ok)))
+
+        # prediction at the current estimate
+        zn, zdn, Pp, _ = predict(model, v, z, zd, te, P, self._qdiag(p), p, dt)
+        # sensors at the prior: the accelerometers need z̈ and its sensitivity there
+        D = Dynamics(model, zn, zdn, te, p)
+        sens = D.sensitivity(full=True)
+        hv, H = measurement_jacobian(self.h_fn, zn, zdn, te, D.zdd, sens, p)
+        innov = [select(use[i], ys[i] - hv[i], 0.0) for i in range(len(ys))]
+        xu, Pu, skipped_now = sequential_update(zn + zdn + te, Pp, innov, H, rvar, use)
+
+        # start: angles from the gravity direction (f_along = -g cos th, f_ant = g sin th)
+        z0 = [atan2(acc[2 * i + 1], -acc[2 * i]) for i in range(2)]
+        zd0 = [select(g_ok[i], gyr[i], 0.0) for i in range(2)]
+        te0 = [0.0, 0.0] + ([select(use[6], foot[0], 0.0), select(use[7], foot[1], 0.0)]
+                            if self.foot else [])
+        do_init = logical_and(logical_not(x.initialised), logical_and(a_ok[0], a_ok[1]))
+        run = logical_and(x.initialised, dt_ok)
+        lims = [Z_LIM] * 2 + [ZD_LIM] * 2 + [TE_LIM] * ne
+        xs, Pn, init_next, reset_now = start_run_or_hold(
+            x.initialised, do_init, run, z0 + zd0 + te0, self._p0_diag(p), xu, Pu,
+            z + zd + te, P, lims, P_LIM)
+        skipped_now = logical_and(run, skipped_now)
+        skipped = inc_if(x.skipped, skipped_now)
+        resets = inc_if(x.resets, reset_now)
+        zs, zds, tes = xs[:2], xs[2:4], xs[4:]
+        te_std = [sqrt(fmax(Pn[4 + e][4 + e], 0.0)) for e in range(ne)]
+        imu_lost = logical_not(all_of(*(logical_or_(g_ok[i], a_ok[i]) for i in range(2))))
+        nx = {"z": zs, "zd": zds, "te": tes, "P": pack_sym(Pn), "initialised": init_next,
+              "rejected": rejected, "skipped": skipped, "resets": resets}
+        y = {"z": zs, "zd": zds, "te": tes, "te_std": te_std, "initialised": init_next,
+             "imu_lost": imu_lost, "skipped_now": skipped_now, "reset_now": reset_now,
+             "rejected": rejected, "skipped": skipped, "resets": resets}
+        return nx, y
+
+
+def logical_or_(a, b):
+    from kinefuse.codegen.scalar import logical_or
+    return logical_or(a, b)
+
+
+class LegFootEKF(LegEKF):
+    """The leg EKF with an ankle force sensor: T_e = [tau_hip tau_knee F_ax F_ay]."""
+
+    name = "leg_foot"
+    title = "Wearable leg dynamic EKF with an ankle force sensor"
+    params = _params(True) + (Param("L2", _L2, "m", 0.1, 1.0, "knee to ankle"),)
+    state, outputs = _state_outputs(True)
+    foot = True
+
+    def __init__(self, variant: Variant | None = None, name: str | None = None):
+        super().__init__(variant, name)
+        self.model = _FootLeg()
+
+
+class _FootLeg(Leg):
+    """Leg with the ankle force; the knee-to-ankle length is the parameter L2."""
+
+    def __init__(self):
+        super().__init__(foot=True)
+
+    def conj(self, z, p):
+        t1, t2 = z
+        s1, c1 = sincos(t1)
+        s2, c2 = sincos(t2)
+        return [z[0], z[1] - z[0], p.L1 * s1 + p.L2 * s2, -(p.L1 * c1) - p.L2 * c2]
+
+
+def leg_variant(variant: Variant, foot: bool = False) -> LegEKF:
+    name = ("leg_foot_" if foot else "leg_") + variant.tag
+    return (LegFootEKF if foot else LegEKF)(variant, name=name)
+
+
+__all__ = ["LegEKF", "LegFootEKF", "leg_variant", "LEG_INPUT"]
