@@ -94,7 +94,7 @@ class FakeUnit:
         self.q = np.array([1.0, 0.0, 0.0, 0.0])
         self.bias = np.array([0.01, -0.02, 0.005])
         self.tared = False
-        self._rate_window = (0, 0)
+        self.hil = False  # True after the first HIL_SENSOR: samples come from the host
 
     def device_time_us(self) -> int:
         """Unit clock: us since boot, running (1 + drift) times as fast as the host clock."""
@@ -148,7 +148,7 @@ class FakeUnit:
             out.append(self._heartbeat())
             out.append(self._status(now))
             self.next_status_us = now - now % 1_000_000 + 1_000_000
-        if not self.streaming:
+        if not self.streaming or self.hil:
             self.next_sample_us = max(self.next_sample_us, now)
             return out
         ori_every = 0 if self.params["KF_ORI_RATE_HZ"] <= 0 else \
@@ -214,7 +214,8 @@ class FakeUnit:
             raw_rate_requested=float(rate), raw_rate_achieved=float(rate),
             orientation_rate_requested=float(self.params["KF_ORI_RATE_HZ"] if self.streaming else 0),
             orientation_rate_achieved=float(self.params["KF_ORI_RATE_HZ"] if self.streaming else 0),
-            battery_voltage=3900, cpu_load=123, status_flags=(1 if self.streaming else 0) | 2 | 32,
+            battery_voltage=3900, cpu_load=123,
+            status_flags=(1 if self.streaming else 0) | 2 | 32 | (8 if self.hil else 0),
             battery_remaining=80, unit_id=self.params["KF_UNIT_ID"], filter_id=self.params["KF_FILTER"],
             numeric_format=1, earth_frame=1)
 
@@ -233,6 +234,8 @@ class FakeUnit:
             return []
         if not self._for_me(m):
             return []
+        if name == "HIL_SENSOR":
+            return self._hil_sample(m)
         if name == "PARAM_REQUEST_LIST":
             if not self.answer_params:
                 return []
@@ -254,6 +257,23 @@ class FakeUnit:
         if name not in ("HEARTBEAT", "COMMAND_ACK"):
             self.counters["unknown_messages"] += 1
         return []
+
+    def _hil_sample(self, m) -> list:
+        """HIL mode: answer a HIL_SENSOR with the KF_RAW_SAMPLE the sensors would have given."""
+        from kinefuse.host.link.hil import UT_PER_GAUSS, UPDATED_MAG, UPDATED_TEMPERATURE, raw_counts
+        self.hil = True
+        a, g, mg, t, clip = raw_counts([m.xacc, m.yacc, m.zacc], [m.xgyro, m.ygyro, m.zgyro],
+                                       [m.xmag * UT_PER_GAUSS, m.ymag * UT_PER_GAUSS, m.zmag * UT_PER_GAUSS],
+                                       m.temperature)
+        flags = int(clip) | 16 | 64 | (8 if m.fields_updated & UPDATED_MAG else 0) \
+            | (32 if m.fields_updated & UPDATED_TEMPERATURE else 0)
+        frame = self.enc.encode(MSG_RAW, time_boot_us=m.time_usec, sample_counter=self.sample_counter,
+                                acc_x=int(a[0]), acc_y=int(a[1]), acc_z=int(a[2]), gyro_x=int(g[0]), gyro_y=int(g[1]),
+                                gyro_z=int(g[2]), mag_x=int(mg[0]), mag_y=int(mg[1]), mag_z=int(mg[2]),
+                                temperature=int(t), unit_id=self.params["KF_UNIT_ID"], flags=flags)
+        self.sample_counter = (self.sample_counter + 1) & 0xFFFFFFFF
+        self.sent_samples += 1
+        return [frame]
 
     def _param_value(self, index: int) -> bytes:
         name = list(self.params)[index]
@@ -321,23 +341,19 @@ class FakeUnit:
 
 
 def raw_frames(n: int, unit_id: int = 1, rate_hz: float = 1000.0, seed: int = 0, start_counter: int = 0,
-               encoder: Encoder | None = None) -> bytes:
-    """``n`` KF_RAW_SAMPLE frames with varied sensor values (benchmarks, tests); fast path."""
-    enc = encoder or Encoder(sysid=unit_id, compid=UNIT_COMPONENT_ID)
-    spec = enc.dialect["KF_RAW_SAMPLE"]
+               seq0: int = 0) -> bytes:
+    """``n`` KF_RAW_SAMPLE frames (full length, varied sensor values) for benchmarks and tests."""
+    from kinefuse.host.link.batchenc import encode_batch
     rng = np.random.default_rng(seed)
     vals = rng.integers(-4000, 4000, size=(n, 10))
     vals[:, 2] += 1000
-    period = 1e6 / rate_hz
-    from kinefuse.host.link.codec import frame_from_payload
-    pack = spec.struct.pack
-    out = []
-    for k in range(n):
-        v = vals[k]
-        payload = pack(int(k * period), (start_counter + k) & 0xFFFFFFFF, *map(int, v), unit_id, 8 | 16 | 32)
-        out.append(frame_from_payload(spec, payload, enc.sysid, enc.compid, enc.seq))
-        enc.seq = (enc.seq + 1) & 0xFF
-    return b"".join(out)
+    names = ["acc_x", "acc_y", "acc_z", "gyro_x", "gyro_y", "gyro_z", "mag_x", "mag_y", "mag_z", "temperature"]
+    v = {name: vals[:, k] for k, name in enumerate(names)}
+    v["time_boot_us"] = (np.arange(n) * (1e6 / rate_hz)).astype(np.uint64)
+    v["sample_counter"] = ((start_counter + np.arange(n)) & 0xFFFFFFFF).astype(np.uint32)
+    v["unit_id"] = np.full(n, unit_id, np.uint8)
+    v["flags"] = np.full(n, 8 | 16 | 32, np.uint8)  # non-zero last byte: every frame is 46 bytes
+    return encode_batch("KF_RAW_SAMPLE", v, sysid=unit_id, compid=UNIT_COMPONENT_ID, seq0=seq0, n=n)
 
 
 class FakeConnection(Connection):
