@@ -151,14 +151,15 @@ def bundled_trials() -> list[Path]:
 def default_data() -> tuple[list[Path], str]:
     """Trials used when the user names none: the shared BROAD folder, else the bundled excerpt.
 
-    Returns the files and a one-line description of where they come from.
+    Returns the files and a short description of where they come from.  A ``$KINEFUSE_BROAD``
+    that names no folder is an error rather than a silent fallback.
     """
+    env = os.environ.get("KINEFUSE_BROAD")
     shared = shared_broad_dir()
-    if shared is not None and shared.is_dir():
-        try:
-            return find_trials(shared), f"full BROAD trials in {shared}"
-        except KinefuseError:
-            pass
+    if env and not Path(env).is_dir():
+        raise KinefuseError(f"KINEFUSE_BROAD={env}: no such directory")
+    if shared is not None:
+        return find_trials(shared), f"BROAD trials in {shared}"
     return bundled_trials(), f"bundled BROAD excerpt in {EXCERPT_DIR}"
 
 
@@ -197,7 +198,8 @@ def _read_mat(path: Path) -> dict:
     return {"gyr": mat["imu_gyr"], "acc": mat["imu_acc"], "mag": mat["imu_mag"],
             "quat_ref": mat["opt_quat"], "movement": mat["movement"],
             "rate_hz": mat["sampling_rate"], "name": path.stem,
-            "description": _info_description(info)}
+            "description": _info_description(info),
+            "_keys": {"gyr": "imu_gyr", "acc": "imu_acc", "mag": "imu_mag", "quat_ref": "opt_quat"}}
 
 
 def _read_npz(path: Path) -> dict:
@@ -215,13 +217,16 @@ def _read_npz(path: Path) -> dict:
 
 
 def _build_trial(path: Path, raw: dict) -> Trial:
+    keys = raw.get("_keys", {})  # names as the file spells them, for messages
+
     def arr(key: str, cols: int) -> np.ndarray:
         try:
             a = np.asarray(raw[key], dtype=np.float64)
         except (TypeError, ValueError):
-            raise KinefuseError(f"{path}: {key} is not numeric") from None
+            raise KinefuseError(f"{path}: {keys.get(key, key)} is not numeric") from None
         if a.ndim != 2 or a.shape[1] != cols:
-            raise KinefuseError(f"{path}: {key} has shape {a.shape}, expected (N, {cols})")
+            raise KinefuseError(f"{path}: {keys.get(key, key)} has shape {a.shape}, "
+                                f"expected (N, {cols})")
         return np.ascontiguousarray(a)
 
     gyr, acc, mag, quat = arr("gyr", 3), arr("acc", 3), arr("mag", 3), arr("quat_ref", 4)
@@ -231,10 +236,11 @@ def _build_trial(path: Path, raw: dict) -> Trial:
         raise KinefuseError(f"{path}: the trial has no samples")
     for key, a in (("acc", acc), ("mag", mag), ("quat_ref", quat), ("movement", movement)):
         if a.shape[0] != n:
-            raise KinefuseError(f"{path}: {key} has {a.shape[0]} samples, gyr has {n}")
+            raise KinefuseError(f"{path}: {keys.get(key, key)} has {a.shape[0]} samples, "
+                                f"{keys.get('gyr', 'gyr')} has {n}")
     for key, a in (("gyr", gyr), ("acc", acc), ("mag", mag)):
         if not np.all(np.isfinite(a)):
-            raise KinefuseError(f"{path}: {key} contains NaN or infinite samples")
+            raise KinefuseError(f"{path}: {keys.get(key, key)} contains NaN or infinite samples")
     try:
         rate = float(np.asarray(raw["rate_hz"], dtype=np.float64).reshape(-1)[0])
     except (TypeError, ValueError, IndexError):

@@ -10,7 +10,7 @@ scores in ``notes/broad.md`` (see ``host/data/broad_excerpt/README.md`` and the 
   ignored by the Python binding, so we rotate NWU -> ENU ourselves (+90° about Up).
 * ``ahrs`` Madgwick: sensor -> NWU (magnetic reference (bx, 0, bz)); rotated like Fusion.
 * ``ahrs`` Mahony: sensor -> ENU (magnetic reference (0, by, bz)); no conversion.
-* ``ahrs`` EKF: run in its ENU mode with the accelerometer negated (see the runner).
+* ``ahrs`` EKF: run in its NED mode with the accelerometer negated, rotated NED -> ENU.
 * ``ahrs`` AQUA: earth -> sensor (inverse) of NWU; conjugated, then rotated like Fusion.
 
 Inputs are converted to each library's units (Fusion: °/s and g; others rad/s and m/s²;
@@ -189,11 +189,14 @@ def _run_ahrs_ekf(trial, params, status):
 
     p = _check_params("ahrs-ekf", {"var_gyr": 0.3 ** 2, "var_acc": 0.5 ** 2, "var_mag": 0.8 ** 2},
                       params)
-    # ahrs' EKF predicts the accelerometer as R^T·(0,0,-1) in ENU, i.e. it expects gravity
-    # pointing down, while accelerometers (and BROAD) read +g upward at rest: feed -acc.
-    Q = EKF(gyr=trial.gyr, acc=-trial.acc, mag=trial.mag, frequency=trial.rate_hz, frame="ENU",
+    # ahrs' EKF predicts the accelerometer as R^T·(0,0,1) in its NED mode: gravity (down), not
+    # the specific force an accelerometer measures (+g upward at rest, as in BROAD).  Feeding
+    # -acc makes the measurement model and its ecompass initialisation consistent; the output
+    # is sensor -> NED.  (In ENU mode -acc fixes the model but starts the filter upside down.)
+    # Its magnetic reference is ahrs' default: WMM at Munich on today's date (with declination).
+    Q = EKF(gyr=trial.gyr, acc=-trial.acc, mag=trial.mag, frequency=trial.rate_hz, frame="NED",
             var_gyr=float(p["var_gyr"]), var_acc=float(p["var_acc"]), var_mag=float(p["var_mag"])).Q
-    return CompetitorResult(np.asarray(Q, dtype=np.float64))
+    return CompetitorResult(quat_mul(Q_NED_TO_ENU, np.asarray(Q, dtype=np.float64)))
 
 
 def _run_ahrs_aqua(trial, params, status):
@@ -233,7 +236,7 @@ def _registry() -> dict[str, Competitor]:
         Competitor("ahrs-madgwick", "ahrs", "ahrs", "Madgwick MARG (ahrs package), gain 0.041",
                    _run_ahrs_madgwick, {"gain": 0.041}),
         Competitor("ahrs-ekf", "ahrs", "ahrs",
-                   "EKF (ahrs package), ENU, accelerometer sign fixed, default noises",
+                   "EKF (ahrs package), accelerometer sign fixed, default noises and magnetic reference",
                    _run_ahrs_ekf, {"var_gyr": 0.09, "var_acc": 0.25, "var_mag": 0.64}),
         Competitor("ahrs-aqua", "ahrs", "ahrs", "AQUA (Valenti et al. 2015, ahrs package)",
                    _run_ahrs_aqua, {"alpha": 0.01, "beta": 0.01, "adaptive": 0.0}),

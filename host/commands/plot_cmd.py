@@ -62,10 +62,10 @@ def run(args) -> int:
     if args.start is not None or args.end is not None:
         start = 0.0 if args.start is None else args.start
         end = trial.duration_s if args.end is None else args.end
-        if not 0.0 <= start < end:
-            raise KinefuseError(f"--start/--end: need 0 <= start < end, got {start} and {end}")
         if start >= trial.duration_s:
             raise KinefuseError(f"--start {start}: the trial is only {trial.duration_s:.1f} s long")
+        if not 0.0 <= start < end:
+            raise KinefuseError(f"--start/--end: need 0 <= start < end, got {start} and {end}")
         window = (start, end)
     safe = spec.label.replace(" (", "_").replace(")", "").replace(" ", "_")
     out = Path(args.out) if args.out else Path(f"{trial.name}_{safe}.png")
@@ -87,6 +87,11 @@ def run(args) -> int:
         plot_estimate(trial, q, spec.label, out, status=getattr(res, "status", None), window=window)
     except OSError as exc:
         raise KinefuseError(f"{out}: cannot write the plot ({exc.strerror or exc})") from None
+    from kinefuse.host.metrics import score_trial
+
+    s = score_trial(q, trial)
+    print(f"{spec.label} on {trial.name}: RMSE total {s['total']:.2f}°, heading "
+          f"{s['heading']:.2f}°, inclination {s['inclination']:.2f}° (movement phases)",
+          file=sys.stderr)
     print(str(out))
-    print(f"wrote {out}", file=sys.stderr)
     return 0

@@ -1,0 +1,173 @@
+"""BROAD trial access: excerpt and .mat reading, errors, discovery, excerpt provenance."""
+import hashlib
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+import scipy.io
+
+from kinefuse.host import broad
+from kinefuse.host.errors import KinefuseError
+
+SHARED = broad.shared_broad_dir()
+needs_shared = pytest.mark.skipif(SHARED is None or not Path(SHARED).is_dir(),
+                                  reason="full BROAD trials not present")
+
+
+def test_bundled_excerpt_is_small_and_complete():
+    files = broad.bundled_trials()
+    assert [f.stem[:2] for f in files] == ["08", "15", "24", "32"]
+    total = sum(p.stat().st_size for p in broad.EXCERPT_DIR.iterdir() if p.is_file())
+    assert total <= 5_000_000
+    readme = (broad.EXCERPT_DIR / "README.md").read_text()
+    assert "CC BY 4.0" in readme and "10.3390/data6070072" in readme
+    assert json.loads(broad.BUNDLED_TRIALS_JSON.read_text())["trials"]
+
+
+def test_excerpt_trial_contents():
+    groups = set()
+    for path in broad.bundled_trials():
+        t = broad.load_trial(path)
+        assert t.name == path.stem
+        assert t.rate_hz == pytest.approx(285.714, abs=1e-3)
+        assert t.dt == pytest.approx(1 / 285.714, rel=1e-5)
+        n = t.n
+        assert t.gyr.shape == t.acc.shape == t.mag.shape == (n, 3)
+        assert t.quat_ref.shape == (n, 4) and t.movement.shape == (n,)
+        assert t.gyr.dtype == np.float64 and t.movement.dtype == bool
+        assert t.t[0] == 0.0 and t.t[-1] == pytest.approx((n - 1) / t.rate_hz)
+        assert 60 <= t.duration_s <= 80
+        # starts at rest (filters initialise), then moves
+        assert not t.movement[: int(20 * t.rate_hz)].any() and t.movement.sum() > 20 * t.rate_hz
+        # physical units: gravity in m/s², earth field in µT, quaternion unit norm
+        assert np.linalg.norm(t.acc[:100], axis=1).mean() == pytest.approx(9.81, abs=0.3)
+        assert 30 < np.linalg.norm(t.mag[:100], axis=1).mean() < 60
+        ok = ~np.isnan(t.quat_ref).any(axis=1)
+        assert np.allclose(np.linalg.norm(t.quat_ref[ok], axis=1), 1.0, atol=1e-6)
+        groups.add(t.group())
+    assert groups == {"rotation", "translation", "tapping", "attached_magnet"}
+
+
+@pytest.mark.broad_full
+@needs_shared
+def test_excerpt_is_bit_identical_to_source():
+    for path in broad.bundled_trials():
+        with np.load(path) as z:
+            src = Path(SHARED) / str(z["source_file"])
+            sha = str(z["source_sha256"])
+            start, stop = int(z["start_sample"]), int(z["stop_sample"])
+        assert hashlib.sha256(src.read_bytes()).hexdigest() == sha
+        part, full = broad.load_trial(path), broad.load_trial(src)
+        for key in ("gyr", "acc", "mag", "quat_ref"):
+            assert getattr(part, key).tobytes() == getattr(full, key)[start:stop].tobytes()
+        assert np.array_equal(part.movement, full.movement[start:stop])
+        assert part.groups == full.groups and part.rate_hz == full.rate_hz
+
+
+@needs_shared
+def test_load_full_mat_trial():
+    path = sorted(Path(SHARED).glob("01_*.mat"))[0]
+    t = broad.load_trial(path)
+    raw = scipy.io.loadmat(path)
+    assert t.name == "01_undisturbed_slow_rotation_A" and t.n == raw["imu_gyr"].shape[0]
+    assert np.array_equal(t.quat_ref, raw["opt_quat"], equal_nan=True)
+    assert t.groups == ("all_trials", "undisturbed", "rotation", "slow", "no_breaks")
+    assert t.description.startswith("slow rotation")
+    assert t.source == path
+
+
+def test_find_trials(tmp_path):
+    files = broad.find_trials(broad.EXCERPT_DIR)
+    assert files == sorted(files) and len(files) == 4
+    assert broad.find_trials(files[1]) == [files[1]]
+    with pytest.raises(KinefuseError, match="no trial files"):
+        broad.find_trials(tmp_path)
+    with pytest.raises(KinefuseError, match="no such file"):
+        broad.find_trials(tmp_path / "missing")
+
+
+def test_shared_dir_from_environment(monkeypatch, tmp_path):
+    monkeypatch.setenv("KINEFUSE_BROAD", str(tmp_path))
+    assert broad.shared_broad_dir() == tmp_path
+    with pytest.raises(KinefuseError, match="no trial files"):
+        broad.default_data()  # an empty folder named explicitly is not silently replaced
+    monkeypatch.setenv("KINEFUSE_BROAD", str(tmp_path / "nope"))
+    with pytest.raises(KinefuseError, match="KINEFUSE_BROAD=.*no such directory"):
+        broad.default_data()
+    monkeypatch.setenv("KINEFUSE_BROAD", str(broad.EXCERPT_DIR))
+    assert broad.default_data()[0] == broad.bundled_trials()
+
+
+def test_default_data_without_shared_folder(monkeypatch):
+    monkeypatch.delenv("KINEFUSE_BROAD", raising=False)
+    monkeypatch.setattr(broad, "shared_broad_dir", lambda: None)
+    files, where = broad.default_data()
+    assert files == broad.bundled_trials() and "bundled" in where
+
+
+def _one_line(exc_info):
+    msg = str(exc_info.value)
+    assert "\n" not in msg
+    return msg
+
+
+def test_load_errors(tmp_path):
+    with pytest.raises(KinefuseError) as e:
+        broad.load_trial(tmp_path / "x.mat")
+    assert "no such file" in _one_line(e)
+    with pytest.raises(KinefuseError, match="is a directory"):
+        broad.load_trial(tmp_path)
+    (tmp_path / "x.csv").write_text("1,2,3\n")
+    with pytest.raises(KinefuseError, match="unsupported trial format"):
+        broad.load_trial(tmp_path / "x.csv")
+    (tmp_path / "bad.mat").write_bytes(b"this is not a MATLAB file at all" * 10)
+    with pytest.raises(KinefuseError) as e:
+        broad.load_trial(tmp_path / "bad.mat")
+    assert "bad.mat" in _one_line(e) and "MATLAB" in str(e.value)
+    (tmp_path / "bad.npz").write_bytes(b"PK\x03\x04 truncated")
+    with pytest.raises(KinefuseError) as e:
+        broad.load_trial(tmp_path / "bad.npz")
+    assert "bad.npz" in _one_line(e)
+
+
+def _mat(path, n=50, **override):
+    d = {"imu_gyr": np.zeros((n, 3)), "imu_acc": np.tile([0, 0, 9.81], (n, 1)),
+         "imu_mag": np.tile([0, 20, -40.0], (n, 1)), "opt_quat": np.tile([1.0, 0, 0, 0], (n, 1)),
+         "movement": np.ones((n, 1), dtype=np.uint8), "sampling_rate": np.array([[100.0]])}
+    d.update(override)
+    d = {k: v for k, v in d.items() if v is not None}
+    scipy.io.savemat(path, d)
+    return path
+
+
+def test_malformed_mat_files(tmp_path):
+    t = broad.load_trial(_mat(tmp_path / "ok.mat"))
+    assert t.n == 50 and t.rate_hz == 100.0 and t.groups == ()
+    with pytest.raises(KinefuseError, match="missing imu_mag"):
+        broad.load_trial(_mat(tmp_path / "a.mat", imu_mag=None))
+    with pytest.raises(KinefuseError, match=r"opt_quat has shape \(50, 3\)"):
+        broad.load_trial(_mat(tmp_path / "b.mat", opt_quat=np.zeros((50, 3))))
+    with pytest.raises(KinefuseError, match="imu_acc has 49 samples, imu_gyr has 50"):
+        broad.load_trial(_mat(tmp_path / "c.mat", imu_acc=np.zeros((49, 3))))
+    with pytest.raises(KinefuseError, match="sampling rate"):
+        broad.load_trial(_mat(tmp_path / "d.mat", sampling_rate=np.array([[0.0]])))
+    gyr = np.zeros((50, 3))
+    gyr[3, 1] = np.nan
+    with pytest.raises(KinefuseError, match="imu_gyr contains NaN"):
+        broad.load_trial(_mat(tmp_path / "e.mat", imu_gyr=gyr))
+
+
+def test_npz_missing_keys(tmp_path):
+    np.savez(tmp_path / "x.npz", gyr=np.zeros((5, 3)))
+    with pytest.raises(KinefuseError, match="missing acc, mag, quat_ref, movement, rate_hz"):
+        broad.load_trial(tmp_path / "x.npz")
+
+
+def test_window():
+    t = broad.load_trial(broad.bundled_trials()[0])
+    w = t.window(100, 300)
+    assert w.n == 200 and w.t[0] == 0.0
+    assert np.array_equal(w.gyr, t.gyr[100:300]) and w.name == t.name
+    with pytest.raises(KinefuseError):
+        t.window(10, t.n + 1)
