@@ -94,6 +94,10 @@ def _columns(spec: MessageSpec, arr: np.ndarray) -> list[tuple[str, np.ndarray, 
                 cols.append((cname, arr[field][:, k], fmt))
         else:
             cols.append((field + _suffix(unit), arr[field], fmt))
+    if name in ("PARAM_VALUE", "PARAM_SET") and arr.size:  # integers travel bytewise in param_value
+        from kinefuse.host.link.params import decode_value
+        cols.append(("value", np.array([decode_value(float(v), int(t)) for v, t in
+                                        zip(arr["param_value"], arr["param_type"])], dtype=object), "%s"))
     return cols
 
 
@@ -118,7 +122,7 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
             if wanted is None or mid in wanted:
                 by_msg.setdefault(mid, []).append((sid, arr, ds.host_ns.get(mid)))
     start_mono = df.start_monotonic_ns
-    start_unix = df.recording.start_unix_ns if df.recording else 0
+    start_unix = df.start_unix_ns
     written = []
     for mid, parts in sorted(by_msg.items()):
         spec = d.get(mid)

@@ -35,16 +35,24 @@ class DecodedStream:
 @dataclass
 class DecodedFile:
     path: Path
-    recording: Recording | None      # None for a raw capture
+    recording: Recording | None      # None for a raw capture or a tlog
     streams: dict                    # stream id -> DecodedStream
+    clock: tuple | None = None       # (start host ns, start UNIX ns) when not from a recording
+    kind: str = "raw MAVLink capture"
 
     @property
     def start_monotonic_ns(self) -> int:
-        return self.recording.start_monotonic_ns if self.recording else 0
+        return self.recording.start_monotonic_ns if self.recording else (self.clock or (0, 0))[0]
+
+    @property
+    def start_unix_ns(self) -> int:
+        return self.recording.start_unix_ns if self.recording else (self.clock or (0, 0))[1]
 
     @property
     def header(self) -> dict:
-        return self.recording.header if self.recording else {"format": "raw MAVLink capture", "streams": []}
+        if self.recording:
+            return self.recording.header
+        return {"format": self.kind, "streams": []}
 
 
 def is_recording(path) -> bool:
@@ -74,13 +82,37 @@ def _payload_len(rx: bytes, offsets) -> np.ndarray:
     return b[np.asarray(offsets) + 1].astype(np.int64)
 
 
+def decode_tlog(path: Path, msgids=None) -> DecodedFile:
+    """A MAVProxy/QGroundControl telemetry log: each frame preceded by its 8-byte big-endian
+    UNIX time in us.  The time stamps are skipped as garbage by the decoder (``bytes_skipped``
+    counts them); MAVLink 1 frames are not decoded."""
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise KinefuseError(f"cannot read {path}: {exc.strerror or exc}") from None
+    ds = decode_stream(StreamData(0, data), {"id": 0, "connection": f"tlog:{path}"}, msgids)
+    b = np.frombuffer(data, np.uint8)
+    first = None
+    for mid, arr in ds.arrays.items():
+        off = arr["_offset"].astype(np.int64)
+        idx = np.maximum(off - 8, 0)[:, None] + np.arange(8)
+        stamp = (b[idx].astype(np.uint64) << (8 * np.arange(7, -1, -1)).astype(np.uint64)).sum(axis=1)
+        ns = stamp.astype(np.int64) * 1000
+        ds.host_ns[mid] = ns
+        if ns.size:
+            first = int(ns.min()) if first is None else min(first, int(ns.min()))
+    return DecodedFile(path, None, {0: ds}, clock=(first or 0, first or 0), kind="MAVLink telemetry log (tlog)")
+
+
 def decode_file(path, raw: bool = False, msgids=None) -> DecodedFile:
-    """Decode a .kfr recording, or with ``raw=True`` a plain MAVLink byte capture."""
+    """Decode a .kfr recording, a .tlog, or with ``raw=True`` a plain MAVLink byte capture."""
     path = Path(path)
     if not path.exists():
         raise KinefuseError(f"{path}: no such file")
     if path.is_dir():
         raise KinefuseError(f"{path} is a directory, not a recording")
+    if path.suffix.lower() == ".tlog" and not is_recording(path):
+        return decode_tlog(path, msgids)
     if not is_recording(path):
         if not raw:
             raise KinefuseError(f"{path} is not a kinefuse recording (.kfr); use --raw for a plain MAVLink capture")

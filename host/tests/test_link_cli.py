@@ -124,3 +124,31 @@ def test_bench_decode_json_shape(run):
     assert set(r["bit_errors"]) == {"intact", "recovered", "false_accepts"}
     assert r["fake_magic"]["kinefuse"] == r["fake_magic"]["sent"] == 2000
     assert r["bit_errors"]["recovered"] == r["bit_errors"]["intact"] and r["bit_errors"]["false_accepts"] == 0
+
+
+def test_record_warns_on_a_likely_wrong_baud_rate(run, tmp_path):
+    import numpy as np
+    noise = np.random.default_rng(0).integers(0, 256, 20_000, dtype=np.uint8)
+    noise[noise == 0xFD] = 0  # what a unit at the wrong baud rate looks like: bytes, never a frame
+    (tmp_path / "noise.bin").write_bytes(noise.tobytes())
+    code, stdout, err = run("record", "--port", f"file:{tmp_path / 'noise.bin'}", "--out", tmp_path / "n.kfr",
+                            "--duration", "5", "--json")
+    summary = json.loads(stdout)
+    assert code == 0 and summary["streams"][0]["frames"] == 0 and summary["streams"][0]["closed"]
+    assert any("wrong baud rate" in w for w in summary["warnings"])
+    code, stdout, _ = run("decode", tmp_path / "n.kfr", "--json")
+    assert any("wrong baud rate" in (e.get("text") or "") for e in json.loads(stdout)["streams"][0]["events"])
+
+
+def test_stats_on_a_tlog(run, tmp_path):
+    import struct as _struct
+    from kinefuse.host.link.fakeunit import raw_frames
+    frames = raw_frames(1000, unit_id=2, rate_hz=100, seed=1)
+    log = b"".join(_struct.pack(">Q", 1_700_000_000_000_000 + 10_000 * k + 1500) + frames[k * 46:(k + 1) * 46]
+                   for k in range(1000) if k != 500)
+    (tmp_path / "x.tlog").write_bytes(log)
+    code, stdout, _ = run("stats", tmp_path / "x.tlog", "--json")
+    u = json.loads(stdout)["streams"][0]["units"][0]
+    assert u["messages"]["KF_RAW_SAMPLE"]["samples_lost"] == 1
+    # host times count from the first tlog stamp, which is 1.5 ms after device time 0: offset 0
+    assert abs(u["clock"]["drift_ppm"]) < 1 and u["clock"]["offset_s"] == pytest.approx(0.0, abs=1e-6)

@@ -176,3 +176,26 @@ def test_killed_recorder_loses_at_most_a_second(tmp_path):
     alive = (killed_at - start_mono) / 1e9
     assert alive - last <= 1.0, (alive, last)
     assert df.streams[0].arrays[52500].size >= 500 * (last - 0.5)
+
+
+def test_tlog_frames_and_times_match_pymavlink(tmp_path):
+    import struct as _struct
+    from kinefuse.host.link.dialect import use_with_mavutil
+    frames = raw_frames(300, unit_id=4, seed=9)
+    t0_us = 1_700_000_000_000_000
+    log = b"".join(_struct.pack(">Q", t0_us + 5000 * k) + frames[k * FRAME:(k + 1) * FRAME] for k in range(300))
+    path = tmp_path / "flight.tlog"
+    path.write_bytes(log)
+    df = decode_file(path)
+    arr, host = df.streams[0].arrays[52500], df.streams[0].host_ns[52500]
+    assert arr.size == 300 and df.start_unix_ns == t0_us * 1000
+    assert (host // 1000).tolist() == [t0_us + 5000 * k for k in range(300)]
+    mavutil = use_with_mavutil()
+    conn = mavutil.mavlink_connection(str(path))
+    ref = []
+    while True:
+        m = conn.recv_match(type="KF_RAW_SAMPLE")
+        if m is None:
+            break
+        ref.append((m.sample_counter, round(m._timestamp * 1e6)))
+    assert ref == [(int(c), int(h // 1000)) for c, h in zip(arr["sample_counter"], host)]
