@@ -28,7 +28,7 @@ vector); M has orthonormal columns orthogonal to q, so M Mᵀ = I − q qᵀ.
 from __future__ import annotations
 
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
-from kinefuse.codegen.scalar import assume, clamp, fmax, rnorm, sqrt
+from kinefuse.codegen.scalar import assume, clamp, fmax, rnorm, select, sqrt
 
 SQRT_HALF = 0.7071067811865476
 
@@ -213,14 +213,16 @@ def cholesky4(S, floor: float, bound: float):
     return L, inv
 
 
-def forward_solve4(L, inv, b, bound: float):
-    """y = L⁻¹ b (forward substitution); every |y_i| <= ``bound`` (caller's proof)."""
+def forward_solve4(L, inv, b, bound: float, clip: bool = False):
+    """y = L⁻¹ b (forward substitution).  Every |y_i| <= ``bound``: proved by the caller
+    (``clip`` False, stated with assume()), or enforced by clipping in every number system."""
     y = [0.0] * 4
     for i in range(4):
         s = b[i]
         for k in range(i):
             s = s - L[i][k] * y[k]
-        y[i] = assume(s * inv[i], -bound, bound)
+        v = s * inv[i]
+        y[i] = clamp(v, -bound, bound) if clip else assume(v, -bound, bound)
     return y
 
 
@@ -228,10 +230,11 @@ def kf_identity_update(x: Quat, P, z: Quat, R, floor: float, s_max: float, p_max
                        y_max: float):
     """One Kalman update with H = I for a quaternion state (all covariances in units of s_ref).
 
-    S = P + R = L Lᵀ;  Y = L⁻¹ P;  y = L⁻¹ (z − x);  x⁺ = x + Yᵀ y;  P⁺ = P − Yᵀ Y.
+    S = P + R = L Lᵀ;  Y = L⁻¹ P;  y = L⁻¹ (z − x);  x⁺ = x + Yᵀ y;  P⁺ = P − Yᵀ Y
     (K = P S⁻¹ = Yᵀ L⁻¹, so K ν = Yᵀ y and K S Kᵀ = Yᵀ Y.)  Bounds used for the fixed-point
     formats, all mathematical: |L_ij| <= sqrt(S_ii) <= sqrt(s_max); (Yᵀ Y)_jj <= P_jj because
-    P S⁻¹ P <= P, so |Y_ij| <= sqrt(p_max); |y|² = νᵀ S⁻¹ ν <= |ν|²/floor <= y_max².
+    P S⁻¹ P <= P, so |Y_ij| <= sqrt(p_max); |y|² = νᵀ S⁻¹ ν <= |ν|² / floor <= y_max² for
+    unit x, z and S >= floor·I.
     Returns (x⁺ (not normalised), P⁺ as rows)."""
     S = [[P[i][j] + R[i][j] for j in range(4)] for i in range(4)]
     L, inv = cholesky4(S, floor, s_max ** 0.5)
@@ -240,7 +243,8 @@ def kf_identity_update(x: Quat, P, z: Quat, R, floor: float, s_max: float, p_max
     Y = [[cols[j][i] for j in range(4)] for i in range(4)]          # Y[i][j] = (L⁻¹P)_ij
     nu = [z[i] - x[i] for i in range(4)]
     y = forward_solve4(L, inv, nu, y_max)
-    xn = Quat(*(assume(x[j] + _sum(Y[i][j] * y[i] for i in range(4)), -2.0, 2.0)
+    # x⁺ is normalised by the caller; the clip at ±2 (x and z are unit) only bounds the range
+    xn = Quat(*(clamp(x[j] + _sum(Y[i][j] * y[i] for i in range(4)), -2.0, 2.0)
                 for j in range(4)))
     Pn = [[None] * 4 for _ in range(4)]
     for i in range(4):
@@ -253,11 +257,26 @@ def kf_identity_update(x: Quat, P, z: Quat, R, floor: float, s_max: float, p_max
     return xn, Pn
 
 
+H_MAX = 0.5   # rad: largest half-angle step per axis of the first-order transition
+
+
+def half_step(omega: Vec3, dt) -> Vec3:
+    """h = ω dt / 2 per axis, limited to ±H_MAX (a first-order transition cannot represent a
+    larger step anyway; the limit also bounds Φ for the fixed-point formats)."""
+    return Vec3(*(clamp(w * (0.5 * dt), -H_MAX, H_MAX) for w in omega))
+
+
+def predict_quaternion(q: Quat, omega: Vec3, dt) -> Quat:
+    """Φ q = q + q ⊗ (0, h), normalised (seed eq. 5.2 / 5.42)."""
+    return (q + q * Quat(0.0, *half_step(omega, dt))).normalized()
+
+
 def kf_predict(P, q: Quat, omega: Vec3, dt, k_proc, p_max: float):
-    """P⁻ = Φ P Φᵀ + k M(q) M(q)ᵀ with Φ = I + dt/2 Ω(ω) (q⁻ = Φ q = q + dt/2 q ⊗ (0, ω)),
-    the seeds' zero-order transition, and the process noise of a white gyroscope error
-    (Ξ Σ_g Ξᵀ (dt/2)² = k (I − q qᵀ) for an isotropic Σ_g; M Mᵀ = I − q qᵀ)."""
-    hx, hy, hz = omega.x * (0.5 * dt), omega.y * (0.5 * dt), omega.z * (0.5 * dt)
+    """P⁻ = Φ P Φᵀ + k M(q) M(q)ᵀ with Φ = I + Ω(h) (q⁻ = Φ q = q + q ⊗ (0, h)), h the
+    half-angle step of :func:`half_step` — the seeds' zero-order transition — and the process
+    noise of a white gyroscope error (Ξ Σ_g Ξᵀ (dt/2)² = k (I − q qᵀ) for an isotropic Σ_g;
+    M Mᵀ = I − q qᵀ)."""
+    hx, hy, hz = half_step(omega, dt)
     # q ⊗ (0, h) = Ω(h) q with Ω(h) the right-multiplication matrix
     Phi = [[1.0, -hx, -hy, -hz],
            [hx, 1.0, hz, -hy],
@@ -272,6 +291,81 @@ def kf_predict(P, q: Quat, omega: Vec3, dt, k_proc, p_max: float):
             v = assume(PP[i][j] + k_proc * assume(mm, -1.0, 1.0), -p_max, p_max)
             out[i][j] = out[j][i] = v
     return out
+
+
+# ----------------------------------------------------------------------------------------------
+# the quaternion-state Kalman filter shared by VAK and GUO (covariances in units of s_ref)
+
+T_MIN, T_MAX = 1.0 / 16.0, 16.0   # tilt variance of one sample relative to s_ref (g²/|a|² for VAK)
+R_HEAD_MAX = 1024.0                # heading variance cap: beyond it a heading measurement is void
+K_MAX = 16.0                       # process noise per step relative to s_ref (cap)
+P_MAX = 2048.0                     # |P̃_ij| bound (P̃⁺ <= R̃ for H = I; + process noise)
+R_FLOOR = 1.0 / 64.0              # variance added to every direction of R̃ (keeps S well conditioned)
+Y_MAX = 16.0                       # |y| = |L⁻¹ν| <= |ν| / sqrt(λmin(S)) <= 2 / sqrt(R_FLOOR)
+MIN_FIELD_SIN2 = 0.0076            # sin²(5°): field closer than 5° to vertical gives no heading
+
+
+def heading_sigma(t, smt, gamma, lz, use_mag):
+    """Normalised covariance of the earth-frame rotation-vector error of the algebraic
+    (tilt from gravity, heading from the horizontal field) measurement, as (t, s, c):
+    Σ̃ = [[t, 0, 0], [0, t, c], [0, c, s]].
+
+    First-order propagation of the sensor noise (Valenti 2016's J Σ_u Jᵀ, derived in the earth
+    frame): with â, m̂ the unit vectors, t = var(â_⊥) and smt = var(m̂_⊥) (both / s_ref), the field
+    direction (0, h, v) in ENU (h² = gamma, v = lz):  δθ_x = δâ_y, δθ_y = −δâ_x,
+    δθ_z = (δm̂_x − v δâ_x)/h, hence s = (smt + v² t)/h² and c = cov(δθ_y, δθ_z) = t v / h.
+    Without a usable field reading the heading is uninformed: s = R_HEAD_MAX, c = 0."""
+    inv_h2 = 1.0 / fmax(gamma, MIN_FIELD_SIN2)
+    s_m = clamp((smt + lz * lz * t) * inv_h2, 0.0, R_HEAD_MAX)
+    c_m = t * lz * sqrt(inv_h2)
+    lim = sqrt(fmax(t * s_m, 0.0))
+    c_m = clamp(c_m, -lim, lim)                   # keeps Σ̃ positive semidefinite after the cap
+    s = select(use_mag, s_m, R_HEAD_MAX)
+    c = select(use_mag, c_m, 0.0)
+    return s, c
+
+
+def r_from_sigma(z: Quat, t, s, c):
+    """R̃ = M(z) Σ̃ M(z)ᵀ + t z zᵀ + R_FLOOR I for Σ̃ = [[t,0,0],[0,t,c],[0,c,s]]
+    = (t + R_FLOOR) I + (s − t) m2 m2ᵀ + c (m1 m2ᵀ + m2 m1ᵀ)  (M Mᵀ = I − z zᵀ; m1, m2 columns
+    of M).  The z zᵀ term gives the (meaningless) norm direction the tilt variance; the floor
+    (1/64 of the nominal tilt variance) keeps P⁻ + R̃ >= R_FLOOR I, which bounds the whitened
+    innovation for the fixed-point formats."""
+    M = m_matrix(z)
+    m1 = [M[i][1] for i in range(4)]
+    m2 = [M[i][2] for i in range(4)]
+    d = s - t
+    R = [[None] * 4 for _ in range(4)]
+    for i in range(4):
+        for j in range(i, 4):
+            v = d * (m2[i] * m2[j]) + c * (m1[i] * m2[j] + m2[i] * m1[j])
+            if i == j:
+                v = v + (t + R_FLOOR)
+            R[i][j] = R[j][i] = assume(v, -2.0 * R_HEAD_MAX, 2.0 * R_HEAD_MAX)
+    return R
+
+
+def align_sign(z: Quat, ref: Quat) -> Quat:
+    """±z, whichever is closer to ref (the measurement of a rotation has two quaternions)."""
+    flip = z.dot(ref) < 0.0
+    return Quat(*(select(flip, -c_, c_) for c_ in z))
+
+
+def quat_kf(x, chk, q_pred: Quat, k_proc, z: Quat, R, do_update):
+    """Predict + (optional) update of the quaternion Kalman filter; returns (q, P̃ packed).
+    q_pred = Φ q (normalised); the update runs where ``do_update``."""
+    P = unpack4(x.P)
+    Pm = kf_predict(P, Quat(*x.q), chk.gyr, chk.dt, k_proc, P_MAX)
+    xn, Pn = kf_identity_update(q_pred, Pm, z, R, R_FLOOR, P_MAX + 2.0 * R_HEAD_MAX, P_MAX,
+                                Y_MAX)
+    q_up = xn.normalized()
+    q_new = vselect(do_update, q_up, q_pred)
+    P_new = [[select(do_update, Pn[i][j], Pm[i][j]) for j in range(4)] for i in range(4)]
+    return q_new, pack4(P_new)
+
+
+P_STATE_DOC = ("state covariance, upper triangle row by row (00 01 02 03 11 12 13 22 23 33), "
+               "in units of s_ref (see the filter's docstring)")
 
 
 def clamp01(v):
