@@ -243,7 +243,7 @@ def test_headers_compile_for_cortex_m4(tmp_path):
 @needs_gcc
 def test_generated_c_testsuite_round_trips(tmp_path):
     (tmp_path / "t.c").write_text(C_TESTSUITE)
-    r = subprocess.run([gcc, "-std=c99", "-O1", "-Wall", "-Wno-unused-function", "-Wno-address-of-packed-member",
+    r = subprocess.run([gcc, "-std=c99", "-O0", "-Wall", "-Wno-unused-function", "-Wno-address-of-packed-member",
                         "-I", str(GENERATED), "-o", str(tmp_path / "t"), str(tmp_path / "t.c")],
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stderr[-2000:]
