@@ -1,32 +1,34 @@
 """kinefuse flagship orientation filter: 6D and 9D orientation, gyroscope bias, rest and magnetic
 disturbance status from one update.
 
-Structure (frames: S sensor, I almost-inertial, E6 6D earth frame (z up, heading free),
-E earth frame East-North-Up, y towards magnetic north):
+Frames: S sensor; I almost-inertial (the gyroscope-only frame); E6 6D earth frame (z up, heading
+free); E earth frame East-North-Up, y towards magnetic north.  Units SI (rad, rad/s, m/s^2, s);
+the magnetometer in any unit (uT in BROAD): only its direction and relative magnitude are used.
 
-* strapdown: q_i (S -> I) integrates the bias-corrected gyroscope with a two-sample coning
-  term and a second-order step quaternion, per-sample time step;
-* inclination: the specific force is rotated into I and low-pass filtered there (two first-order
-  stages, each tau_acc / 2: DC group delay tau_acc).  Linear acceleration integrates to a velocity
-  change, so its mean in an inertial frame is small; the filtered vector is gravity.  q_a (I -> E6)
-  is corrected so that the filtered vector points up.  Only q_a is corrected: the filter state is
-  never rotated by its own corrections;
-* heading: one scalar rotation delta about the vertical (stored as the quaternion (cos, sin) of
-  delta/2) from the horizontal magnetic field, so the magnetometer never touches inclination.
-  A scalar Kalman filter sets the gain: the heading variance grows with time (heading random
-  walk) and shrinks with each accepted magnetometer sample; tau_mag is the steady-state time
-  constant.  After an initialisation or a disturbance the variance is large, so the heading
-  recovers quickly;
-* magnetic disturbance: the field in the earth frame (horizontal magnitude, vertical component) is
-  compared with a learned local reference; a sample further than mag_th * |B_ref| from it, or one
-  whose heading disagreement is implausible for the current heading variance, is rejected.
-  Rejection is bounded by mag_reject_time, after which the reference is re-learnt;
+* strapdown: q_i (S -> I) integrates the bias-corrected gyroscope with the two-sample coning
+  term and a fourth-order step quaternion; every sample carries its own time step;
+* inclination: the specific force is rotated into I and low-pass filtered there (second-order
+  Butterworth, DC group delay tau_acc).  Linear acceleration integrates to a velocity change, so
+  its mean in an inertial frame is small: the filtered vector is gravity.  q_a (I -> E6) is
+  corrected so that it points up.  Only q_a is corrected, so the low-pass state is never rotated
+  by the filter's own corrections;
+* heading: one rotation delta about the vertical (stored as (cos, sin) of delta/2) from the
+  horizontal magnetic field, so the magnetometer never touches inclination.  A scalar Kalman
+  filter sets the gain: the heading variance grows with time and shrinks with each accepted
+  sample; tau_mag is the steady-state time constant.  After the start or a disturbance the
+  variance is large and the heading converges quickly;
+* magnetic disturbance: the field magnitude and dip (through a short noise low-pass) are compared
+  with a learnt reference; a disagreement implausible for the heading variance is also rejected.
+  A new field that stays consistent for mag_new_time while the sensor rotates becomes the
+  reference; rejection never lasts longer than mag_reject_time (then the current field is
+  adopted);
 * gyroscope bias: at rest (gyroscope and accelerometer still for rest_time) a Kalman update
-  towards the low-pass filtered gyroscope; in motion the inclination correction and (9D) the
-  accepted heading correction feed an integral term, so every bias component converges as soon as
-  the sensor's orientation varies, whatever it is.
+  towards the low-pass gyroscope, whatever the orientation; in motion the inclination correction
+  and (9D) the accepted heading correction feed an integral term whose gain follows the bias
+  variance, so every component converges once the orientation varies.
 
-Everything is one float32 (or fixed-point) update: no double-precision state.
+One float32 (or fixed-point) update, no double-precision state.  Outputs q (9D or 6D by mode),
+q6 and q9 from the same run, and the status rest, mag_disturbed, rejected, bias.
 """
 from __future__ import annotations
 
@@ -41,13 +43,20 @@ from kinefuse.codegen.scalar import (all_of, any_of, assume, clamp, fabs, fmax, 
                                      logical_and, logical_not, logical_or, rnorm, select)
 
 DEG = math.pi / 180.0
-T_SAT = 1.0e4          # s; timers saturate here
-BIAS_LIM = 10.0 * DEG  # rad/s; declared range of the bias state (bias_max may not exceed it)
-P_HEAD_MAX = 4.0       # rad^2; heading variance ceiling (about 115 deg standard deviation)
-REF_MAX = 200.0        # uT; declared range of the learned local field
-LP_MAX = ACC_MAX       # m/s^2; declared range of the filtered specific force
-
+T_SAT = 1.0e4              # s; timers saturate here
+BIAS_LIM = 10.0 * DEG      # rad/s; range of the bias state (bias_max cannot exceed it)
+P_BIAS_MAX = (5.0 * DEG) ** 2
+P_HEAD_MAX = 4.0           # rad^2; heading variance ceiling (about 115 deg)
+N_MAX = 2.0 * MAG_MAX      # magnetometer magnitude range (any unit up to the input range)
+LP_MAX = 2.0 * ACC_MAX     # m/s^2; range of the filtered specific force
+LPV_MAX = 8.0 * ACC_MAX    # m/s^3; range of its rate (natural frequency <= 2.9 rad/s)
+STEP_MAX = 2.0             # rad; largest rotation accepted in one step (per axis)
 UNIT = (-1.0, 1.0)
+
+
+def _unit(v):
+    """Components of a vector known to have unit length (or less)."""
+    return Vec3(*(assume(c, *UNIT) for c in v))
 
 
 def _strict_within(v, limit):
@@ -55,23 +64,29 @@ def _strict_within(v, limit):
     return all_of(*(fabs(c) < limit for c in v))
 
 
-def _lp(y, x, k):
-    """One first-order low-pass step y + k (x - y) of a vector."""
-    return Vec3(*(yi + k * (xi - yi) for yi, xi in zip(y, x)))
-
-
 def _clamp3(v, lo, hi):
     return Vec3(*(clamp(c, lo, hi) for c in v))
+
+
+def _fld(n, d):
+    """A field record (magnitude, horizontal part, vertical part of the direction)."""
+    return Vec3(n, d[0], d[1])
+
+
+def _unfld(name, f):
+    """State entries of a field record; magnitude and direction kept within their ranges."""
+    return {f"{name}_n": clamp(f[0], 0.0, N_MAX),
+            f"{name}_d": (clamp(f[1], -1.0, 1.0), clamp(f[2], -1.0, 1.0))}
 
 
 class Flagship(Estimator):
     """kinefuse flagship orientation filter (6D + 9D, bias, rest, magnetic disturbance).
 
-    Inputs: gyroscope rad/s, accelerometer m/s^2 (+g up at rest), magnetometer uT (any
-    calibrated unit works: only directions and ratios are used), mag_valid, per-sample dt in s.
-    Outputs: q (9D when mode = 1, else 6D), q6 (inclination exact, heading from the gyroscope),
-    q9 (heading from the magnetometer; equals q6 in mode 0), all sensor -> East-North-Up, and
-    the status rest, mag_disturbed, rejected, bias (rad/s, sensor frame).
+    Inputs: gyroscope rad/s, accelerometer m/s^2 (+g up at rest), magnetometer (any unit, uT
+    in BROAD), mag_valid, per-sample dt in s.  Outputs, all sensor -> East-North-Up: q (9D when
+    mode = 1, else 6D), q6 (inclination from the accelerometer, heading from the gyroscope only),
+    q9 (heading from the magnetometer; equals q6 in mode 0); status rest, mag_disturbed,
+    rejected (samples or sensor readings), bias (rad/s, sensor frame).
     """
 
     name = "flagship"
@@ -88,40 +103,51 @@ class Flagship(Estimator):
         Param("heading_rw", 0.2 * DEG, "rad/s^0.5", 0.01 * DEG, 5.0 * DEG,
               "heading random walk between magnetometer corrections (gyroscope bias residual)"),
         Param("tau_bias", 40.0, "s", 5.0, 1000.0,
-              "time constant of the gyroscope bias estimation in motion"),
+              "time constant of the gyroscope bias estimation in motion while the bias is "
+              "unknown (it slows down as the bias variance shrinks)"),
         Param("bias_sigma_init", 0.5 * DEG, "rad/s", 0.01 * DEG, 5.0 * DEG,
               "standard deviation of the bias before any estimate (and its ceiling)"),
-        Param("bias_forget_time", 100.0, "s", 1.0, 1000.0,
-              "time in which the bias uncertainty grows back to bias_sigma_init"),
+        Param("bias_forget_time", 1000.0, "s", 1.0, 10000.0,
+              "time in which the bias variance grows back to bias_sigma_init^2 (bias "
+              "instability)"),
         Param("bias_sigma_rest", 0.03 * DEG, "rad/s", 0.001 * DEG, 1.0 * DEG,
-              "noise of one low-pass filtered gyroscope sample used as bias at rest"),
+              "noise of one low-pass filtered gyroscope sample used as the bias at rest"),
         Param("bias_max", 2.0 * DEG, "rad/s", 0.1 * DEG, BIAS_LIM,
-              "largest bias accepted (the bias estimate is clipped; a faster low-pass "
-              "rotation is never taken for rest)"),
+              "largest bias accepted: the estimate is clipped, and a low-pass rate above it is "
+              "never taken for rest"),
         Param("rest_th_gyr", 2.0 * DEG, "rad/s", 0.1 * DEG, 20.0 * DEG,
               "rest: largest deviation of the gyroscope from its low-pass value"),
         Param("rest_th_acc", 0.5, "m/s^2", 0.05, 5.0,
               "rest: largest deviation of the accelerometer from its low-pass value"),
         Param("rest_time", 1.5, "s", 0.1, 30.0, "rest: time the conditions must hold"),
         Param("tau_rest", 0.5, "s", 0.05, 5.0, "time constant of the rest-detection low-pass"),
+        Param("tau_mag_noise", 0.05, "s", 0.001, 5.0,
+              "time constant of the low-pass through which the disturbance tests see the field"),
         Param("mag_th", 0.1, "", 0.01, 1.0,
-              "magnetic disturbance: largest distance of the earth-frame field (horizontal, "
-              "vertical) from the learned reference, relative to its magnitude"),
-        Param("mag_gate", 4.0, "sigma", 1.0, 100.0,
+              "magnetic disturbance: largest deviation of the field magnitude from the "
+              "reference, relative to it"),
+        Param("mag_dip_th", math.sin(10.0 * DEG), "", 0.01, 1.0,
+              "magnetic disturbance: largest sine of the dip difference from the reference "
+              "(sin 10 deg)"),
+        Param("mag_gate", 4.0, "", 1.0, 100.0,
               "heading disagreements beyond this many standard deviations are rejected"),
         Param("mag_sigma_gate", 10.0 * DEG, "rad", 0.1 * DEG, 90.0 * DEG,
-              "standard deviation of one magnetometer heading (noise, calibration) for the "
-              "gate"),
+              "standard deviation of one magnetometer heading (noise, calibration) in the gate"),
         Param("tau_mag_ref", 20.0, "s", 1.0, 600.0,
-              "time constant of learning the local field reference"),
+              "time constant of learning the reference (and candidate) field"),
+        Param("mag_new_time", 20.0, "s", 1.0, 600.0,
+              "a new field that stays consistent this long while the sensor rotates becomes "
+              "the reference"),
+        Param("mag_new_min_rate", 20.0 * DEG, "rad/s", 0.0, 360.0 * DEG,
+              "rotation rate that counts as rotating for the new-field test"),
         Param("mag_reject_time", 60.0, "s", 1.0, 3600.0,
-              "longest continuous rejection: afterwards the current field becomes the reference"),
+              "longest rejection: afterwards the current field becomes the reference"),
         Param("mag_min_undisturbed", 0.5, "s", 0.0, 10.0,
               "time the field must be undisturbed before heading corrections resume"),
         Param("gyr_range", GYR_MAX, "rad/s", 0.1, GYR_MAX,
               "gyroscope full scale: a sample at or beyond it is saturated and rejected"),
         Param("acc_range", ACC_MAX, "m/s^2", 1.0, ACC_MAX,
-              "accelerometer full scale: a saturated sample is not used for inclination"),
+              "accelerometer full scale: a saturated sample is not used (gyroscope only)"),
     )
     state = (
         Var("q_i", 4, -1.0, 1.0, "", "strapdown orientation, sensor -> almost-inertial frame",
@@ -132,14 +158,14 @@ class Flagship(Estimator):
             init=(1.0, 0.0)),
         Var("bias", 3, -BIAS_LIM, BIAS_LIM, "rad/s", "gyroscope bias, sensor frame",
             init=(0.0, 0.0, 0.0)),
-        Var("p_bias", 1, 0.0, (5.0 * DEG) ** 2, "(rad/s)^2", "bias variance (each axis)",
+        Var("p_bias", 1, 0.0, P_BIAS_MAX, "(rad/s)^2", "bias variance (each axis)",
             init=(0.5 * DEG) ** 2),
-        Var("lp1", 3, -LP_MAX, LP_MAX, "m/s^2", "specific force low-pass, stage 1, frame I",
+        Var("lp_x", 3, -LP_MAX, LP_MAX, "m/s^2", "low-pass filtered specific force, frame I",
             init=(0.0, 0.0, 0.0)),
-        Var("lp2", 3, -LP_MAX, LP_MAX, "m/s^2", "specific force low-pass, stage 2, frame I",
+        Var("lp_v", 3, -LPV_MAX, LPV_MAX, "m/s^3", "rate of the low-pass output, frame I",
             init=(0.0, 0.0, 0.0)),
-        Var("w_prev", 3, -2.0 * GYR_MAX, 2.0 * GYR_MAX, "rad/s",
-            "previous bias-corrected angular rate (coning term)", init=(0.0, 0.0, 0.0)),
+        Var("th_prev", 3, -STEP_MAX, STEP_MAX, "rad",
+            "previous rotation increment (coning term)", init=(0.0, 0.0, 0.0)),
         Var("rest_gyr", 3, -GYR_MAX, GYR_MAX, "rad/s", "rest detection: gyroscope low-pass",
             init=(0.0, 0.0, 0.0)),
         Var("rest_acc", 3, -ACC_MAX, ACC_MAX, "m/s^2", "rest detection: accelerometer low-pass",
@@ -148,13 +174,21 @@ class Flagship(Estimator):
         Var("p_head", 1, 0.0, P_HEAD_MAX, "rad^2", "heading variance", init=P_HEAD_MAX),
         Var("t_mag", 1, 0.0, 2.0 * DT_MAX, "s", "time since the previous magnetometer sample",
             init=0.0),
-        Var("ref_h", 1, 0.0, REF_MAX, "uT", "learned local field: horizontal magnitude",
+        Var("cur_n", 1, 0.0, N_MAX, "", "current field through the noise low-pass: magnitude (input unit)", init=0.0),
+        Var("cur_d", 2, -1.0, 1.0, "", "current field through the noise low-pass: horizontal and vertical (up) parts of its "
+            "direction", init=(0.0, 0.0)),
+        Var("ref_n", 1, 0.0, N_MAX, "", "reference field: magnitude (input unit)", init=0.0),
+        Var("ref_d", 2, -1.0, 1.0, "", "reference field: horizontal and vertical (up) parts of its "
+            "direction", init=(0.0, 0.0)),
+        Var("cand_n", 1, 0.0, N_MAX, "", "candidate new field: magnitude (input unit)", init=0.0),
+        Var("cand_d", 2, -1.0, 1.0, "", "candidate new field: horizontal and vertical (up) parts of its "
+            "direction", init=(0.0, 0.0)),
+        Var("ref_t", 1, 0.0, T_SAT, "s", "time the reference has been learnt (0: none)",
             init=0.0),
-        Var("ref_v", 1, -REF_MAX, REF_MAX, "uT", "learned local field: vertical component (up)",
+        Var("cand_t", 1, 0.0, T_SAT, "s", "time the candidate has been consistent in rotation",
             init=0.0),
-        Var("ref_t", 1, 0.0, T_SAT, "s", "time the reference has been learnt (undisturbed)",
+        Var("dist_t", 1, 0.0, T_SAT, "s", "rejection time (decays twice as fast when clear)",
             init=0.0),
-        Var("dist_t", 1, 0.0, T_SAT, "s", "time the field has been disturbed", init=0.0),
         Var("undist_t", 1, 0.0, T_SAT, "s", "time the field has been undisturbed", init=0.0),
         INITIALISED,
         REJECTED,
@@ -166,168 +200,191 @@ class Flagship(Estimator):
         Var("rest", 1, 0, 1, "", "1 while the sensor is at rest", BOOL),
         Var("mag_disturbed", 1, 0, 1, "", "1 while the magnetic field is rejected", BOOL),
         Var("rejected", 1, 0, 2 ** 31 - 1, "samples",
-            "samples (or parts: accelerometer, magnetometer) rejected as non-finite, saturated "
-            "or out of range", REJECTED.type),
+            "samples or sensor readings rejected as non-finite, saturated or out of range",
+            REJECTED.type),
         Var("bias", 3, -BIAS_LIM, BIAS_LIM, "rad/s", "gyroscope bias estimate, sensor frame"),
     )
 
     def step(self, x, u, p):
-        gyr, acc, mag, dt = Vec3(*u.gyr), Vec3(*u.acc), Vec3(*u.mag), u.dt
         nine = p.mode > 0.5
-
-        # -- sample validation --------------------------------------------------------------
-        gyr_ok = all_of(_strict_within(gyr, p.gyr_range), dt > 0.0, dt <= DT_MAX)
-        acc_ok = logical_and(gyr_ok, _strict_within(acc, p.acc_range))
-        mag_fine = all_of(*(fabs(c) <= MAG_MAX for c in mag))
-        use_mag_raw = all_of(gyr_ok, u.mag_valid, mag_fine)
-        bad = any_of(logical_not(gyr_ok), logical_not(acc_ok),
+        # -- sample validation; clamped copies keep every intermediate bounded --------------
+        gyr_ok = all_of(_strict_within(u.gyr, p.gyr_range), u.dt > 0.0, u.dt <= DT_MAX)
+        acc_ok = logical_and(gyr_ok, _strict_within(u.acc, p.acc_range))
+        mag_fine = all_of(*(fabs(c) <= MAG_MAX for c in u.mag))
+        use_mag = all_of(gyr_ok, nine, u.mag_valid, mag_fine)
+        bad = any_of(logical_not(gyr_ok), logical_not(_strict_within(u.acc, p.acc_range)),
                      logical_and(u.mag_valid, logical_not(mag_fine)))
-        use_mag_raw = logical_and(use_mag_raw, nine)
-        dt = select(gyr_ok, dt, 0.0)      # a rejected sample advances nothing
+        gyr = _clamp3(Vec3(*u.gyr), -GYR_MAX, GYR_MAX)
+        acc = _clamp3(Vec3(*u.acc), -ACC_MAX, ACC_MAX)
+        mag = _clamp3(Vec3(*u.mag), -MAG_MAX, MAG_MAX)
+        dt = select(gyr_ok, clamp(u.dt, 0.0, DT_MAX), 0.0)   # a rejected sample advances nothing
 
         q_i, q_a = Quat(*x.q_i), Quat(*x.q_a)
         bias = Vec3(*x.bias)
+        w = gyr - bias                                   # rad/s, sensor frame
 
-        # -- strapdown integration --------------------------------------------------------------
-        w = gyr - bias
-        w_prev = Vec3(*x.w_prev)
-        # rotation vector of the step: w dt plus the two-sample coning term (w_prev x w) dt^2/12
-        cone = w_prev.cross(w) * (dt * dt * (1.0 / 12.0))
-        phi = w * dt + cone
-        th2 = fmin(phi.norm_sq(), 1.0)
-        # (cos(th/2), sin(th/2)/th * phi) to fourth order in th (error ~ th^5 / 480)
-        c0 = 1.0 - 0.125 * th2
+        # -- strapdown ----------------------------------------------------------------------
+        # rotation vector of the step: theta plus the two-sample coning term theta_prev x theta / 12
+        theta = _clamp3(w * dt, -STEP_MAX, STEP_MAX)
+        th_prev = Vec3(*x.th_prev)
+        phi = theta + th_prev.cross(theta) * (1.0 / 12.0)
+        th2 = fmin(phi.norm_sq(), 4.0)
+        # (cos(a/2), sin(a/2)/a * phi) to fourth order in the angle a (error ~ a^5 / 480)
         s0 = 0.5 - th2 * (1.0 / 48.0)
-        dq = Quat(c0, s0 * phi.x, s0 * phi.y, s0 * phi.z)
+        dq = Quat(1.0 - 0.125 * th2, s0 * phi.x, s0 * phi.y, s0 * phi.z)
         q_i_new = (q_i * dq).normalized()
 
-        # -- inclination: low-pass of the specific force in the almost-inertial frame ----------
-        k_acc = clamp(dt * 2.0 / p.tau_acc, 0.0, 1.0)
-        a_i = q_i_new.rotate(acc)
-        lp1 = _clamp3(_lp(Vec3(*x.lp1), a_i, k_acc), -LP_MAX, LP_MAX)
-        lp2 = _clamp3(_lp(Vec3(*x.lp2), lp1, k_acc), -LP_MAX, LP_MAX)
-        g_e = q_a.rotate(lp2)
+        # -- inclination ----------------------------------------------------------------------
+        # second-order Butterworth low-pass of the specific force in frame I (natural frequency
+        # wn = sqrt(2)/tau_acc, damping 1/sqrt(2), DC group delay tau_acc), semi-implicit step:
+        # v += dt (wn^2 (a - x) - sqrt(2) wn v);  x += dt v
+        inv_tau = 1.0 / p.tau_acc
+        kv = fmin(2.0 * dt * inv_tau, 1.0)               # dt sqrt(2) wn
+        kx = kv * inv_tau                                # dt wn^2
+        a_i = Vec3(*(assume(c, -ACC_MAX * 1.7321, ACC_MAX * 1.7321)
+                     for c in q_i_new.rotate(acc)))
+        lp_x, lp_v = Vec3(*x.lp_x), Vec3(*x.lp_v)
+        lp_v_new = _clamp3(Vec3(*(vi + kx * (ai - xi) - kv * vi
+                                  for vi, ai, xi in zip(lp_v, a_i, lp_x))), -LPV_MAX, LPV_MAX)
+        lp_x_new = _clamp3(lp_x + lp_v_new * dt, -LP_MAX, LP_MAX)
+        g_e = Vec3(*(assume(c, -LP_MAX * 1.7321, LP_MAX * 1.7321)
+                     for c in q_a.rotate(lp_x_new)))
         gh, _ = g_e.normalized(1e-6)
         # C = (1 + gz, gy, -gx, 0) rotates the filtered direction onto +z (half-way quaternion);
-        # the floor keeps an upside-down start well defined (any noise then leaves it)
+        # the floor keeps an upside-down start defined (noise leaves that equilibrium)
         corr = Quat(fmax(1.0 + gh.z, 1e-3), gh.y, -gh.x, 0.0)
-        q_a_corr = (corr * q_a).normalized()
-        q_a_new = vselect(acc_ok, q_a_corr, q_a)
-        lp1 = vselect(acc_ok, lp1, Vec3(*x.lp1))
-        lp2 = vselect(acc_ok, lp2, Vec3(*x.lp2))
+        q_a_new = vselect(acc_ok, (corr * q_a).normalized(), q_a)
+        lp_x_new = vselect(acc_ok, lp_x_new, lp_x)
+        lp_v_new = vselect(acc_ok, lp_v_new, lp_v)
         q6 = (q_a_new * q_i_new).normalized()
-
-        # correction angle (rad, E6 frame) of this step: sin(angle) = |gh_horizontal|
-        theta_e = vselect(acc_ok, Vec3(gh.y, -gh.x, 0.0), Vec3(0.0, 0.0, 0.0))
+        # this step's correction (rad, E6 frame; sin of the angle): input of the bias estimation
+        theta_c = vselect(acc_ok, Vec3(gh.y, -gh.x, 0.0), Vec3(0.0, 0.0, 0.0))
 
         # -- rest detection -------------------------------------------------------------------
-        k_rest = clamp(dt / p.tau_rest, 0.0, 1.0)
-        rest_gyr = _lp(Vec3(*x.rest_gyr), gyr, k_rest)
-        rest_acc = _lp(Vec3(*x.rest_acc), acc, k_rest)
-        dev_g = (gyr - rest_gyr).norm_sq()
-        dev_a = (acc - rest_acc).norm_sq()
+        k_rest = fmin(dt / p.tau_rest, 1.0)
+        rest_gyr = Vec3(*x.rest_gyr) + (gyr - Vec3(*x.rest_gyr)) * k_rest
+        rest_acc = Vec3(*x.rest_acc) + (acc - Vec3(*x.rest_acc)) * k_rest
+        dev_g = _clamp3(gyr - rest_gyr, -1.0, 1.0).norm_sq()     # thresholds are below 1
+        dev_a = _clamp3(acc - rest_acc, -10.0, 10.0).norm_sq()   # thresholds are below 10
         still = all_of(acc_ok, dev_g < p.rest_th_gyr * p.rest_th_gyr,
                        dev_a < p.rest_th_acc * p.rest_th_acc,
                        *(fabs(c) < p.bias_max for c in rest_gyr))
         rest_t = select(still, fmin(x.rest_t + dt, T_SAT), 0.0)
         rest = rest_t >= p.rest_time
-        rest_gyr = vselect(gyr_ok, rest_gyr, Vec3(*x.rest_gyr))
         rest_acc = vselect(acc_ok, rest_acc, Vec3(*x.rest_acc))
 
-        # -- heading (9D) --------------------------------------------------------------------
-        m_e = q6.rotate(mag)                         # field in the 6D earth frame
+        # -- magnetometer: heading disagreement ------------------------------------------------
+        r_m, _ = rnorm(mag, 1e-6)
+        m_unit = _unit(mag * r_m)
+        m_norm = assume(m_unit.dot(mag), 0.0, MAG_MAX * 1.7321)   # |m| in the input's unit
+        m_e = _unit(q6.rotate(m_unit))                   # direction in the 6D earth frame
         hw, hz = x.hd
-        cd = hw * hw - hz * hz                       # cos(delta)
-        sd = 2.0 * hw * hz                           # sin(delta)
-        mx = cd * m_e.x - sd * m_e.y                 # field in the 9D earth frame (horizontal)
-        my = sd * m_e.x + cd * m_e.y
-        rh, h2 = rnorm((mx, my), 1e-6)
-        h_mag = h2 * rh                              # horizontal magnitude, uT
-        v_mag = m_e.z                                # vertical component (up), uT
-        # sine of the heading disagreement (field east of north > 0); beyond 90 deg it saturates
-        ex = assume(mx * rh, -1.0, 1.0)
+        cd = hw * hw - hz * hz                           # cos(delta)
+        sd = 2.0 * hw * hz                               # sin(delta)
+        mx = assume(cd * m_e.x - sd * m_e.y, *UNIT)      # ... in the 9D earth frame
+        my = assume(sd * m_e.x + cd * m_e.y, *UNIT)
+        rh, h2 = rnorm((mx, my), 1e-9)
+        h_u = assume(h2 * rh, 0.0, 1.0)                  # horizontal part of the direction
+        v_u = m_e.z                                      # vertical part (up)
+        # sine of the heading disagreement (field east of north > 0), +-1 beyond 90 deg
+        ex = assume(mx * rh, *UNIT)
         err = select(my >= 0.0, ex, select(ex >= 0.0, 1.0, -1.0))
 
+        # -- magnetometer: disturbance --------------------------------------------------------
         t_mag = fmin(x.t_mag + dt, 2.0 * DT_MAX)
-        ref_h, ref_v = x.ref_h, x.ref_v
-        ref_n2 = ref_h * ref_h + ref_v * ref_v
-        dh = h_mag - ref_h
-        dv = v_mag - ref_v
-        field_off = (dh * dh + dv * dv) > p.mag_th * p.mag_th * ref_n2
-        has_ref = x.ref_t > 0.0
-        disturbed_now = logical_and(use_mag_raw, logical_and(has_ref, field_off))
+        k_cur = fmin(t_mag / p.tau_mag_noise, 1.0)
+        cur = _fld(x.cur_n, x.cur_d) + (Vec3(m_norm, h_u, v_u) - _fld(x.cur_n, x.cur_d)) * k_cur
+        c_n, c_h, c_v = cur
 
-        # heading variance prediction: random walk
+        def field_off(fld):
+            """Magnitude beyond mag_th, or dip (sin of the difference) beyond mag_dip_th."""
+            n_ref, h_ref, v_ref = fld
+            norm_off = fabs(c_n - n_ref) > p.mag_th * n_ref
+            dip_off = fabs(c_h * v_ref - c_v * h_ref) > p.mag_dip_th
+            return logical_or(norm_off, dip_off)
+
+        has_ref = x.ref_t > 0.0
+        disturbed_now = all_of(use_mag, has_ref, field_off(_fld(x.ref_n, x.ref_d)))
+
+        # heading variance: random walk; the gate compares the disagreement with it
         p_head = fmin(x.p_head + p.heading_rw * p.heading_rw * dt, P_HEAD_MAX)
-        # gate: a disagreement implausible for the current variance (plus magnetometer noise)
         gate_var = p.mag_gate * p.mag_gate * (p_head + p.mag_sigma_gate * p.mag_sigma_gate)
         implausible = err * err > gate_var
 
-        dist_t = select(disturbed_now, fmin(x.dist_t + dt, T_SAT),
-                        select(use_mag_raw, 0.0, x.dist_t))
-        undist_t = select(disturbed_now, 0.0,
-                          select(use_mag_raw, fmin(x.undist_t + dt, T_SAT), x.undist_t))
-        give_up = dist_t >= p.mag_reject_time
-        settled = undist_t >= p.mag_min_undisturbed
-        accept = all_of(use_mag_raw, logical_not(disturbed_now), settled,
-                        logical_or(logical_not(implausible), logical_not(has_ref)))
-        mag_disturbed = logical_and(nine, logical_or(logical_and(has_ref, logical_not(settled)),
-                                                     disturbed_now))
+        # candidate: a new field that stays consistent while the sensor rotates is a real
+        # (homogeneous) field, not a disturbance moving with the sensor or passing by
+        cand_old = _fld(x.cand_n, x.cand_d)
+        cand_off = field_off(cand_old)
+        rotating = rest_gyr.norm_sq() >= p.mag_new_min_rate * p.mag_new_min_rate
+        k_cand = fmin(dt / p.tau_mag_ref, 1.0)
+        cand = vselect(cand_off, cur, cand_old + (cur - cand_old) * k_cand)
+        cand_t = select(cand_off, 0.0, select(rotating, fmin(x.cand_t + dt, T_SAT), x.cand_t))
 
-        # Kalman gain: R_c = heading_rw^2 tau_mag^2 (continuous noise density) makes tau_mag the
-        # steady-state time constant; one sample covering t_mag seconds has variance R_c / t_mag
+        # rejection time grows while disturbed and decays twice as fast while clear (noise at
+        # the threshold does not restart the bound)
+        dist_t = select(disturbed_now, fmin(x.dist_t + dt, T_SAT), fmax(x.dist_t - 2.0 * dt, 0.0))
+        undist_t = select(disturbed_now, 0.0, fmin(x.undist_t + dt, T_SAT))
+        adopt = logical_and(disturbed_now, logical_or(cand_t >= p.mag_new_time,
+                                                      dist_t >= p.mag_reject_time))
+        settled = undist_t >= p.mag_min_undisturbed
+        accept = all_of(use_mag, logical_not(disturbed_now), settled,
+                        logical_or(logical_not(implausible), logical_not(has_ref)))
+        mag_disturbed = all_of(nine, has_ref, logical_or(disturbed_now, logical_not(settled)))
+
+        # -- heading update: R_c = heading_rw^2 tau_mag^2 (noise density) makes tau_mag the
+        # steady-state time constant; a sample covering t_mag seconds has variance R_c / t_mag
         r_c = p.heading_rw * p.heading_rw * p.tau_mag * p.tau_mag
-        pt = p_head * fmax(t_mag, 1e-4)
-        k_head = pt / fmax(pt + r_c, 1e-12)
-        k_head = select(accept, clamp(k_head, 0.0, 1.0), 0.0)
-        d_head = k_head * err                        # heading correction, rad
+        pt = p_head * t_mag
+        k_head = select(accept, assume(pt / fmax(pt + r_c, 1e-12), 0.0, 1.0), 0.0)
+        d_head = k_head * err                            # rad
         hw_n = hw - hz * (0.5 * d_head)
         hz_n = hz + hw * (0.5 * d_head)
         rn, _ = rnorm((hw_n, hz_n), 1e-6)
-        hd_new = (assume(hw_n * rn, -1.0, 1.0), assume(hz_n * rn, -1.0, 1.0))
+        hd_new = (assume(hw_n * rn, *UNIT), assume(hz_n * rn, *UNIT))
         p_head = select(accept, (1.0 - k_head) * p_head, p_head)
-        t_mag = select(use_mag_raw, 0.0, t_mag)
 
-        # local field reference: learnt while undisturbed, re-learnt after too long a rejection
+        # reference: learnt while accepted (1/N at first, then tau_mag_ref), or adopted
         ref_t = select(accept, fmin(x.ref_t + dt, T_SAT), x.ref_t)
-        k_ref = clamp(dt / fmax(fmin(ref_t, p.tau_mag_ref), 1e-3), 0.0, 1.0)
-        relearn = logical_and(use_mag_raw, logical_or(logical_not(has_ref), give_up))
-        learn = logical_and(accept, has_ref)
-        ref_h_new = select(relearn, h_mag, select(learn, ref_h + k_ref * (h_mag - ref_h), ref_h))
-        ref_v_new = select(relearn, v_mag, select(learn, ref_v + k_ref * (v_mag - ref_v), ref_v))
-        ref_t = select(relearn, fmax(dt, 1e-3), ref_t)
-        dist_t = select(relearn, 0.0, dist_t)
-        undist_t = select(logical_and(relearn, has_ref), 0.0, undist_t)
+        k_ref = fmin(dt * (1.0 / fmax(fmin(ref_t, p.tau_mag_ref), 1e-3)), 1.0)
+        first = logical_not(has_ref)
+        ref = _fld(x.ref_n, x.ref_d)
+        ref_new = vselect(first, cur, vselect(adopt, cand, vselect(
+            logical_and(accept, has_ref), ref + (cur - ref) * k_ref, ref)))
+        ref_t = select(logical_or(first, adopt), fmax(ref_t, 1e-3), ref_t)
+        dist_t = select(adopt, 0.0, dist_t)
+        undist_t = select(adopt, p.mag_min_undisturbed, undist_t)
 
-        # -- gyroscope bias ---------------------------------------------------------------------
+        # all magnetometer state advances only with a usable reading
+        def on_mag(new, old):
+            return select(use_mag, new, old)
+
+        # -- gyroscope bias -------------------------------------------------------------------
         p0 = p.bias_sigma_init * p.bias_sigma_init
-        p_bias = fmin(x.p_bias + p0 * dt / p.bias_forget_time, p0)
-        # at rest: Kalman update towards the low-pass gyroscope
+        p_bias = fmin(x.p_bias + p0 * (dt / p.bias_forget_time), p0)
+        # at rest: Kalman update towards the low-pass gyroscope (every orientation)
         r_rest = p.bias_sigma_rest * p.bias_sigma_rest
-        k_b = p_bias / fmax(p_bias + r_rest, 1e-20)
+        k_b = assume(p_bias / (p_bias + r_rest), 0.0, 1.0)
         use_rest = logical_and(rest, gyr_ok)
         b_rest = bias + (rest_gyr - bias) * k_b
-        p_rest = (1.0 - k_b) * p_bias
-        # in motion: integral of the corrections (E6 frame) expressed in the sensor frame
-        corr_e = Vec3(theta_e.x, theta_e.y, d_head)
-        corr_s = q6.rotate_inv(corr_e)
-        b_motion = bias - corr_s * (1.0 / p.tau_bias)
-        bias_new = vselect(use_rest, b_rest, vselect(gyr_ok, b_motion, bias))
-        bias_new = _clamp3(bias_new, -p.bias_max, p.bias_max)
-        p_bias = select(use_rest, p_rest, p_bias)
+        # in motion: integral of the corrections (E6 frame) in the sensor frame; the gain is
+        # 1/tau_bias while the bias is unknown and shrinks with its variance
+        g_m = assume(p_bias / p0, 0.0, 1.0) * (1.0 / p.tau_bias)
+        corr_s = q6.rotate_inv(Vec3(theta_c.x, theta_c.y, d_head))
+        b_motion = bias - corr_s * g_m
+        bias_new = _clamp3(vselect(use_rest, b_rest, b_motion), -p.bias_max, p.bias_max)
+        p_bias = select(use_rest, (1.0 - k_b) * p_bias, p_bias)
 
-        # -- outputs ------------------------------------------------------------------------------
-        hd_q = Quat(hd_new[0], 0.0, 0.0, hd_new[1])
-        q9 = hd_q * q6
+        q9 = Quat(hd_new[0], 0.0, 0.0, hd_new[1]) * q6
 
-        # -- initialisation from the first valid sample --------------------------------------------
-        q_init, init_ok = initial_quaternion(acc, mag, use_mag_raw)
+        # -- initialisation from the first valid sample ------------------------------------------
+        q_init, init_ok = initial_quaternion(acc, mag, use_mag)
         do_init = all_of(acc_ok, logical_not(x.initialised), init_ok)
         run = logical_and(gyr_ok, x.initialised)
-        a_init = q_init.rotate(acc)
-        m_init = q_init.rotate(mag)
-        mh2 = m_init.x * m_init.x + m_init.y * m_init.y
-        rmi, _ = rnorm((m_init.x, m_init.y), 1e-6)
+        a_init = _clamp3(q_init.rotate(acc), -LP_MAX, LP_MAX)
+        m_init = _unit(q_init.rotate(m_unit))
+        cur_init = Vec3(m_norm, assume(fmax(m_init.x * m_init.x + m_init.y * m_init.y, 0.0) *
+                                       rnorm((m_init.x, m_init.y), 1e-9)[0], 0.0, 1.0),
+                        m_init.z)
 
         def pick(init_v, run_v, keep_v):
             return select(do_init, init_v, select(run, run_v, keep_v))
@@ -338,39 +395,37 @@ class Flagship(Estimator):
 
         one = Quat(1.0, 0.0, 0.0, 0.0)
         zero3 = Vec3(0.0, 0.0, 0.0)
-        q_i_out = vpick(q_init, q_i_new, q_i)
-        q_a_out = vpick(one, q_a_new, q_a)
-        hd_out = vpick((1.0, 0.0), hd_new, tuple(x.hd))
-        q6_out = vpick(q_init, q6, (q_a * q_i))
-        q9_out = vpick(q_init, q9, Quat(x.hd[0], 0.0, 0.0, x.hd[1]) * (q_a * q_i))
-        init_mag = logical_and(use_mag_raw, mh2 > 1e-6)
+        q6_keep = (q_a * q_i).normalized()
+        q6_out = vpick(q_init, q6, q6_keep)
+        q9_out = vpick(q_init, q9, Quat(x.hd[0], 0.0, 0.0, x.hd[1]) * q6_keep)
+        mag0 = lambda v: vselect(use_mag, v, zero3)      # noqa: E731 - init without a reading
+        cur_keep = _fld(x.cur_n, x.cur_d)
         nx = {
-            "q_i": q_i_out,
-            "q_a": q_a_out,
-            "hd": hd_out,
+            "q_i": vpick(q_init, q_i_new, q_i),
+            "q_a": vpick(one, q_a_new, q_a),
+            "hd": vpick((1.0, 0.0), hd_new, tuple(x.hd)),
             "bias": vpick(bias, bias_new, bias),
             "p_bias": pick(x.p_bias, p_bias, x.p_bias),
-            "lp1": vpick(_clamp3(a_init, -LP_MAX, LP_MAX), lp1, Vec3(*x.lp1)),
-            "lp2": vpick(_clamp3(a_init, -LP_MAX, LP_MAX), lp2, Vec3(*x.lp2)),
-            "w_prev": vpick(zero3, _clamp3(w, -2.0 * GYR_MAX, 2.0 * GYR_MAX), w_prev),
+            "lp_x": vpick(a_init, lp_x_new, lp_x),
+            "lp_v": vpick(zero3, lp_v_new, lp_v),
+            "th_prev": vpick(zero3, theta, th_prev),
             "rest_gyr": vpick(gyr, rest_gyr, Vec3(*x.rest_gyr)),
             "rest_acc": vpick(acc, rest_acc, Vec3(*x.rest_acc)),
             "rest_t": pick(0.0, rest_t, x.rest_t),
             "p_head": pick(P_HEAD_MAX, p_head, x.p_head),
-            "t_mag": pick(0.0, t_mag, x.t_mag),
-            "ref_h": pick(select(init_mag, clamp(mh2 * rmi, 0.0, REF_MAX), 0.0),
-                          clamp(ref_h_new, 0.0, REF_MAX), ref_h),
-            "ref_v": pick(select(init_mag, clamp(m_init.z, -REF_MAX, REF_MAX), 0.0),
-                          clamp(ref_v_new, -REF_MAX, REF_MAX), ref_v),
-            "ref_t": pick(select(init_mag, 1e-3, 0.0), ref_t, x.ref_t),
-            "dist_t": pick(0.0, dist_t, x.dist_t),
-            "undist_t": pick(0.0, undist_t, x.undist_t),
+            "t_mag": pick(0.0, on_mag(0.0, t_mag), x.t_mag),
+            **_unfld("cur", vpick(mag0(cur_init), vselect(use_mag, cur, cur_keep), cur_keep)),
+            **_unfld("ref", vpick(mag0(cur_init), vselect(use_mag, ref_new, ref), ref)),
+            **_unfld("cand", vpick(mag0(cur_init), vselect(use_mag, cand, cand_old), cand_old)),
+            "ref_t": pick(select(use_mag, 1e-3, 0.0), on_mag(ref_t, x.ref_t), x.ref_t),
+            "cand_t": pick(0.0, on_mag(cand_t, x.cand_t), x.cand_t),
+            "dist_t": pick(0.0, on_mag(dist_t, x.dist_t), x.dist_t),
+            "undist_t": pick(0.0, on_mag(undist_t, x.undist_t), x.undist_t),
             "initialised": logical_or(x.initialised, do_init),
             "rejected": inc_if(x.rejected, bad),
         }
-        q_out = vselect(nine, q9_out, q6_out)
-        y = {"q": q_out, "q6": q6_out, "q9": q9_out,
+        y = {"q": vselect(nine, q9_out, q6_out), "q6": q6_out, "q9": q9_out,
              "rest": logical_and(run, rest),
-             "mag_disturbed": logical_and(run, mag_disturbed),
+             "mag_disturbed": logical_and(x.initialised, mag_disturbed),
              "rejected": nx["rejected"], "bias": nx["bias"]}
         return nx, y
