@@ -61,7 +61,8 @@ def summarize(df) -> dict:
 
 def run(args) -> int:
     from kinefuse.host.link.frames import decode_file
-    df = decode_file(args.file, raw=args.raw)
+    with console(args.json).status(f"decoding {args.file}"):
+        df = decode_file(args.file, raw=args.raw)
     summary = summarize(df)
     if args.json:
         if args.show:

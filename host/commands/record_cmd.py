@@ -83,6 +83,8 @@ def run(args) -> int:
     if args.json:
         print_json(summary)
     else:
+        if not con.is_terminal:
+            con.print()
         con.print(f"wrote {summary['file']} ({fmt_bytes(summary['file_bytes'])}, {summary['elapsed_s']:.1f} s)")
     return 0
 
@@ -94,7 +96,8 @@ def _table(summary: dict, duration):
     for s in summary["streams"]:
         units = ", ".join(f"{u['sysid']}" + (f" fw {u['firmware_version']}" if u.get("firmware_version") else "")
                           for u in s["units"]) or "-"
-        state = "closed" + (f": {s['error']}" if s["error"] else "") if s["closed"] else "recording"
+        state = "closed" + (f": {s['error']}" if s["error"] else "") if s["closed"] else \
+            "done" if summary.get("finished") else "recording"
         t.add_row(str(s["id"]), s["connection"], fmt_bytes(s["bytes"]), f"{s['frames']:,}", str(s["crc_errors"]),
                   str(s["bytes_skipped"]), units, state)
     return t

@@ -24,7 +24,8 @@ def register(subparsers) -> None:
 def run(args) -> int:
     from kinefuse.host.link import stats
     from kinefuse.host.link.frames import decode_file
-    result = stats.compute(decode_file(args.file, raw=args.raw))
+    with console(args.json).status(f"decoding {args.file}"):
+        result = stats.compute(decode_file(args.file, raw=args.raw))
     if args.json:
         print_json(result)
         return 0

@@ -237,4 +237,4 @@ class Recorder:
                 "units": [dict(u) for u in st.units.values()], "closed": st.closed, "error": st.error,
             })
         return {"file": str(self.writer.path), "elapsed_s": round(elapsed, 3), "file_bytes": self.writer.bytes_written,
-                "streams": streams, "warnings": list(self.warnings)}
+                "streams": streams, "warnings": list(self.warnings), "finished": getattr(self, "_closed", False)}
