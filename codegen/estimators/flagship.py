@@ -35,8 +35,8 @@ from __future__ import annotations
 import math
 
 from kinefuse.codegen.estimator import Estimator, Param, Var
-from kinefuse.codegen.estimators.common import (ACC_MAX, DT_MAX, GYR_MAX, IMU, INITIALISED,
-                                                MAG_MAX, REJECTED, initial_quaternion)
+from kinefuse.codegen.estimators.common import (ACC_MAX, ACC_NORM_MIN_SQ, DT_MAX, GYR_MAX, IMU,
+                                                INITIALISED, MAG_MAX, REJECTED)
 from kinefuse.codegen.ir import BOOL
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
 from kinefuse.codegen.scalar import (all_of, any_of, assume, clamp, fabs, fmax, fmin, inc_if,
@@ -66,6 +66,13 @@ def _strict_within(v, limit):
 
 def _clamp3(v, lo, hi):
     return Vec3(*(clamp(c, lo, hi) for c in v))
+
+
+def _renorm(q: Quat) -> Quat:
+    """q / |q| for |q| close to 1: one Newton step q (3 - |q|^2) / 2 (no square root; the
+    error is 3/8 of the squared deviation)."""
+    k = 1.5 - 0.5 * q.norm_sq()
+    return Quat(*(assume(c * k, -1.0, 1.0) for c in q))
 
 
 def _fld(n, d):
@@ -209,30 +216,48 @@ class Flagship(Estimator):
         nine = p.mode > 0.5
         # -- sample validation; clamped copies keep every intermediate bounded --------------
         gyr_ok = all_of(_strict_within(u.gyr, p.gyr_range), u.dt > 0.0, u.dt <= DT_MAX)
-        acc_ok = logical_and(gyr_ok, _strict_within(u.acc, p.acc_range))
+        acc_fine = _strict_within(u.acc, p.acc_range)
         mag_fine = all_of(*(fabs(c) <= MAG_MAX for c in u.mag))
-        use_mag = all_of(gyr_ok, nine, u.mag_valid, mag_fine)
-        bad = any_of(logical_not(gyr_ok), logical_not(_strict_within(u.acc, p.acc_range)),
+        bad = any_of(logical_not(gyr_ok), logical_not(acc_fine),
                      logical_and(u.mag_valid, logical_not(mag_fine)))
         gyr = _clamp3(Vec3(*u.gyr), -GYR_MAX, GYR_MAX)
         acc = _clamp3(Vec3(*u.acc), -ACC_MAX, ACC_MAX)
         mag = _clamp3(Vec3(*u.mag), -MAG_MAX, MAG_MAX)
-        dt = select(gyr_ok, clamp(u.dt, 0.0, DT_MAX), 0.0)   # a rejected sample advances nothing
 
-        q_i, q_a = Quat(*x.q_i), Quat(*x.q_a)
+        # the first sample with a usable accelerometer initialises the filter: the same update
+        # then runs from identity with dt = 0 and the low-pass state set to this sample, which
+        # aligns gravity exactly; the first magnetometer reading sets the heading exactly
+        acc_ok = logical_and(gyr_ok, acc_fine)
+        do_init = all_of(acc_ok, logical_not(x.initialised),
+                         acc.norm_sq() >= ACC_NORM_MIN_SQ)
+        live = logical_or(x.initialised, do_init)
+        run = logical_and(gyr_ok, x.initialised)        # a regular step
+        acc_ok = logical_and(acc_ok, live)
+        use_mag = all_of(gyr_ok, live, nine, u.mag_valid, mag_fine)
+        dt = select(run, clamp(u.dt, 0.0, DT_MAX), 0.0)  # a rejected sample advances nothing
+
+        one = Quat(1.0, 0.0, 0.0, 0.0)
+        zero3 = Vec3(0.0, 0.0, 0.0)
+        q_i = vselect(do_init, one, Quat(*x.q_i))
+        q_a = vselect(do_init, one, Quat(*x.q_a))
+        lp_x = vselect(do_init, acc, Vec3(*x.lp_x))
+        lp_v = vselect(do_init, zero3, Vec3(*x.lp_v))
+        th_prev = vselect(do_init, zero3, Vec3(*x.th_prev))
+        hw = select(do_init, 1.0, x.hd[0])
+        hz = select(do_init, 0.0, x.hd[1])
         bias = Vec3(*x.bias)
         w = gyr - bias                                   # rad/s, sensor frame
 
         # -- strapdown ----------------------------------------------------------------------
         # rotation vector of the step: theta plus the two-sample coning term theta_prev x theta / 12
         theta = _clamp3(w * dt, -STEP_MAX, STEP_MAX)
-        th_prev = Vec3(*x.th_prev)
         phi = theta + th_prev.cross(theta) * (1.0 / 12.0)
         th2 = fmin(phi.norm_sq(), 4.0)
-        # (cos(a/2), sin(a/2)/a * phi) to fourth order in the angle a (error ~ a^5 / 480)
+        # (cos(a/2), sin(a/2)/a * phi) to fourth order in the angle a (error ~ a^5 / 480);
+        # its norm is 1 - a^4/192, so one Newton step renormalises the product
         s0 = 0.5 - th2 * (1.0 / 48.0)
         dq = Quat(1.0 - 0.125 * th2, s0 * phi.x, s0 * phi.y, s0 * phi.z)
-        q_i_new = (q_i * dq).normalized()
+        q_i_new = _renorm(q_i * dq)
 
         # -- inclination ----------------------------------------------------------------------
         # second-order Butterworth low-pass of the specific force in frame I (natural frequency
@@ -243,33 +268,32 @@ class Flagship(Estimator):
         kx = kv * inv_tau                                # dt wn^2
         a_i = Vec3(*(assume(c, -ACC_MAX * 1.7321, ACC_MAX * 1.7321)
                      for c in q_i_new.rotate(acc)))
-        lp_x, lp_v = Vec3(*x.lp_x), Vec3(*x.lp_v)
         lp_v_new = _clamp3(Vec3(*(vi + kx * (ai - xi) - kv * vi
                                   for vi, ai, xi in zip(lp_v, a_i, lp_x))), -LPV_MAX, LPV_MAX)
         lp_x_new = _clamp3(lp_x + lp_v_new * dt, -LP_MAX, LP_MAX)
         g_e = Vec3(*(assume(c, -LP_MAX * 1.7321, LP_MAX * 1.7321)
                      for c in q_a.rotate(lp_x_new)))
         gh, _ = g_e.normalized(1e-6)
-        # C = (1 + gz, gy, -gx, 0) rotates the filtered direction onto +z (half-way quaternion);
-        # the floor keeps an upside-down start defined (noise leaves that equilibrium)
+        # C = (1 + gz, gy, -gx, 0) rotates the filtered direction onto +z (half-way quaternion,
+        # exact at the start); the floor keeps an upside-down start defined (noise leaves it)
         corr = Quat(fmax(1.0 + gh.z, 1e-3), gh.y, -gh.x, 0.0)
         q_a_new = vselect(acc_ok, (corr * q_a).normalized(), q_a)
         lp_x_new = vselect(acc_ok, lp_x_new, lp_x)
         lp_v_new = vselect(acc_ok, lp_v_new, lp_v)
-        q6 = (q_a_new * q_i_new).normalized()
+        q6 = q_a_new * q_i_new                           # product of unit quaternions
         # this step's correction (rad, E6 frame; sin of the angle): input of the bias estimation
-        theta_c = vselect(acc_ok, Vec3(gh.y, -gh.x, 0.0), Vec3(0.0, 0.0, 0.0))
+        theta_c = vselect(logical_and(acc_ok, run), Vec3(gh.y, -gh.x, 0.0), zero3)
 
         # -- rest detection -------------------------------------------------------------------
         k_rest = fmin(dt / p.tau_rest, 1.0)
-        rest_gyr = Vec3(*x.rest_gyr) + (gyr - Vec3(*x.rest_gyr)) * k_rest
-        rest_acc = Vec3(*x.rest_acc) + (acc - Vec3(*x.rest_acc)) * k_rest
+        rest_gyr = vselect(do_init, gyr, Vec3(*x.rest_gyr) + (gyr - Vec3(*x.rest_gyr)) * k_rest)
+        rest_acc = vselect(do_init, acc, Vec3(*x.rest_acc) + (acc - Vec3(*x.rest_acc)) * k_rest)
         dev_g = _clamp3(gyr - rest_gyr, -1.0, 1.0).norm_sq()     # thresholds are below 1
         dev_a = _clamp3(acc - rest_acc, -10.0, 10.0).norm_sq()   # thresholds are below 10
         still = all_of(acc_ok, dev_g < p.rest_th_gyr * p.rest_th_gyr,
                        dev_a < p.rest_th_acc * p.rest_th_acc,
                        *(fabs(c) < p.bias_max for c in rest_gyr))
-        rest_t = select(still, fmin(x.rest_t + dt, T_SAT), 0.0)
+        rest_t = select(still, fmin(x.rest_t + dt, T_SAT), select(run, 0.0, x.rest_t))
         rest = rest_t >= p.rest_time
         rest_acc = vselect(acc_ok, rest_acc, Vec3(*x.rest_acc))
 
@@ -278,7 +302,6 @@ class Flagship(Estimator):
         m_unit = _unit(mag * r_m)
         m_norm = assume(m_unit.dot(mag), 0.0, MAG_MAX * 1.7321)   # |m| in the input's unit
         m_e = _unit(q6.rotate(m_unit))                   # direction in the 6D earth frame
-        hw, hz = x.hd
         cd = hw * hw - hz * hz                           # cos(delta)
         sd = 2.0 * hw * hz                               # sin(delta)
         mx = assume(cd * m_e.x - sd * m_e.y, *UNIT)      # ... in the 9D earth frame
@@ -288,12 +311,14 @@ class Flagship(Estimator):
         v_u = m_e.z                                      # vertical part (up)
         # sine of the heading disagreement (field east of north > 0), +-1 beyond 90 deg
         ex = assume(mx * rh, *UNIT)
+        ey = assume(my * rh, *UNIT)
         err = select(my >= 0.0, ex, select(ex >= 0.0, 1.0, -1.0))
 
         # -- magnetometer: disturbance --------------------------------------------------------
         t_mag = fmin(x.t_mag + dt, 2.0 * DT_MAX)
-        k_cur = fmin(t_mag / p.tau_mag_noise, 1.0)
-        cur = _fld(x.cur_n, x.cur_d) + (Vec3(m_norm, h_u, v_u) - _fld(x.cur_n, x.cur_d)) * k_cur
+        k_cur = select(do_init, 1.0, fmin(t_mag / p.tau_mag_noise, 1.0))
+        cur_old = _fld(x.cur_n, x.cur_d)
+        cur = cur_old + (Vec3(m_norm, h_u, v_u) - cur_old) * k_cur
         c_n, c_h, c_v = cur
 
         def field_off(fld):
@@ -303,18 +328,19 @@ class Flagship(Estimator):
             dip_off = fabs(c_h * v_ref - c_v * h_ref) > p.mag_dip_th
             return logical_or(norm_off, dip_off)
 
-        has_ref = x.ref_t > 0.0
+        has_ref = logical_and(x.ref_t > 0.0, logical_not(do_init))
         disturbed_now = all_of(use_mag, has_ref, field_off(_fld(x.ref_n, x.ref_d)))
 
         # heading variance: random walk; the gate compares the disagreement with it
-        p_head = fmin(x.p_head + p.heading_rw * p.heading_rw * dt, P_HEAD_MAX)
+        p_head = select(do_init, P_HEAD_MAX,
+                        fmin(x.p_head + p.heading_rw * p.heading_rw * dt, P_HEAD_MAX))
         gate_var = p.mag_gate * p.mag_gate * (p_head + p.mag_sigma_gate * p.mag_sigma_gate)
         implausible = err * err > gate_var
 
         # candidate: a new field that stays consistent while the sensor rotates is a real
         # (homogeneous) field, not a disturbance moving with the sensor or passing by
         cand_old = _fld(x.cand_n, x.cand_d)
-        cand_off = field_off(cand_old)
+        cand_off = logical_or(do_init, field_off(cand_old))
         rotating = rest_gyr.norm_sq() >= p.mag_new_min_rate * p.mag_new_min_rate
         k_cand = fmin(dt / p.tau_mag_ref, 1.0)
         cand = vselect(cand_off, cur, cand_old + (cur - cand_old) * k_cand)
@@ -326,7 +352,7 @@ class Flagship(Estimator):
         undist_t = select(disturbed_now, 0.0, fmin(x.undist_t + dt, T_SAT))
         adopt = logical_and(disturbed_now, logical_or(cand_t >= p.mag_new_time,
                                                       dist_t >= p.mag_reject_time))
-        settled = undist_t >= p.mag_min_undisturbed
+        settled = logical_or(undist_t >= p.mag_min_undisturbed, logical_not(has_ref))
         accept = all_of(use_mag, logical_not(disturbed_now), settled,
                         logical_or(logical_not(implausible), logical_not(has_ref)))
         mag_disturbed = all_of(nine, has_ref, logical_or(disturbed_now, logical_not(settled)))
@@ -339,6 +365,10 @@ class Flagship(Estimator):
         d_head = k_head * err                            # rad
         hw_n = hw - hz * (0.5 * d_head)
         hz_n = hz + hw * (0.5 * d_head)
+        # first reading: delta = atan2(ex, ey) exactly, as the half-way quaternion (1 + ey, ex)
+        h_first = logical_and(use_mag, logical_not(has_ref))
+        hw_n = select(h_first, fmax(1.0 + ey, 1e-3), hw_n)
+        hz_n = select(h_first, ex, hz_n)
         rn, _ = rnorm((hw_n, hz_n), 1e-6)
         hd_new = (assume(hw_n * rn, *UNIT), assume(hz_n * rn, *UNIT))
         p_head = select(accept, (1.0 - k_head) * p_head, p_head)
@@ -346,17 +376,12 @@ class Flagship(Estimator):
         # reference: learnt while accepted (1/N at first, then tau_mag_ref), or adopted
         ref_t = select(accept, fmin(x.ref_t + dt, T_SAT), x.ref_t)
         k_ref = fmin(dt * (1.0 / fmax(fmin(ref_t, p.tau_mag_ref), 1e-3)), 1.0)
-        first = logical_not(has_ref)
         ref = _fld(x.ref_n, x.ref_d)
-        ref_new = vselect(first, cur, vselect(adopt, cand, vselect(
+        ref_new = vselect(h_first, cur, vselect(adopt, cand, vselect(
             logical_and(accept, has_ref), ref + (cur - ref) * k_ref, ref)))
-        ref_t = select(logical_or(first, adopt), fmax(ref_t, 1e-3), ref_t)
+        ref_t = select(logical_or(h_first, adopt), fmax(ref_t, 1e-3), ref_t)
         dist_t = select(adopt, 0.0, dist_t)
         undist_t = select(adopt, p.mag_min_undisturbed, undist_t)
-
-        # all magnetometer state advances only with a usable reading
-        def on_mag(new, old):
-            return select(use_mag, new, old)
 
         # -- gyroscope bias -------------------------------------------------------------------
         p0 = p.bias_sigma_init * p.bias_sigma_init
@@ -364,68 +389,51 @@ class Flagship(Estimator):
         # at rest: Kalman update towards the low-pass gyroscope (every orientation)
         r_rest = p.bias_sigma_rest * p.bias_sigma_rest
         k_b = assume(p_bias / (p_bias + r_rest), 0.0, 1.0)
-        use_rest = logical_and(rest, gyr_ok)
+        use_rest = logical_and(rest, run)
         b_rest = bias + (rest_gyr - bias) * k_b
         # in motion: integral of the corrections (E6 frame) in the sensor frame; the gain is
         # 1/tau_bias while the bias is unknown and shrinks with its variance
         g_m = assume(p_bias / p0, 0.0, 1.0) * (1.0 / p.tau_bias)
-        corr_s = q6.rotate_inv(Vec3(theta_c.x, theta_c.y, d_head))
+        corr_s = q6.rotate_inv(Vec3(theta_c.x, theta_c.y, select(run, d_head, 0.0)))
         b_motion = bias - corr_s * g_m
         bias_new = _clamp3(vselect(use_rest, b_rest, b_motion), -p.bias_max, p.bias_max)
         p_bias = select(use_rest, (1.0 - k_b) * p_bias, p_bias)
 
         q9 = Quat(hd_new[0], 0.0, 0.0, hd_new[1]) * q6
 
-        # -- initialisation from the first valid sample ------------------------------------------
-        q_init, init_ok = initial_quaternion(acc, mag, use_mag)
-        do_init = all_of(acc_ok, logical_not(x.initialised), init_ok)
-        run = logical_and(gyr_ok, x.initialised)
-        a_init = _clamp3(q_init.rotate(acc), -LP_MAX, LP_MAX)
-        m_init = _unit(q_init.rotate(m_unit))
-        cur_init = Vec3(m_norm, assume(fmax(m_init.x * m_init.x + m_init.y * m_init.y, 0.0) *
-                                       rnorm((m_init.x, m_init.y), 1e-9)[0], 0.0, 1.0),
-                        m_init.z)
+        # -- state and outputs ---------------------------------------------------------------------
+        def on_mag(new, old):
+            return select(use_mag, new, old)
 
-        def pick(init_v, run_v, keep_v):
-            return select(do_init, init_v, select(run, run_v, keep_v))
+        def von_mag(new, old):
+            return vselect(use_mag, new, old)
 
-        def vpick(init_v, run_v, keep_v):
-            vals = [pick(a, b, c) for a, b, c in zip(init_v, run_v, keep_v)]
-            return type(run_v)(*vals) if isinstance(run_v, (Quat, Vec3)) else tuple(vals)
-
-        one = Quat(1.0, 0.0, 0.0, 0.0)
-        zero3 = Vec3(0.0, 0.0, 0.0)
-        q6_keep = (q_a * q_i).normalized()
-        q6_out = vpick(q_init, q6, q6_keep)
-        q9_out = vpick(q_init, q9, Quat(x.hd[0], 0.0, 0.0, x.hd[1]) * q6_keep)
-        mag0 = lambda v: vselect(use_mag, v, zero3)      # noqa: E731 - init without a reading
-        cur_keep = _fld(x.cur_n, x.cur_d)
         nx = {
-            "q_i": vpick(q_init, q_i_new, q_i),
-            "q_a": vpick(one, q_a_new, q_a),
-            "hd": vpick((1.0, 0.0), hd_new, tuple(x.hd)),
-            "bias": vpick(bias, bias_new, bias),
-            "p_bias": pick(x.p_bias, p_bias, x.p_bias),
-            "lp_x": vpick(a_init, lp_x_new, lp_x),
-            "lp_v": vpick(zero3, lp_v_new, lp_v),
-            "th_prev": vpick(zero3, theta, th_prev),
-            "rest_gyr": vpick(gyr, rest_gyr, Vec3(*x.rest_gyr)),
-            "rest_acc": vpick(acc, rest_acc, Vec3(*x.rest_acc)),
-            "rest_t": pick(0.0, rest_t, x.rest_t),
-            "p_head": pick(P_HEAD_MAX, p_head, x.p_head),
-            "t_mag": pick(0.0, on_mag(0.0, t_mag), x.t_mag),
-            **_unfld("cur", vpick(mag0(cur_init), vselect(use_mag, cur, cur_keep), cur_keep)),
-            **_unfld("ref", vpick(mag0(cur_init), vselect(use_mag, ref_new, ref), ref)),
-            **_unfld("cand", vpick(mag0(cur_init), vselect(use_mag, cand, cand_old), cand_old)),
-            "ref_t": pick(select(use_mag, 1e-3, 0.0), on_mag(ref_t, x.ref_t), x.ref_t),
-            "cand_t": pick(0.0, on_mag(cand_t, x.cand_t), x.cand_t),
-            "dist_t": pick(0.0, on_mag(dist_t, x.dist_t), x.dist_t),
-            "undist_t": pick(0.0, on_mag(undist_t, x.undist_t), x.undist_t),
-            "initialised": logical_or(x.initialised, do_init),
+            "q_i": q_i_new,
+            "q_a": q_a_new,
+            "hd": hd_new,
+            "bias": bias_new,
+            "p_bias": p_bias,
+            "lp_x": lp_x_new,
+            "lp_v": lp_v_new,
+            "th_prev": theta,
+            "rest_gyr": vselect(gyr_ok, rest_gyr, Vec3(*x.rest_gyr)),
+            "rest_acc": rest_acc,
+            "rest_t": rest_t,
+            "p_head": select(live, p_head, x.p_head),
+            "t_mag": on_mag(0.0, t_mag),
+            **_unfld("cur", von_mag(cur, cur_old)),
+            **_unfld("ref", von_mag(ref_new, ref)),
+            **_unfld("cand", von_mag(cand, cand_old)),
+            "ref_t": on_mag(ref_t, x.ref_t),
+            "cand_t": on_mag(cand_t, x.cand_t),
+            "dist_t": on_mag(dist_t, x.dist_t),
+            "undist_t": on_mag(undist_t, x.undist_t),
+            "initialised": live,
             "rejected": inc_if(x.rejected, bad),
         }
-        y = {"q": vselect(nine, q9_out, q6_out), "q6": q6_out, "q9": q9_out,
+        y = {"q": vselect(nine, q9, q6), "q6": q6, "q9": q9,
              "rest": logical_and(run, rest),
-             "mag_disturbed": logical_and(x.initialised, mag_disturbed),
-             "rejected": nx["rejected"], "bias": nx["bias"]}
+             "mag_disturbed": logical_and(live, mag_disturbed),
+             "rejected": nx["rejected"], "bias": bias_new}
         return nx, y
