@@ -21,7 +21,7 @@ from kinefuse.codegen.estimators.dynamics.ad import sincos
 from kinefuse.codegen.estimators.dynamics.ekf import (Variant, diag_sym_init, measurement_jacobian,
                                                       pack_sym, predict, sequential_update,
                                                       start_run_or_hold, tri_size, unpack_sym)
-from kinefuse.codegen.estimators.dynamics.mbs import Dynamics, point_kinematics
+from kinefuse.codegen.estimators.dynamics.mbs import Dynamics, point_kinematics, static_efforts
 from kinefuse.codegen.estimators.dynamics.models import Leg
 
 GYR_MAX = 2000.0 * math.pi / 180.0      # rad/s
@@ -140,7 +140,7 @@ class LegEKF(Estimator):
     segment (positions a_i, b_i in the segment frames).  Runge-Kutta 4 for the mean,
     second-order Phi, Taylor noise covariance, scalar Joseph updates.  Starts from the first
     sample with both accelerometers (angles from the gravity direction, rates from the
-    gyroscopes, torques 0); a non-finite or out-of-range estimate resets it (counted).
+    gyroscopes, torques from the quasi-static balance); a non-finite or out-of-range estimate resets it (counted).
     """
 
     name = "leg"
@@ -229,6 +229,7 @@ class LegEKF(Estimator):
         zd0 = [select(g_ok[i], gyr[i], 0.0) for i in range(2)]
         te0 = [0.0, 0.0] + ([select(use[6], foot[0], 0.0), select(use[7], foot[1], 0.0)]
                             if self.foot else [])
+        te0[:2] = static_efforts(model, z0, zd0, te0, (0, 1), p)   # quasi-static torques
         do_init = logical_and(logical_not(x.initialised), logical_and(a_ok[0], a_ok[1]))
         run = logical_and(x.initialised, dt_ok)
         lims = [Z_LIM] * 2 + [ZD_LIM] * 2 + [TE_LIM] * ne

@@ -194,3 +194,30 @@ def point_kinematics(fn, z, zd, zdd, p):
 
 __all__ = ["kinematics", "jacobian_of", "mass_and_bias", "Dynamics", "residual",
            "residual_jacobian", "ldl", "ldl_solve", "zdd_of", "point_kinematics"]
+
+
+def static_efforts(model, z, zd, te_known, unknown, p, eps: float = 1e-9):
+    """Efforts `unknown` (indices, 1 or 2 of them) that balance the others at z̈ = 0:
+    least squares of B_uᵀ u = −(Q_g(z, ż) + Σ_known Bᵀ T_e) — a starting value for efforts
+    without a sensor (quasi-static: the inertial terms of the first sample are ignored).
+    te_known holds the known efforts (the unknown entries are ignored)."""
+    from kinefuse.codegen.scalar import fmax
+    te = [ZERO if i in unknown else v for i, v in enumerate(te_known)]
+    _, R, Rdz = kinematics(model.phi, list(z), list(zd), p)
+    _, Qg = mass_and_bias(R, Rdz, model.mbar(p), model.qbar(p))
+    _, B = jacobian_of(model.conj, list(z), p)
+    n = len(z)
+    r = [ssub(ZERO, sadd(Qg[i], ssum(smul(B[e][i], te[e]) for e in range(len(te)))))
+         for i in range(n)]
+    cols = [[B[e][i] for i in range(n)] for e in unknown]
+    # normal equations (k x k, k <= 2)
+    g = [[ssum(smul(a, b) for a, b in zip(ca, cb)) for cb in cols] for ca in cols]
+    rhs = [ssum(smul(a, b) for a, b in zip(ca, r)) for ca in cols]
+    if len(unknown) == 1:
+        return [smul(rhs[0], 1.0 / fmax(g[0][0], eps))]
+    if len(unknown) == 2:
+        det = ssub(smul(g[0][0], g[1][1]), smul(g[0][1], g[1][0]))
+        inv = 1.0 / fmax(det, eps)     # Gram matrix: det >= 0
+        return [smul(ssub(smul(g[1][1], rhs[0]), smul(g[0][1], rhs[1])), inv),
+                smul(ssub(smul(g[0][0], rhs[1]), smul(g[1][0], rhs[0])), inv)]
+    raise ValueError("static_efforts handles 1 or 2 unknown efforts")

@@ -19,6 +19,7 @@ from kinefuse.codegen.scalar import (all_of, any_of, fabs, fmax, inc_if, logical
 from kinefuse.codegen.estimators.dynamics.ekf import (Variant, diag_sym_init, measurement_jacobian,
                                                       pack_sym, predict, sequential_update,
                                                       start_run_or_hold, tri_size, unpack_sym)
+from kinefuse.codegen.estimators.dynamics.mbs import static_efforts
 from kinefuse.codegen.estimators.dynamics.models import (PENDULUM_MARKERS, Pendulum,
                                                          pendulum_markers)
 
@@ -55,9 +56,9 @@ def _params(residual: bool):
         Param("sigma_marker", 1e-3, "m", 1e-6, 1.0, "marker noise (standard deviation)"),
         Param("sigma_force", 0.05, "N", 1e-4, 1e3, "force sensor noise (standard deviation)"),
         Param("sigma_torque", 0.05, "N*m", 1e-4, 1e3, "torque sensor noise (standard deviation)"),
-        Param("q_force", 16.0, "N^2/s", 1e-8, 1e9,
+        Param("q_force", 1.0e5, "N^2/s", 1e-8, 1e9,
               "power spectral density of the rate of every force effort (random walk)"),
-        Param("q_torque", 16.0, "(N*m)^2/s", 1e-8, 1e9,
+        Param("q_torque", 1.0e5, "(N*m)^2/s", 1e-8, 1e9,
               "power spectral density of the rate of every torque effort (random walk)"),
         Param("p0_pos", 0.02, "m or rad", 1e-6, 10.0, "initial standard deviation of z"),
         Param("p0_vel", 1.0, "m/s or rad/s", 1e-6, 100.0, "initial standard deviation of z'"),
@@ -128,8 +129,8 @@ class PendulumEKF(Estimator):
     velocity-transformation formulation with natural coordinates; every derivative by forward
     automatic differentiation.  Sensors: the 4 markers and the effort sensors flagged valid,
     processed one scalar at a time in Joseph form.  The filter starts from the first frame in
-    which all four markers are seen (z from the markers, rates 0, efforts from their sensors or
-    0); an estimate that turns non-finite or leaves its range resets it (counted), so the
+    which all four markers are seen (z from the markers, rates 0, efforts from their sensors,
+    tau1 without its sensor from the static balance of the measured reactions, residual 0); an estimate that turns non-finite or leaves its range resets it (counted), so the
     outputs stay finite.
     """
 
@@ -233,7 +234,10 @@ class PendulumEKF(Estimator):
 
         # start from a full set of markers
         z0 = self.z_from_markers(mk, p)
+        # efforts from their sensors; tau1 without its sensor from the static balance
         te0 = [select(ef_ok[i], ef[i], 0.0) for i in range(4)] + [0.0] * (ne - 4)
+        tau1_static = static_efforts(model, z0, [0.0] * 4, te0, (0,), p)[0]
+        te0[0] = select(ef_ok[0], ef[0], tau1_static)
         x_init = z0 + [0.0] * 4 + te0
         P0 = self._p0_diag(p)
         do_init = logical_and(logical_not(x.initialised), all_of(*mk_ok))

@@ -1,0 +1,149 @@
+"""``kinefuse bench dynamics``: the reduced dynamic EKF of seeds 000/003.
+
+* ``pendulum``: seed 000 Annex A — 24 combinations of integrator (FE, HE = Heun, TF/TN =
+  trapezoidal with fixed-point / Newton-Raphson iterations), state propagation Φ (PE first
+  order, SE second order, EX exact) and noise covariance Σ_k (CT Taylor, VL Van Loan), plus the
+  simplified sensitivity of Table A.3: RMS of z, ż, T_e and the real-time factor, for the
+  float64 reference (Python) and the generated float32 C (host);
+* ``robustness``: observer masses 60/15 kg against a 50/25 kg truth; both markers of bar 1 lost
+  for 300 ms at the peak speed; the dynamic filter against the kinematic FCDI; observability;
+* ``leg``: the wearable leg (hip/knee torques from two IMUs): RMSE, lag, float32 C against the
+  reference, Cortex-M4F instructions per step (QEMU, when available).
+
+The first run generates and compiles every variant (cached under ~/.cache/kinefuse/dyn; about
+10-30 s each, two at a time with --jobs 2); the Python reference runs take most of the rest.
+``--json`` prints exactly one JSON object on stdout; progress goes to stderr.
+"""
+from __future__ import annotations
+
+import json
+import math
+
+from kinefuse.host.errors import KinefuseError
+
+PARTS = ("pendulum", "robustness", "leg")
+
+
+def register_bench(sub):
+    p = sub.add_parser("dynamics", help="dynamic EKF: seed 000 Annex-A variants, robustness "
+                       "(masses, occlusion) against FCDI, wearable leg torques")
+    p.add_argument("--parts", default=",".join(PARTS),
+                   help=f"comma-separated subset of {','.join(PARTS)} (default: all)")
+    p.add_argument("--variants", choices=("all", "quick"), default="all",
+                   help="pendulum variants: all 25 rows, or 4 (FDMC, simplified, Heun, Van Loan)")
+    p.add_argument("--no-ref", action="store_true",
+                   help="skip the (slow) Python reference runs of the pendulum variants")
+    p.add_argument("--no-qemu", action="store_true", help="skip the Cortex-M4F count")
+    p.add_argument("--jobs", type=int, default=2, help="parallel processes (default 2)")
+    p.add_argument("--seed", type=int, default=0, help="noise seed of the synthetic trials")
+    p.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    p.set_defaults(func=run)
+
+
+def _clean(o):
+    """JSON-safe: NaN/inf -> None, numpy scalars -> Python."""
+    if isinstance(o, dict):
+        return {str(k): _clean(v) for k, v in o.items()}
+    if isinstance(o, (list, tuple)):
+        return [_clean(v) for v in o]
+    if hasattr(o, "item") and not isinstance(o, (str, bytes)):
+        o = o.item()
+    if isinstance(o, float) and not math.isfinite(o):
+        return None
+    return o
+
+
+def run(args) -> int:
+    parts = [p.strip() for p in args.parts.split(",") if p.strip()]
+    bad = [p for p in parts if p not in PARTS]
+    if bad or not parts:
+        raise KinefuseError(f"unknown part {', '.join(bad) or '(none)'}; choose from "
+                            f"{', '.join(PARTS)}")
+    if args.jobs < 1:
+        raise KinefuseError("--jobs must be at least 1")
+    from kinefuse.host.bench.common import progress
+    from kinefuse.host.dynamics import bench as B
+    result: dict = {}
+    with progress(True) as bar:
+        if "pendulum" in parts:
+            result["pendulum"] = B.pendulum_table(args.variants, args.jobs, not args.no_ref, bar,
+                                                  args.seed)
+            result["pendulum_tuning"] = B.tuning(bar)
+        if "robustness" in parts:
+            result["robustness"] = B.robustness(bar, args.seed)
+        if "leg" in parts:
+            result["leg"] = B.leg_study(bar, qemu=not args.no_qemu, seed=args.seed)
+    result = _clean(result)
+    if args.json:
+        print(json.dumps(result))
+        return 0
+    _print(result)
+    return 0
+
+
+def _f(v, fmt="{:.4f}"):
+    return "-" if v is None else fmt.format(v)
+
+
+def _print(r: dict) -> None:
+    from rich.console import Console
+    from rich.table import Table
+    con = Console()
+    if "pendulum" in r:
+        t = Table(title="Double pendulum, seed 000 Annex A (Table A.1 trial, 3 s at 100 Hz): "
+                        "reference (float64 Python) | generated float32 C")
+        for c in ("int.", "Φ", "Σ", "sens.", "RMS z", "RMS ż", "RMS F_e", "RMS τ1", "RT ref",
+                  "RMS F_e f32", "RT f32 C", "ops"):
+            t.add_column(c, justify="right")
+        for row in r["pendulum"]:
+            t.add_row(row["integrator"].upper(), row["phi"].upper(), row["sigma"].upper(),
+                      row["sensitivity"][:4], _f(row["rms_z"]), _f(row["rms_zdot"]),
+                      _f(row["rms_fe"], "{:.3f}"), _f(row["rms_tau1"], "{:.2f}"),
+                      _f(row["rt_factor_ref"], "{:.2f}"), _f(row["f32"]["rms_fe"], "{:.3f}"),
+                      _f(row["rt_factor_f32_c"], "{:,.0f}"), str(row["ops"]))
+        con.print(t)
+        tu = r.get("pendulum_tuning")
+        if tu:
+            con.print("Plant PSD of the efforts (FDMC, f32 C): " + ", ".join(
+                f"q={s['q']:g}: RMS F_e {s['rms_fe']:.2f}" for s in tu["sweep"])
+                + f"  -> used q = {tu['q_used']:g} (N^2/s, (N*m)^2/s)")
+    if "robustness" in r:
+        rb = r["robustness"]
+        t = Table(title=f"Robustness, seed 000 §3.3.4 — {rb['trial']}")
+        t.add_column("study")
+        t.add_column("dynamic EKF (FDMC)", justify="right")
+        t.add_column("FDMC + residual low/high", justify="right")
+        t.add_column("FCDI", justify="right")
+        for label in ("true_masses", "observer_60_15"):
+            m = rb["mass_misdistribution"][label]
+            t.add_row(f"τ1 RMSE (N·m), {label.replace('_', ' ')}", _f(m["fd_tau1_rmse"], "{:.2f}"),
+                      f"{_f(m['fd_residual_low_tau1_rmse'], '{:.2f}')} / "
+                      f"{_f(m['fd_residual_high_tau1_rmse'], '{:.2f}')}",
+                      _f(m["fcdi_tau1_rmse"], "{:.2f}"))
+        oc = rb["occlusion"]
+        for key, label, fmt in (("theta1_max_abs_error_rad", "occlusion: max |θ1 error| (rad)", "{:.4f}"),
+                                ("tau1_rmse_during_nm", "occlusion: τ1 RMSE during (N·m)", "{:.2f}"),
+                                ("tau1_rmse_500ms_after_nm", "occlusion: τ1 RMSE 0.5 s after", "{:.2f}"),
+                                ("tau1_reconvergence_s", "occlusion: τ1 reconvergence (s)", "{:.2f}"),
+                                ("theta1_reconvergence_s", "occlusion: θ1 reconvergence (s)", "{:.2f}")):
+            t.add_row(label, _f(oc["fd"][key], fmt), "", _f(oc["fcdi"][key], fmt))
+        con.print(t)
+        ob = rb["observability"]
+        con.print("Observability rank: " + ", ".join(
+            f"{k}: {v['rank']}/{v['n']}" for k, v in ob.items() if isinstance(v, dict)))
+    if "leg" in r:
+        lg = r["leg"]
+        t = Table(title=f"Wearable leg — {lg['trial']}")
+        t.add_column("case")
+        for c in ("hip RMSE N·m", "knee RMSE N·m", "hip lag ms", "knee lag ms"):
+            t.add_column(c, justify="right")
+        for label, m in (("RK4 float32 C", lg["f32"]), ("RK4 reference", lg["ref"]),
+                         ("forward Euler (f32 C)", lg["forward_euler"]),
+                         ("gyroscopes only (f32 C)", lg["gyroscopes_only"]),
+                         ("with ankle force sensor", lg["foot_sensor"])):
+            t.add_row(label, _f(m["hip_rmse_nm"], "{:.3f}"), _f(m["knee_rmse_nm"], "{:.3f}"),
+                      _f(m["hip_lag_ms"], "{:.1f}"), _f(m["knee_lag_ms"], "{:.1f}"))
+        con.print(t)
+        con.print(f"float32 C vs reference: max {lg['f32_vs_ref_max_nm']:.2e} N·m; "
+                  f"Cortex-M4F instructions per step: "
+                  f"{_f(lg['m4f_instructions_per_step'], '{:,.0f}')}")
