@@ -40,6 +40,7 @@ BENCH_MODULES = [
     "kinefuse.host.kinematics.bench",
     "kinefuse.host.bench.decode",
     "kinefuse.hil_tests.qemu.bench",
+    "kinefuse.host.bench.dynamics",
 ]
 
 
