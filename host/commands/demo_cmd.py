@@ -103,13 +103,14 @@ def run(args) -> int:
     console = Console()
     table = Table(title="[bold]Orientation error against the optical reference[/bold] "
                         "(bundled BROAD excerpt)", title_justify="left",
-                  caption="RMSE in degrees over the movement phases; per-trial columns: total "
+                  caption="RMSE in degrees over the movement phases: per trial the total error, "
+                          "then the mean over trials of total (T), heading (H) and inclination (I) "
                           "error.  Excerpt scores are not comparable with full-trial BROAD figures.",
                   caption_justify="left")
     table.add_column("estimator", no_wrap=True)
     for t in res.trial_names:
         table.add_column(t.partition("_")[0], justify="right")
-    for kind in ("total", "heading", "incl."):
+    for kind in "THI":
         table.add_column(f"mean {kind}", justify="right")
     for spec in res.specs:
         row = [f"[bold]{spec.label}[/bold]" if spec.kind == "kinefuse" else spec.label]
