@@ -10,6 +10,7 @@ from kinefuse.codegen.estimators.ecompass import Ecompass
 from kinefuse.codegen.estimators.triad import Triad
 from kinefuse.codegen.estimators.vac import Vac
 from kinefuse.codegen.estimators.vak import Vak
+from kinefuse.codegen.estimators.guo import Guo
 from kinefuse.codegen.estimators.mahony import Mahony
 from kinefuse.codegen.estimators.dynamics.pendulum import PendulumEKF
 from kinefuse.codegen.estimators.dynamics.leg import LegEKF, LegFootEKF
@@ -23,6 +24,7 @@ ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
     Triad,
     Vac,
     Vak,
+    Guo,
     Flagship,
     PendulumEKF,
     LegEKF,

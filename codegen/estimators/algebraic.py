@@ -19,9 +19,11 @@ Algebraic quaternion (Valenti, Dryanovski, Xiao, Sensors 15(8), 2015, "AQUA"):
 
 Quaternion-measurement Kalman update (Valenti 2016 "VAK", Guo 2017 "GUO"): state x = q (4),
 measurement z = a quaternion from accelerometer (+ magnetometer), H = I.  Covariances are
-carried in units of ``s_ref`` (the tilt variance, rad^2, of one accelerometer measurement at
-|a| = g): the Kalman gain is unchanged by a common scale of P, Q and R, and the scaled values
-stay near 1, which is what a fixed-point format needs.  Small-angle errors are mapped to
+carried in units of ``s_ref`` (the larger of the accelerometer tilt variance and 1/16 of the
+magnetometer heading variance, rad², from the parameters): the Kalman gain is unchanged by a
+common scale of P, Q and R, and the scaled values stay within [2^-10, 128], which is what one
+fixed-point format for all of P needs (per-step process noise must stay well above its
+resolution, 2^-23: otherwise P freezes in a dead band and loses positive definiteness).  Small-angle errors are mapped to
 quaternion space with M(q) (dq = 1/2 (0, dθ) ⊗ q = 1/2 M(q) dθ, dθ an earth-frame rotation
 vector); M has orthonormal columns orthogonal to q, so M Mᵀ = I − q qᵀ.
 """
@@ -296,12 +298,12 @@ def kf_predict(P, q: Quat, omega: Vec3, dt, k_proc, p_max: float):
 # ----------------------------------------------------------------------------------------------
 # the quaternion-state Kalman filter shared by VAK and GUO (covariances in units of s_ref)
 
-T_MIN, T_MAX = 1.0 / 16.0, 16.0   # tilt variance of one sample relative to s_ref (g²/|a|² for VAK)
-R_HEAD_MAX = 1024.0                # heading variance cap: beyond it a heading measurement is void
-K_MAX = 16.0                       # process noise per step relative to s_ref (cap)
-P_MAX = 2048.0                     # |P̃_ij| bound (P̃⁺ <= R̃ for H = I; + process noise)
-R_FLOOR = 1.0 / 64.0              # variance added to every direction of R̃ (keeps S well conditioned)
-Y_MAX = 16.0                       # |y| = |L⁻¹ν| <= |ν| / sqrt(λmin(S)) <= 2 / sqrt(R_FLOOR)
+T_MIN, T_MAX = 2.0 ** -10, 16.0    # range of the tilt variance of one sample (units of s_ref)
+R_HEAD_MAX = 128.0                 # heading variance cap; also the variance of "no heading"
+P_MAX = 256.0                      # |P̃_ij| bound (P̃⁺ <= R̃ for H = I, plus process noise)
+K_MAX = 16.0                       # process noise per step (units of s_ref) is below this
+R_FLOOR = 2.0 ** -12               # variance added to every direction of R̃ (S = P + R >= R_FLOOR I)
+Y_MAX = 128.0                      # |y| = |L⁻¹ν| <= |ν| / sqrt(λmin(S)) <= 2 / sqrt(R_FLOOR)
 MIN_FIELD_SIN2 = 0.0076            # sin²(5°): field closer than 5° to vertical gives no heading
 
 
@@ -351,17 +353,31 @@ def align_sign(z: Quat, ref: Quat) -> Quat:
     return Quat(*(select(flip, -c_, c_) for c_ in z))
 
 
-def quat_kf(x, chk, q_pred: Quat, k_proc, z: Quat, R, do_update):
+def quat_kf(x, chk, q_pred: Quat, k_proc, z: Quat, R, do_update, p_max: float = P_MAX,
+            r_bound: float = 2.0 * R_HEAD_MAX):
     """Predict + (optional) update of the quaternion Kalman filter; returns (q, P̃ packed).
-    q_pred = Φ q (normalised); the update runs where ``do_update``."""
+    q_pred = Φ q (normalised); the update runs where ``do_update``.  ``p_max`` bounds |P̃_ij|
+    (the state's declared range), ``r_bound`` the entries of R̃."""
     P = unpack4(x.P)
-    Pm = kf_predict(P, Quat(*x.q), chk.gyr, chk.dt, k_proc, P_MAX)
-    xn, Pn = kf_identity_update(q_pred, Pm, z, R, R_FLOOR, P_MAX + 2.0 * R_HEAD_MAX, P_MAX,
-                                Y_MAX)
+    Pm = kf_predict(P, Quat(*x.q), chk.gyr, chk.dt, k_proc, p_max)
+    xn, Pn = kf_identity_update(q_pred, Pm, z, R, R_FLOOR, p_max + r_bound, p_max, Y_MAX)
     q_up = xn.normalized()
     q_new = vselect(do_update, q_up, q_pred)
     P_new = [[select(do_update, Pn[i][j], Pm[i][j]) for j in range(4)] for i in range(4)]
     return q_new, pack4(P_new)
+
+
+def capped_gram(cols, scale, cap: float):
+    """f Σ_c c cᵀ with f = scale, reduced so that the trace stays <= cap (a PSD matrix scaled
+    down stays PSD; every entry is then bounded by the trace).  Returns (rows, f_effective)."""
+    tr = _sum(_sum(c_[i] * c_[i] for i in range(4)) for c_ in cols)
+    f = scale / fmax(1.0, scale * tr * (1.0 / cap))
+    G = [[None] * 4 for _ in range(4)]
+    for i in range(4):
+        for j in range(i, 4):
+            v = assume(f * _sum(c_[i] * c_[j] for c_ in cols), -cap, cap)
+            G[i][j] = G[j][i] = v
+    return G
 
 
 P_STATE_DOC = ("state covariance, upper triangle row by row (00 01 02 03 11 12 13 22 23 33), "

@@ -17,8 +17,10 @@ State x = q (sensor → ENU), covariance P (4×4).  Per sample:
            which carries no information) so that P⁻ + R is always invertible.
   Samples without a magnetometer reading update the tilt only: z = the prediction with its
   tilt corrected by the accelerometer, heading variance R_HEAD_MAX (uninformative).
-Covariances are stored divided by s_ref = σ_acc²/g² (Kalman gains are unchanged by a common
-scale; the scaled values suit a fixed-point format).  Initialisation: from the first valid sample
+Covariances are stored divided by s_ref = (σ_acc/g)² max(1, (σ_mag g/(4 σ_acc B_REF))²),
+B_REF = 20 µT (Kalman gains are unchanged by a common scale; the scaled values suit one
+fixed-point format).  Limits (all number systems): tilt variance of a sample within [2^-10, 16]
+s_ref, heading variance <= 128 s_ref, |a| taken within [g/4, 4g] for the noise model.  Initialisation: from the first valid sample
 (algebraic quaternion; heading from the first magnetometer reading), P = R of that sample.
 """
 from __future__ import annotations
@@ -35,6 +37,8 @@ from kinefuse.codegen.estimators.vac import HEADING_SET, canonical
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
 from kinefuse.codegen.scalar import (all_of, assume, clamp, fmax, inc_if, logical_and,
                                      logical_not, logical_or, rsqrt, select)
+
+B_REF = 20.0      # uT: field strength for the covariance unit (weak end of the geomagnetic range)
 
 P_VAR = Var("P", 10, -P_MAX, P_MAX, "s_ref", P_STATE_DOC,
             init=(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0))
@@ -70,16 +74,21 @@ class Vak(Estimator):
         a, a2 = chk.acc.normalized(1e-6)
         m, m2 = chk.mag.normalized(1e-6)
 
-        # noise in units of s_ref = σ_acc²/g², computed in an order that keeps every
-        # intermediate in a narrow range (fixed point): ratios first, clamped where the result
-        # is clamped anyway
+        # noise in units of s_ref = (σ_acc/g)² λ, λ = max(1, (σ_mag g/(4 σ_acc B_REF))²):
+        # the tilt variance, or 1/16 of the heading variance in a B_REF field if that is larger.
+        # Computed in an order that keeps every intermediate in a narrow range (fixed point):
+        # ratios first, clamped where the result is clamped anyway.
         g = p.gravity
-        t = clamp(g * g / fmax(a2, ACC_NORM_MIN_SQ), T_MIN, T_MAX)            # g²/|a|²
+        r_s = clamp(p.sigma_mag / p.sigma_acc, 0.0, 1024.0)
+        sl = fmax(1.0, r_s * (g / (4.0 * B_REF)))                             # sqrt(λ)
+        inv_l = 1.0 / (sl * sl)
+        t = clamp(clamp(g * g / fmax(a2, ACC_NORM_MIN_SQ), 1.0 / 16.0, 16.0) * inv_l,
+                  T_MIN, T_MAX)                                               # g²/(|a|² λ)
         g_m = g * rsqrt(fmax(m2, MAG_NORM_MIN_SQ))                             # g/|m|
-        u_m = clamp(clamp(p.sigma_mag / p.sigma_acc, 0.0, 1024.0) * g_m, 0.0, 32.0)
-        smt = clamp(u_m * u_m, T_MIN, R_HEAD_MAX)        # (σ_mag²/|m|²) / (σ_acc²/g²)
+        w_m = clamp(r_s * g_m / sl, 0.0, R_HEAD_MAX ** 0.5)
+        smt = clamp(w_m * w_m, T_MIN, R_HEAD_MAX)        # (σ_mag²/|m|²) / s_ref
         dt = chk.dt
-        u_g = clamp(dt * (g * (p.sigma_gyr / p.sigma_acc)), 0.0, 4.0)
+        u_g = clamp(dt * (g * (p.sigma_gyr / p.sigma_acc)) / sl, 0.0, 4.0)
         k_proc = u_g * u_g                               # dt² σ_gyr² / s_ref  (<= K_MAX)
 
         # prediction of the state
