@@ -379,6 +379,10 @@ def py_model(lo: Lowered, source_file: str) -> str:
     for r in out_loop:
         code.append(f"{ind1}O_{r.name}{r.index} = []")
         code.append(f"{ind1}A_{r.name}{r.index} = O_{r.name}{r.index}.append")
+    # outputs that do not depend on the state: all samples at once, before the loop rebinds
+    # the names of the vector values it extracts
+    for r in out_vec:
+        code.append(f"{ind1}V_{r.name}{r.index} = _bcast({render_py(lo.result_expr(r), True, consts)}, n)")
     code.append(f"{ind1}for k in range(n):")
     for name in extract:
         code.append(f"{ind2}{name} = L_{name}[k]")
@@ -398,10 +402,7 @@ def py_model(lo: Lowered, source_file: str) -> str:
         cols = []
         for i in range(v.size):
             r = next(x for x in lo.g.results_of("output") if x.name == v.name and x.index == i)
-            if r in out_loop:
-                cols.append(f"O_{r.name}{r.index}")
-            else:
-                cols.append(f"_bcast({render_py(lo.result_expr(r), True, consts)}, n)")
+            cols.append(f"O_{r.name}{r.index}" if r in out_loop else f"V_{r.name}{r.index}")
         code.append(f"{ind1}outputs[{v.name!r}] = [{', '.join(cols)}]")
     code.append(f"{ind1}new_state = {{}}")
     for v in est.state:

@@ -33,13 +33,15 @@ class Encoded:
 class ModelInfo:
     """Interface metadata of a generated filter (from its generated Python model)."""
 
-    def __init__(self, name: str, system: str):
+    def __init__(self, name: str, system: str, mod=None):
         self.name, self.system = name, system
-        try:
-            self.mod = importlib.import_module(f"kinefuse.firmware.generated.models.{name}_{system}")
-        except ModuleNotFoundError as exc:
-            raise RuntimeError(f"no generated model for {name} ({system}); run `kinefuse codegen`") \
-                from exc
+        if mod is None:
+            try:
+                mod = importlib.import_module(f"kinefuse.firmware.generated.models.{name}_{system}")
+            except ModuleNotFoundError as exc:
+                raise RuntimeError(f"no generated model for {name} ({system}); run "
+                                   "`kinefuse codegen`") from exc
+        self.mod = mod
         self.fields = self.mod.FIELDS
         self.formats = getattr(self.mod, "FORMATS", {})
 
@@ -108,13 +110,15 @@ class ModelRunner(ModelInfo):
 class CRunner(ModelInfo):
     """The generated C built on the host (one C call runs the whole recording)."""
 
-    def __init__(self, name: str, system: str):
-        super().__init__(name, system)
-        from kinefuse.codegen.build import build_filter
-        self.ffi, self.lib = build_filter(name, system)
+    def __init__(self, name: str, system: str, mod=None, ffi_lib=None, input_spec: str | None = None):
+        super().__init__(name, system, mod)
+        if ffi_lib is None:
+            from kinefuse.codegen.build import build_filter
+            ffi_lib = build_filter(name, system)
+            input_spec = estimators.get(name).inputs.name
+        self.ffi, self.lib = ffi_lib
         self.P = f"{name}_{system}"
-        est = estimators.get(name)
-        self.in_type = f"kf_{est.inputs.name}_input_{system}"
+        self.in_type = f"kf_{input_spec}_input_{system}"
 
     def _dtype(self, ctype: str, kind: str) -> np.dtype:
         ffi = self.ffi

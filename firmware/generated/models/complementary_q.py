@@ -65,7 +65,7 @@ def _run(inputs, params, state, n):
     u_dt = inputs['dt'][0]
     t21_0 = ((u_dt + 1) >> 1)
     t21 = _where((0 < t21_0), t21_0, 0)
-    t23_0 = (t21 << 2)
+    t23_0 = rt.kf_sat_v((t21 << 2), 0, 1073741824)
     t23 = _where((t23_0 < 1073741824), t23_0, 1073741824)
     t24 = _where((u_gyr0 < 0), (-u_gyr0), u_gyr0)
     t26 = ((t24 << 1) <= 1171270634)

@@ -58,7 +58,7 @@ def _run(inputs, params, state, n):
     u_dt = inputs['dt'][0]
     t22_0 = ((u_dt + 1) >> 1)
     t22 = _where((0 < t22_0), t22_0, 0)
-    t24_0 = (t22 << 2)
+    t24_0 = rt.kf_sat_v((t22 << 2), 0, 1073741824)
     t24 = _where((t24_0 < 1073741824), t24_0, 1073741824)
     t25 = _where((u_gyr0 < 0), (-u_gyr0), u_gyr0)
     t27 = ((t25 << 1) <= 1171270634)

@@ -1,0 +1,144 @@
+"""The Python mirror (runtime/q.py) against the C helpers (runtime/kf_fixed.h), compiled."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from kinefuse.codegen.build import build
+from kinefuse.codegen.runtime import RUNTIME_DIR
+from kinefuse.codegen.runtime import q as rt
+
+I32 = st.integers(-(2 ** 31) + 1, 2 ** 31 - 1)
+I62 = st.integers(-(2 ** 62), 2 ** 62)
+WRAP = r"""
+int32_t w_sat(int64_t v, int32_t lo, int32_t hi) { return kf_sat(v, lo, hi); }
+int32_t w_lsh_sat(int64_t v, int32_t k, int32_t lo, int32_t hi) { return kf_lsh_sat(v, k, lo, hi); }
+int32_t w_div_rnd(int64_t n, int64_t d, int32_t lo, int32_t hi) { return kf_div_rnd(n, d, lo, hi); }
+int64_t w_isqrt_rnd(int64_t n) { return kf_isqrt_rnd(n); }
+void w_rsqrt_dyn64(int64_t y, int32_t fy, int32_t *m, int32_t *e)
+{ kf_dyn r = kf_rsqrt_dyn64(y, fy); *m = r.m; *e = r.e; }
+int32_t w_mul_dyn(int32_t a, int32_t m, int32_t e, int32_t kb, int32_t lo, int32_t hi)
+{ kf_dyn r; r.m = m; r.e = e; return kf_mul_dyn(a, r, kb, lo, hi); }
+void w_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, int32_t f, int32_t em, int32_t ee,
+                 int32_t *m, int32_t *e)
+{ kf_dyn r = kf_rnorm_dyn(a, b, c, d, f, em, ee); *m = r.m; *e = r.e; }
+int32_t w_q_from_f32(float x, int32_t f, int32_t lo, int32_t hi) { return kf_q_from_f32(x, f, lo, hi); }
+"""
+CDEF = """
+int32_t w_sat(int64_t v, int32_t lo, int32_t hi);
+int32_t w_lsh_sat(int64_t v, int32_t k, int32_t lo, int32_t hi);
+int32_t w_div_rnd(int64_t n, int64_t d, int32_t lo, int32_t hi);
+int64_t w_isqrt_rnd(int64_t n);
+void w_rsqrt_dyn64(int64_t y, int32_t fy, int32_t *m, int32_t *e);
+int32_t w_mul_dyn(int32_t a, int32_t m, int32_t e, int32_t kb, int32_t lo, int32_t hi);
+void w_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, int32_t f, int32_t em, int32_t ee,
+                 int32_t *m, int32_t *e);
+int32_t w_q_from_f32(float x, int32_t f, int32_t lo, int32_t hi);
+"""
+
+
+@pytest.fixture(scope="module")
+def c():
+    ffi, lib = build("qruntime_test", [], [], extra_cdef=CDEF,
+                     extra_source='#include "kf_fixed.h"\n' + WRAP, include_dirs=[RUNTIME_DIR])
+    return ffi, lib
+
+
+def _bounds(a, b):
+    return (a, b) if a <= b else (b, a)
+
+
+@settings(max_examples=300, deadline=None)
+@given(v=st.integers(-(2 ** 63) + 1, 2 ** 63 - 1), lo=I32, hi=I32)
+def test_sat(c, v, lo, hi):
+    lo, hi = _bounds(lo, hi)
+    assert c[1].w_sat(v, lo, hi) == rt.kf_sat(v, lo, hi)
+
+
+@settings(max_examples=300, deadline=None)
+@given(v=I62, k=st.integers(0, 70), lo=I32, hi=I32)
+def test_lsh_sat(c, v, k, lo, hi):
+    lo, hi = _bounds(lo, hi)
+    assert c[1].w_lsh_sat(v, k, lo, hi) == rt.kf_lsh_sat(v, k, lo, hi)
+    assert rt.kf_lsh_sat(v, k, lo, hi) == max(lo, min(hi, v * 2 ** k))   # definition
+
+
+@settings(max_examples=400, deadline=None)
+@given(n=I62, d=st.one_of(st.integers(-(2 ** 62), 2 ** 62), st.integers(-3, 3)), lo=I32, hi=I32)
+def test_div_rnd(c, n, d, lo, hi):
+    lo, hi = _bounds(lo, hi)
+    got = c[1].w_div_rnd(n, d, lo, hi)
+    assert got == rt.kf_div_rnd(n, d, lo, hi)
+    if d != 0:   # round half away from zero, from exact rationals
+        from fractions import Fraction
+        q = Fraction(n, d)
+        r = math.floor(abs(q) + Fraction(1, 2)) * (1 if q >= 0 else -1)
+        assert got == max(lo, min(hi, r))
+
+
+@settings(max_examples=400, deadline=None)
+@given(n=st.integers(-5, 2 ** 63 - 1))
+def test_isqrt_rnd(c, n):
+    got = c[1].w_isqrt_rnd(n)
+    assert got == rt.kf_isqrt_rnd(n)
+    if n > 0:   # nearest integer to sqrt(n)
+        assert (got - 0.5) ** 2 <= n <= (got + 0.5) ** 2 or abs(got - math.sqrt(n)) <= 0.5
+
+
+@settings(max_examples=400, deadline=None)
+@given(y=st.integers(-10, 2 ** 62 - 1), fy=st.integers(-40, 90))
+def test_rsqrt_dyn(c, y, fy):
+    ffi, lib = c
+    m, e = ffi.new("int32_t *"), ffi.new("int32_t *")
+    lib.w_rsqrt_dyn64(y, fy, m, e)
+    assert (m[0], e[0]) == rt.kf_rsqrt_dyn(y, fy)
+    assert 2 ** 30 <= m[0] < 2 ** 31
+    yy = max(y, 1)
+    exact = 1.0 / math.sqrt(yy * 2.0 ** -fy)
+    assert abs(m[0] * 2.0 ** -e[0] / exact - 1) < 2e-9
+
+
+@settings(max_examples=400, deadline=None)
+@given(a=I32, m=st.integers(2 ** 30, 2 ** 31 - 1), e=st.integers(-40, 120),
+       kb=st.integers(-60, 60), lo=I32, hi=I32)
+def test_mul_dyn(c, a, m, e, kb, lo, hi):
+    lo, hi = _bounds(lo, hi)
+    assert c[1].w_mul_dyn(a, m, e, kb, lo, hi) == rt.kf_mul_dyn(a, (m, e), kb, lo, hi)
+
+
+@settings(max_examples=400, deadline=None)
+@given(v=st.lists(st.one_of(I32, st.integers(-3, 3)), min_size=4, max_size=4),
+       f=st.integers(-20, 60))
+def test_rnorm_dyn(c, v, f):
+    ffi, lib = c
+    em, ee = 2 ** 30 + 12345, 20      # some eps constant
+    m, e = ffi.new("int32_t *"), ffi.new("int32_t *")
+    lib.w_rnorm_dyn(*v, f, em, ee, m, e)
+    assert (m[0], e[0]) == rt.kf_rnorm_dyn(*v, f, em, ee)
+    n2 = sum((x * 2.0 ** -f) ** 2 for x in v)
+    if n2 > 0:
+        exact = min(1.0 / math.sqrt(n2), em * 2.0 ** -ee)
+        assert abs(m[0] * 2.0 ** -e[0] / exact - 1) < 1e-8
+
+
+@settings(max_examples=400, deadline=None)
+@given(x=st.floats(width=32, allow_nan=True, allow_infinity=True), f=st.integers(-30, 60))
+def test_q_from_f32_matches_host_conversion(c, x, f):
+    lo, hi = -(2 ** 31 - 1), 2 ** 31 - 1
+    assert c[1].w_q_from_f32(x, f, lo, hi) == rt.q_from_float(x, f, lo, hi)
+    assert rt.q_from_float_v(np.array([x]), f, lo, hi)[0] == rt.q_from_float(x, f, lo, hi)
+
+
+def test_vector_helpers_equal_scalar_ones():
+    rng = np.random.default_rng(1)
+    n = rng.integers(-(2 ** 40), 2 ** 40, 500)
+    d = rng.integers(-(2 ** 20), 2 ** 20, 500)
+    assert rt.kf_div_rnd_v(n, d, -(2 ** 31 - 1), 2 ** 31 - 1).tolist() == \
+        [rt.kf_div_rnd(int(a), int(b), -(2 ** 31 - 1), 2 ** 31 - 1) for a, b in zip(n, d)]
+    v = rng.integers(0, 2 ** 62, 500)
+    assert rt.kf_isqrt_rnd_v(v).tolist() == [rt.kf_isqrt_rnd(int(x)) for x in v]
+    assert rt.kf_lsh_sat_v(d, 12, -(2 ** 31 - 1), 2 ** 31 - 1).tolist() == \
+        [rt.kf_lsh_sat(int(x), 12, -(2 ** 31 - 1), 2 ** 31 - 1) for x in d]
