@@ -77,7 +77,7 @@ void complementary_q_update(complementary_q_state *s, const kf_imu_input_q *in, 
     const int32_t x_rejected = s->rejected;
     const int32_t t21_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t21 = ((0 < t21_0) ? t21_0 : 0);  /* common.py:62 Q3.28 */
-    const int32_t t23_0 = ((int32_t)(((int64_t)t21) * 4));
+    const int32_t t23_0 = kf_sat((((int64_t)t21) * 4), 0, 1073741824);
     const int32_t t23 = ((t23_0 < 1073741824) ? t23_0 : 1073741824);  /* common.py:62 Q1.30 */
     const int32_t t24 = ((int32_t)((((int64_t)u_gyr0) < 0) ? (-((int64_t)u_gyr0)) : ((int64_t)u_gyr0)));  /* common.py:50 Q7.24 */
     const int t26 = ((((int64_t)t24) * 2) <= ((int64_t)1171270634));  /* common.py:50 */

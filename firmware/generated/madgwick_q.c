@@ -79,7 +79,7 @@ void madgwick_q_update(madgwick_q_state *s, const kf_imu_input_q *in, madgwick_q
     const int32_t x_rejected = s->rejected;
     const int32_t t22_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t22 = ((0 < t22_0) ? t22_0 : 0);  /* common.py:62 Q3.28 */
-    const int32_t t24_0 = ((int32_t)(((int64_t)t22) * 4));
+    const int32_t t24_0 = kf_sat((((int64_t)t22) * 4), 0, 1073741824);
     const int32_t t24 = ((t24_0 < 1073741824) ? t24_0 : 1073741824);  /* common.py:62 Q1.30 */
     const int32_t t25 = ((int32_t)((((int64_t)u_gyr0) < 0) ? (-((int64_t)u_gyr0)) : ((int64_t)u_gyr0)));  /* common.py:50 Q7.24 */
     const int t27 = ((((int64_t)t25) * 2) <= ((int64_t)1171270634));  /* common.py:50 */

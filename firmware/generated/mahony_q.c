@@ -83,7 +83,7 @@ void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_outpu
     const int32_t x_rejected = s->rejected;
     const int32_t t24_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t24 = ((0 < t24_0) ? t24_0 : 0);  /* common.py:62 Q3.28 */
-    const int32_t t26_0 = ((int32_t)(((int64_t)t24) * 4));
+    const int32_t t26_0 = kf_sat((((int64_t)t24) * 4), 0, 1073741824);
     const int32_t t26 = ((t26_0 < 1073741824) ? t26_0 : 1073741824);  /* common.py:62 Q1.30 */
     const int32_t t27 = ((int32_t)((((int64_t)u_gyr0) < 0) ? (-((int64_t)u_gyr0)) : ((int64_t)u_gyr0)));  /* common.py:50 Q7.24 */
     const int t29 = ((((int64_t)t27) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
@@ -274,19 +274,19 @@ void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_outpu
     const int32_t t227 = ((int32_t)(((((int64_t)t226) * t26) + 536870912) >> 30));  /* mahony.py:75 Q5.26 */
     const int32_t t228 = ((int32_t)(((((int64_t)x_bias0) - (((int64_t)t227) * 32)) + 16) >> 5));  /* mahony.py:75 Q5.26 */
     const int32_t t230 = ((-33554432 < t228) ? t228 : -33554432);  /* mahony.py:75 Q5.26 */
-    const int32_t t232_0 = ((int32_t)(((int64_t)t230) * 32));
+    const int32_t t232_0 = kf_sat((((int64_t)t230) * 32), -1073741824, 1073741824);
     const int32_t t232 = ((t232_0 < 1073741824) ? t232_0 : 1073741824);  /* mahony.py:75 Q0.31 */
     const int32_t t233 = ((int32_t)(((((int64_t)p_ki) * t224) + 536870912) >> 30));  /* mahony.py:75 Q5.26 */
     const int32_t t234 = ((int32_t)(((((int64_t)t233) * t26) + 536870912) >> 30));  /* mahony.py:75 Q5.26 */
     const int32_t t235 = ((int32_t)(((((int64_t)x_bias1) - (((int64_t)t234) * 32)) + 16) >> 5));  /* mahony.py:75 Q5.26 */
     const int32_t t236 = ((-33554432 < t235) ? t235 : -33554432);  /* mahony.py:75 Q5.26 */
-    const int32_t t237_0 = ((int32_t)(((int64_t)t236) * 32));
+    const int32_t t237_0 = kf_sat((((int64_t)t236) * 32), -1073741824, 1073741824);
     const int32_t t237 = ((t237_0 < 1073741824) ? t237_0 : 1073741824);  /* mahony.py:75 Q0.31 */
     const int32_t t238 = ((int32_t)(((((int64_t)p_ki) * t225) + 536870912) >> 30));  /* mahony.py:75 Q5.26 */
     const int32_t t239 = ((int32_t)(((((int64_t)t238) * t26) + 536870912) >> 30));  /* mahony.py:75 Q5.26 */
     const int32_t t240 = ((int32_t)(((((int64_t)x_bias2) - (((int64_t)t239) * 32)) + 16) >> 5));  /* mahony.py:75 Q5.26 */
     const int32_t t241 = ((-33554432 < t240) ? t240 : -33554432);  /* mahony.py:75 Q5.26 */
-    const int32_t t242_0 = ((int32_t)(((int64_t)t241) * 32));
+    const int32_t t242_0 = kf_sat((((int64_t)t241) * 32), -1073741824, 1073741824);
     const int32_t t242 = ((t242_0 < 1073741824) ? t242_0 : 1073741824);  /* mahony.py:75 Q0.31 */
     const int32_t t243 = ((int32_t)((((((int64_t)u_gyr0) * 128) - ((int64_t)t232)) + 128) >> 8));  /* mahony.py:76 Q8.23 */
     const int32_t t244 = ((int32_t)((((((int64_t)u_gyr1) * 128) - ((int64_t)t237)) + 128) >> 8));  /* mahony.py:76 Q8.23 */
