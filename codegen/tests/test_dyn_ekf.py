@@ -26,12 +26,13 @@ def pendulum_F(full=True):
     return ekf.build_F(*D.sensitivity(full=full), 4, 4)
 
 
-@pytest.mark.parametrize("dt", [0.01, 0.05])
-def test_exact_phi_matches_scipy_expm(dt):
+@pytest.mark.parametrize("dt,tol", [(0.01, 1e-12), (0.05, 1e-9)])
+def test_exact_phi_matches_scipy_expm(dt, tol):
+    """Taylor order 6 after 2 squarings: ‖FΔt‖₁ is 0.86 at 100 Hz here, 4.3 at 20 Hz."""
     F = pendulum_F()
     Phi = arr(ekf.phi_matrix(F, dt, "ex"))
     want = expm(arr(F) * dt)
-    assert np.max(np.abs(Phi - want)) < 1e-12 * max(1.0, np.max(np.abs(want)))
+    assert np.max(np.abs(Phi - want)) < tol * max(1.0, np.max(np.abs(want)))
     # first and second order are the truncated series
     Fn = arr(F)
     assert np.allclose(arr(ekf.phi_matrix(F, dt, "pe")), np.eye(12) + Fn * dt, atol=0, rtol=1e-15)
@@ -134,8 +135,11 @@ def test_integrators_have_their_order(name, order):
 
 
 def test_fixed_point_and_newton_solve_the_same_trapezoidal_rule():
+    """Both converge to the same implicit step (fixed point: linear rate ~ Δt‖F‖/2 per
+    sweep, 6 sweeps here; Newton: quadratic)."""
     a, b = _simulate("tf", 0.01, 0.2), _simulate("tn", 0.01, 0.2)
-    assert np.max(np.abs(a - b)) < 1e-9
+    assert np.max(np.abs(a - b)) < 1e-7
+    assert np.max(np.abs(a - _simulate("heun", 0.01, 0.2))) > 1e-6     # not just Heun
 
 
 def test_symmetric_storage_round_trip():

@@ -22,8 +22,9 @@ Matrix exponentials (``ex``, ``vl``) are generated in basic operations: Taylor s
 :data:`EXP_ORDER` on FΔt/2^:data:`EXP_SQUARINGS`, then squaring.  For Van Loan the blocks of
 exp([[−F, Σ_x], [0, Fᵀ]]Δt) are evaluated blockwise: the same Taylor series gives
 Σ(h) = Σ_k h^{k+1}/(k+1)! 𝓛^k(Σ_x) with 𝓛(X) = FX + XFᵀ, and the squaring of the block matrix
-becomes Σ(2h) = Σ(h) + Φ(h) Σ(h) Φ(h)ᵀ.  Truncation error < 1e-10 (relative) for ‖FΔt‖ ≤ 1;
-the tests compare with scipy's expm of the full Van Loan matrix.
+becomes Σ(2h) = Σ(h) + Φ(h) Σ(h) Φ(h)ᵀ.  Truncation error ~1e-12 (relative) at ‖FΔt‖₁ ≈ 0.9
+(the pendulum at 100 Hz), ~1e-10 at ‖FΔt‖₁ ≈ 4; the tests compare with scipy's expm of F and
+of the full Van Loan matrix.
 
 Update: the sensors are independent (diagonal noise), so the update is done one scalar
 measurement at a time in Joseph form, P ← (I − k h)P(I − k h)ᵀ + k r kᵀ, with the measurement

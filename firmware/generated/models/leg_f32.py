@@ -517,6 +517,7 @@ def _run(inputs, params, state, n):
     A_skipped0 = O_skipped0.append
     O_resets0 = []
     A_resets0 = O_resets0.append
+    V_imu_lost0 = _bcast(t3814, n)
     for k in range(n):
         t1012 = L_t1012[k]
         t102 = L_t102[k]
@@ -4009,7 +4010,7 @@ def _run(inputs, params, state, n):
     outputs['te'] = [O_te0, O_te1]
     outputs['te_std'] = [O_te_std0, O_te_std1]
     outputs['initialised'] = [O_initialised0]
-    outputs['imu_lost'] = [_bcast(t3814, n)]
+    outputs['imu_lost'] = [V_imu_lost0]
     outputs['skipped_now'] = [O_skipped_now0]
     outputs['reset_now'] = [O_reset_now0]
     outputs['rejected'] = [O_rejected0]

@@ -579,6 +579,7 @@ def _run(inputs, params, state, n):
     A_skipped0 = O_skipped0.append
     O_resets0 = []
     A_resets0 = O_resets0.append
+    V_imu_lost0 = _bcast(t5454, n)
     for k in range(n):
         t102 = L_t102[k]
         t108 = L_t108[k]
@@ -5675,7 +5676,7 @@ def _run(inputs, params, state, n):
     outputs['te'] = [O_te0, O_te1, O_te2, O_te3]
     outputs['te_std'] = [O_te_std0, O_te_std1, O_te_std2, O_te_std3]
     outputs['initialised'] = [O_initialised0]
-    outputs['imu_lost'] = [_bcast(t5454, n)]
+    outputs['imu_lost'] = [V_imu_lost0]
     outputs['skipped_now'] = [O_skipped_now0]
     outputs['reset_now'] = [O_reset_now0]
     outputs['rejected'] = [O_rejected0]

@@ -745,6 +745,7 @@ def _run(inputs, params, state, n):
     A_skipped0 = O_skipped0.append
     O_resets0 = []
     A_resets0 = O_resets0.append
+    V_bar_lost0 = _bcast(t9387, n)
     for k in range(n):
         t1016 = L_t1016[k]
         t132 = L_t132[k]
@@ -9616,7 +9617,7 @@ def _run(inputs, params, state, n):
     outputs['te'] = [O_te0, O_te1, O_te2, O_te3]
     outputs['te_std'] = [O_te_std0, O_te_std1, O_te_std2, O_te_std3]
     outputs['initialised'] = [O_initialised0]
-    outputs['bar_lost'] = [_bcast(t9387, n)]
+    outputs['bar_lost'] = [V_bar_lost0]
     outputs['skipped_now'] = [O_skipped_now0]
     outputs['reset_now'] = [O_reset_now0]
     outputs['rejected'] = [O_rejected0]
