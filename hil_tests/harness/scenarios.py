@@ -1,0 +1,120 @@
+"""One scenario format for every loop: a :class:`Case` is an IMU input record series plus truth.
+
+Sources: the simulator (:mod:`kinefuse.hil_tests.sim`, exact ground truth) and BROAD trials
+(optical reference).  Units and frames are those of the filters' ``imu`` input record:
+gyr rad/s, acc m/s² (specific force, +g up at rest), mag µT, all in the sensor frame;
+``dt`` s per sample; ``q_true`` (w, x, y, z) sensor → earth, earth frame East-North-Up (NaN rows
+where BROAD's optical reference was lost); ``movement`` marks the samples a score uses.
+"""
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import numpy as np
+
+from kinefuse.host.errors import KinefuseError
+
+#: Simulator scenarios of the CI subset: short (``CI_SECONDS``), every kind of motion filters
+#: care about (rest, constant rate, random rotation, translation, magnetic disturbance, gyro
+#: bias, timing jitter and drops, saturation).
+CI_SCENARIOS = ("rest", "constant_rotation", "slow_rotation", "fast_translation",
+                "magnetic_disturbance", "bias_1dps", "jitter_and_drops", "spin_saturation")
+CI_SECONDS = 12.0
+
+#: The full scenario set of ``kinefuse sil report`` (whole scenarios).
+FULL_SCENARIOS = ("rest", "constant_rotation", "slow_rotation", "fast_rotation", "translation",
+                  "fast_translation", "combined", "magnetic_disturbance", "stationary_magnet",
+                  "attached_magnet", "tapping", "vibration", "bias_1dps", "jitter_and_drops",
+                  "spin_saturation")
+
+
+@dataclasses.dataclass(eq=False)
+class Case:
+    """IMU samples in the filters' input record plus ground truth (units: module docstring)."""
+
+    name: str
+    source: str                      # "sim" or "broad"
+    rate_hz: float
+    inputs: dict[str, np.ndarray]    # gyr, acc, mag (N,3); mag_valid (N,) bool; dt (N,)
+    q_true: np.ndarray               # (N,4)
+    movement: np.ndarray             # (N,) bool
+    t: np.ndarray                    # (N,) s
+
+    @property
+    def n(self) -> int:
+        return len(self.t)
+
+    def head(self, n: int) -> "Case":
+        """The first ``n`` samples."""
+        return dataclasses.replace(self, inputs={k: v[:n] for k, v in self.inputs.items()},
+                                   q_true=self.q_true[:n], movement=self.movement[:n], t=self.t[:n])
+
+    def window(self, start: int, stop: int) -> "Case":
+        return dataclasses.replace(self, name=f"{self.name}[{start}:{stop}]",
+                                   inputs={k: v[start:stop] for k, v in self.inputs.items()},
+                                   q_true=self.q_true[start:stop], movement=self.movement[start:stop],
+                                   t=self.t[start:stop] - self.t[start])
+
+
+def _inputs(gyr, acc, mag, mag_valid, dt) -> dict[str, np.ndarray]:
+    return {"gyr": np.asarray(gyr, np.float64), "acc": np.asarray(acc, np.float64),
+            "mag": np.asarray(mag, np.float64), "mag_valid": np.asarray(mag_valid, bool),
+            "dt": np.asarray(dt, np.float64)}
+
+
+def sim_case(name: str, seed: int = 1, seconds: float | None = None, **replace) -> Case:
+    """A simulator scenario (``seconds`` keeps only the beginning; ``replace`` edits the
+    scenario, e.g. ``sensor={...}``)."""
+    from kinefuse.hil_tests import sim
+
+    try:
+        recs = sim.run(name, seed=seed, **replace)
+    except sim.SpecError as exc:
+        raise KinefuseError(str(exc)) from None
+    rec = recs[sorted(recs)[0]]          # multi-sensor rigs: the first unit by name
+    case = Case(name=name, source="sim", rate_hz=rec.rate_hz,
+                inputs=_inputs(rec.gyr, rec.acc, rec.mag, rec.mag_valid, rec.dt),
+                q_true=np.asarray(rec.q_true, float), movement=np.asarray(rec.movement, bool),
+                t=np.asarray(rec.t, float))
+    if seconds is not None:
+        case = case.head(min(case.n, int(round(seconds * case.rate_hz))))
+    return case
+
+
+def broad_case(path: str | Path, start: int = 0, stop: int | None = None) -> Case:
+    """A BROAD trial (``.mat`` or the bundled ``.npz`` excerpt), optionally a window."""
+    from kinefuse.host.broad import load_trial
+
+    tr = load_trial(path)
+    n = tr.n
+    case = Case(name=tr.name, source="broad", rate_hz=float(tr.rate_hz),
+                inputs=_inputs(tr.gyr, tr.acc, tr.mag, np.ones(n, bool),
+                               np.full(n, 1.0 / float(tr.rate_hz))),
+                q_true=np.asarray(tr.quat_ref, float), movement=np.asarray(tr.movement, bool),
+                t=np.asarray(tr.t, float))
+    if start or stop is not None:
+        case = case.window(start, n if stop is None else min(stop, n))
+    return case
+
+
+def default_broad_trial() -> Path:
+    """One full BROAD trial: the shared data set when present, else the bundled excerpt."""
+    from kinefuse.host import broad
+
+    files, _where = broad.default_data()
+    if not files:
+        raise KinefuseError("no BROAD trial found (shared data or bundled excerpt)")
+    return files[0]
+
+
+def ci_cases(seconds: float = CI_SECONDS, seed: int = 1) -> list[Case]:
+    return [sim_case(n, seed=seed, seconds=seconds) for n in CI_SCENARIOS]
+
+
+def full_cases(seed: int = 1, broad: str | Path | None = None,
+               scenarios: tuple[str, ...] = FULL_SCENARIOS) -> list[Case]:
+    cases = [sim_case(n, seed=seed) for n in scenarios]
+    if broad != "none":
+        cases.append(broad_case(broad or default_broad_trial()))
+    return cases
