@@ -63,6 +63,24 @@ class Lowered:
                 self.names[n.id] = r       # an alias (assume in the float path)
             else:
                 self.body.append((n, r))
+        self._drop_unread()
+
+    def _drop_unread(self) -> None:
+        """Remove statements whose value nobody reads: a number system may not need every
+        operand (the fixed-point rnorm uses the components, not the squared norm)."""
+        while True:
+            reads = set(self.result_refs())
+            for n, stmts in self.body:
+                for st in stmts:
+                    reads |= expr_names(st.expr)
+                if self.guard_name.get(n.id):
+                    reads.add(self.guard_name[n.id])
+            body = [(n, stmts) for n, stmts in self.body if stmts and stmts[-1].name in reads]
+            changed = len(body) != len(self.body)   # a node's statements end with its value
+            self.body = body
+            if not changed:
+                self.reads = reads
+                return
 
     # -- naming ---------------------------------------------------------------------------
     @property
@@ -244,6 +262,8 @@ def c_source(lo: Lowered, source_file: str) -> str:
     # update
     lines += [f"void {P}_update({P}_state *s, const {lo.input_struct} *in, {P}_output *out)", "{"]
     for n in lo.g.inputs():
+        if lo.names[n.id] not in lo.reads:
+            continue
         var = lo.vars[(n.kind, n.name)]
         src = {"input": "in->", "param": "s->params.", "state": "s->"}[n.kind] + var.name
         if var.size > 1:

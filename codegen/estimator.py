@@ -88,6 +88,9 @@ class Estimator:
     outputs: ClassVar[tuple[Var, ...]] = ()
     # name -> {param: value}: published parameter sets users can ask for by name
     presets: ClassVar[dict[str, dict[str, float]]] = {}
+    # number systems generated; an estimator that cannot run in fixed point says so here (and
+    # documents why in its docstring)
+    systems: ClassVar[tuple[str, ...]] = ("f32", "q")
 
     def step(self, x, u, p):  # pragma: no cover - abstract
         raise NotImplementedError

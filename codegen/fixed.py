@@ -427,6 +427,12 @@ class FixedLowering:
                 return [Assign(t, "bool", Bin({"lt": "<", "le": "<=", "eq": "=="}[op],
                                               self.ref(x, names), self.ref(y, names)), loc)]
             W, ka, kb, _ = add_shifts(self.fmt[x.id].frac, self.fmt[y.id].frac, 0)
+            fx, fy = self.fmt[x.id], self.fmt[y.id]
+            A = (_rescale(fx.lo, ka), _rescale(fx.hi, ka))
+            B = (_rescale(fy.lo, kb), _rescale(fy.hi, kb))
+            decided = _decide(op, A, B)
+            if decided is not None:   # the raw intervals settle it: no run-time comparison
+                return [Assign(t, "bool", Int(int(decided)), loc)]
             ea = rescale_expr(Wide(self.ref(x, names)), ka)
             eb = rescale_expr(Wide(self.ref(y, names)), kb)
             return [Assign(t, "bool", Bin({"lt": "<", "le": "<=", "eq": "=="}[op], ea, eb), loc)]
@@ -590,6 +596,17 @@ class FixedLowering:
             fm = self.var_fmt[(kind, var.name)]
             return np.ldexp(np.asarray(values, dtype=np.float64), -fm.frac)
         return np.asarray(values)
+
+
+def _decide(op: str, A: tuple[int, int], B: tuple[int, int]) -> bool | None:
+    """The comparison's value when the operands' integer intervals alone determine it."""
+    if op == "lt":
+        return True if A[1] < B[0] else False if A[0] >= B[1] else None
+    if op == "le":
+        return True if A[1] <= B[0] else False if A[0] > B[1] else None
+    if A[1] < B[0] or B[1] < A[0]:
+        return False
+    return True if A[0] == A[1] == B[0] == B[1] else None
 
 
 def _floor_raw(v: int, fa: int, f: int) -> int:

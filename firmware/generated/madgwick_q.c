@@ -300,13 +300,6 @@ void madgwick_q_update(madgwick_q_state *s, const kf_imu_input_q *in, madgwick_q
     const int32_t t248 = ((int32_t)(((((int64_t)t240) + (((int64_t)t244) * 512)) + 256) >> 9));  /* madgwick.py:96 Q15.16 */
     const int32_t t249 = ((int32_t)(((((int64_t)t241) + (((int64_t)t245) * 512)) + 256) >> 9));  /* madgwick.py:96 Q15.16 */
     const int32_t t250 = ((int32_t)(((((int64_t)t242) + (((int64_t)t246) * 1024)) + 512) >> 10));  /* madgwick.py:96 Q15.16 */
-    const int32_t t251 = ((int32_t)(((((int64_t)t247) * t247) + 1073741824) >> 31));  /* madgwick.py:97 Q28.3 */
-    const int32_t t252 = ((int32_t)(((((int64_t)t248) * t248) + 536870912) >> 30));  /* madgwick.py:97 Q29.2 */
-    const int32_t t253 = ((int32_t)(((((int64_t)t251) + (((int64_t)t252) * 2)) + 2) >> 2));  /* madgwick.py:97 Q30.1 */
-    const int32_t t254 = ((int32_t)(((((int64_t)t249) * t249) + 1073741824) >> 31));  /* madgwick.py:97 Q30.1 */
-    const int32_t t255 = ((int32_t)(((((int64_t)t253) + ((int64_t)t254)) + 1) >> 1));  /* madgwick.py:97 Q31.0 */
-    const int32_t t256 = ((int32_t)(((((int64_t)t250) * t250) + 536870912) >> 30));  /* madgwick.py:97 Q29.2 */
-    const int32_t t257 = ((int32_t)((((((int64_t)t255) * 4) + ((int64_t)t256)) + 2) >> 2));  /* madgwick.py:97 Q31.0 */
     const int32_t t258_0 = ((int32_t)((((int64_t)t247) + 1) >> 1));
     const kf_dyn t258 = kf_rnorm_dyn(t258_0, t248, t249, t250, 16, 2048000000, 11);  /* madgwick.py:97 dynamic */
     const int32_t t259 = kf_mul_dyn(t247, t258, -13, -1073741824, 1073741824);  /* madgwick.py:97 Q1.30 */
@@ -364,13 +357,6 @@ void madgwick_q_update(madgwick_q_state *s, const kf_imu_input_q *in, madgwick_q
     const int32_t t314 = ((int32_t)(((((int64_t)x_q1) + (((int64_t)t310) * 128)) + 64) >> 7));  /* madgwick.py:102 Q8.23 */
     const int32_t t315 = ((int32_t)(((((int64_t)x_q2) + (((int64_t)t311) * 128)) + 64) >> 7));  /* madgwick.py:102 Q8.23 */
     const int32_t t316 = ((int32_t)(((((int64_t)x_q3) + (((int64_t)t312) * 128)) + 64) >> 7));  /* madgwick.py:102 Q8.23 */
-    const int32_t t317 = ((int32_t)(((((int64_t)t313) * t313) + 1073741824) >> 31));  /* madgwick.py:102 Q16.15 */
-    const int32_t t318 = ((int32_t)(((((int64_t)t314) * t314) + 1073741824) >> 31));  /* madgwick.py:102 Q16.15 */
-    const int32_t t319 = ((int32_t)(((((int64_t)t317) + ((int64_t)t318)) + 1) >> 1));  /* madgwick.py:102 Q17.14 */
-    const int32_t t320 = ((int32_t)(((((int64_t)t315) * t315) + 1073741824) >> 31));  /* madgwick.py:102 Q16.15 */
-    const int32_t t321 = ((int32_t)((((((int64_t)t319) * 2) + ((int64_t)t320)) + 2) >> 2));  /* madgwick.py:102 Q18.13 */
-    const int32_t t322 = ((int32_t)(((((int64_t)t316) * t316) + 1073741824) >> 31));  /* madgwick.py:102 Q16.15 */
-    const int32_t t323 = ((int32_t)((((((int64_t)t321) * 4) + ((int64_t)t322)) + 2) >> 2));  /* madgwick.py:102 Q18.13 */
     const kf_dyn t324 = kf_rnorm_dyn(t313, t314, t315, t316, 23, 2097152000, 21);  /* madgwick.py:102 dynamic */
     const int32_t t325 = kf_mul_dyn(t313, t324, -7, -1073741824, 1073741824);  /* madgwick.py:102 Q1.30 */
     const int32_t t327 = kf_mul_dyn(t314, t324, -7, -1073741824, 1073741824);  /* madgwick.py:102 Q1.30 */

@@ -337,13 +337,6 @@ void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_outpu
     const int32_t t289 = ((int32_t)(((((int64_t)x_q1) + (((int64_t)t285) * 256)) + 128) >> 8));  /* common.py:173 Q9.22 */
     const int32_t t290 = ((int32_t)(((((int64_t)x_q2) + (((int64_t)t286) * 256)) + 128) >> 8));  /* common.py:173 Q9.22 */
     const int32_t t291 = ((int32_t)(((((int64_t)x_q3) + (((int64_t)t287) * 256)) + 128) >> 8));  /* common.py:173 Q9.22 */
-    const int32_t t292 = ((int32_t)(((((int64_t)t288) * t288) + 536870912) >> 30));  /* common.py:173 Q17.14 */
-    const int32_t t293 = ((int32_t)(((((int64_t)t289) * t289) + 536870912) >> 30));  /* common.py:173 Q17.14 */
-    const int32_t t294 = ((int32_t)(((((int64_t)t292) + ((int64_t)t293)) + 1) >> 1));  /* common.py:173 Q18.13 */
-    const int32_t t295 = ((int32_t)(((((int64_t)t290) * t290) + 536870912) >> 30));  /* common.py:173 Q17.14 */
-    const int32_t t296 = ((int32_t)((((((int64_t)t294) * 2) + ((int64_t)t295)) + 2) >> 2));  /* common.py:173 Q19.12 */
-    const int32_t t297 = ((int32_t)(((((int64_t)t291) * t291) + 536870912) >> 30));  /* common.py:173 Q17.14 */
-    const int32_t t298 = ((int32_t)((((((int64_t)t296) * 4) + ((int64_t)t297)) + 2) >> 2));  /* common.py:173 Q19.12 */
     const kf_dyn t299 = kf_rnorm_dyn(t288, t289, t290, t291, 22, 2097152000, 21);  /* common.py:173 dynamic */
     const int32_t t300 = kf_mul_dyn(t288, t299, -8, -1073741824, 1073741824);  /* common.py:173 Q1.30 */
     const int32_t t302 = kf_mul_dyn(t289, t299, -8, -1073741824, 1073741824);  /* common.py:173 Q1.30 */

@@ -1,0 +1,94 @@
+"""Rules of the emitted C and models (checked on every registered filter's committed files)."""
+from __future__ import annotations
+
+import re
+import subprocess
+
+import pytest
+
+from kinefuse.codegen import estimators
+from kinefuse.codegen.generate import GENERATED_DIR, check, graph_of, lowered
+
+FILTERS = list(estimators.ESTIMATORS)
+LIBM = {"sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "log", "pow", "fmod", "floor",
+        "ceil", "round", "trunc", "sqrt", "fabs", "hypot", "cbrt", "exp2", "log2", "log10",
+        "lrint", "rint", "nearbyint", "fma", "fmin", "fmax", "copysign", "ldexp", "frexp"}
+ALLOWED_CALLS = {"sqrtf", "fabsf"}
+
+
+def sources(name):
+    return [GENERATED_DIR / f"{name}_{s}.c" for s in ("f32", "q")]
+
+
+def test_generated_files_are_up_to_date():
+    stale = check()
+    assert not stale, f"run `kinefuse codegen`: stale {stale}"
+
+
+@pytest.mark.parametrize("name", FILTERS)
+def test_c_guards_constants_and_library_calls(name):
+    for path in sources(name):
+        text = path.read_text()
+        assert "#if !defined(FLT_EVAL_METHOD) || (FLT_EVAL_METHOD != 0)" in text
+        assert "#ifdef __FAST_MATH__" in text
+        assert "malloc" not in text and "free(" not in text
+        calls = set(re.findall(r"\b([a-z_][a-z0-9_]*)\s*\(", text))
+        libm = {c for c in calls if c in LIBM or (c.endswith("f") and c[:-1] in LIBM)}
+        assert libm <= ALLOWED_CALLS, f"{path.name} calls {libm - ALLOWED_CALLS}"
+        # binary32 constants are exact hex floats; only zero is written in decimal
+        decimals = re.findall(r"(?<![\w.])(\d+\.\d*(?:[eE][-+]?\d+)?f)\b", text)
+        assert set(decimals) <= {"0.0f"}, f"{path.name}: decimal float constants {set(decimals)}"
+        # no file-scope variables (state lives in the caller's struct)
+        body = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+        file_scope = [ln for ln in body.splitlines()
+                      if re.match(r"^(static\s+)?(const\s+)?(float|int32_t|int64_t|int)\s+\w+\s*(=|;|\[)", ln)]
+        assert not file_scope, file_scope
+
+
+@pytest.mark.parametrize("name", FILTERS)
+def test_c_compiles_warning_free_pedantic(name, tmp_path):
+    for path in sources(name):
+        r = subprocess.run(["gcc", "-std=c99", "-pedantic", "-Wall", "-Wextra", "-Werror",
+                            "-Wconversion", "-Wno-sign-conversion", "-ffp-contract=off", "-O2",
+                            f"-I{GENERATED_DIR}", "-c", str(path), "-o", str(tmp_path / "x.o")],
+                           capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr[:2000]
+
+
+@pytest.mark.parametrize("name", FILTERS)
+def test_q_header_lists_every_state_format(name):
+    text = (GENERATED_DIR / f"{name}_q.h").read_text()
+    state = text[text.index("params;", text.index("typedef struct {\n    " + name.replace("-", "_")
+                                                   + "_q_params params;")):]
+    state = state[:state.index("_q_state;")]
+    for line in state.splitlines():
+        if "int32_t" in line and "[" not in line.split("int32_t")[0]:
+            est = estimators.get(name)
+            var = line.split("int32_t")[1].split(";")[0].split("[")[0].strip()
+            if any(v.name == var and v.type == "real" for v in est.state):
+                assert re.search(r"Q-?\d+\.\d+: value = raw \* 2\^", line), line
+
+
+@pytest.mark.parametrize("name", FILTERS)
+def test_statements_are_one_operation_in_graph_order(name):
+    """Every f32 statement holds at most one arithmetic operation; the model has the same
+    statements (its assignment targets appear in the same order as the C's)."""
+    text = (GENERATED_DIR / f"{name}_f32.c").read_text()
+    upd = text[text.index("_update("):]
+    for ln in upd.splitlines():
+        m = re.match(r"\s+(?:const float )?(t\d+\w*) = (.*);", ln)
+        if m:
+            expr = re.sub(r"/\*.*", "", m.group(2))
+            ops = len(re.findall(r"(?<![eEx(])[-+*/](?![0-9a-fp]*f\b)|sqrtf|fabsf", expr))
+            assert ops <= 2, ln   # a - b, or a select with one comparison
+    c_names = re.findall(r"\b(t\d+(?:_[a-z0-9]+)?) = ", upd)
+    model = (GENERATED_DIR / "models" / f"{name}_f32.py").read_text()
+    m_names = [n for n in re.findall(r"\b(t\d+(?:_[a-z0-9]+)?) = ", model)]
+    assert [n for n in c_names if n in set(m_names)] == [n for n in c_names]
+
+
+def test_op_count_table_lists_every_filter():
+    table = (GENERATED_DIR / "OPS.md").read_text()
+    for name in FILTERS:
+        assert f"| {name} | f32 |" in table and f"| {name} | q |" in table
+        assert lowered(name, "f32").op_summary() == graph_of(name).op_summary()
