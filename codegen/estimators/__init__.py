@@ -14,6 +14,7 @@ from kinefuse.codegen.estimators.guo import Guo
 from kinefuse.codegen.estimators.mahony import Mahony
 from kinefuse.codegen.estimators.dynamics.pendulum import PendulumEKF
 from kinefuse.codegen.estimators.dynamics.leg import LegEKF, LegFootEKF
+from kinefuse.codegen.estimators.calib_apply import CalibApply
 
 # Registry order = order in `kinefuse filters`.
 ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
@@ -29,6 +30,7 @@ ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
     PendulumEKF,
     LegEKF,
     LegFootEKF,
+    CalibApply,
 )}
 
 
