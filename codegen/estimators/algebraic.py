@@ -300,14 +300,15 @@ def kf_predict(P, q: Quat, omega: Vec3, dt, k_proc, p_max: float):
 
 T_MIN, T_MAX = 2.0 ** -10, 16.0    # range of the tilt variance of one sample (units of s_ref)
 R_HEAD_MAX = 128.0                 # heading variance cap; also the variance of "no heading"
-P_MAX = 256.0                      # |P̃_ij| bound (P̃⁺ <= R̃ for H = I, plus process noise)
+P_MAX = 16.0                       # |P̃_ij| bound: P̃ starts at R̃ scaled to trace <= P0_TRACE and
+P0_TRACE = 8.0                     # then only shrinks (P⁺ <= P⁻) or grows by k per step
 K_MAX = 16.0                       # process noise per step (units of s_ref) is below this
 R_FLOOR = 2.0 ** -12               # variance added to every direction of R̃ (S = P + R >= R_FLOOR I)
 Y_MAX = 128.0                      # |y| = |L⁻¹ν| <= |ν| / sqrt(λmin(S)) <= 2 / sqrt(R_FLOOR)
 MIN_FIELD_SIN2 = 0.0076            # sin²(5°): field closer than 5° to vertical gives no heading
 
 
-def heading_sigma(t, smt, gamma, lz, use_mag):
+def heading_sigma(t, smt, gamma, lz, use_mag, coupling=1.0):
     """Normalised covariance of the earth-frame rotation-vector error of the algebraic
     (tilt from gravity, heading from the horizontal field) measurement, as (t, s, c):
     Σ̃ = [[t, 0, 0], [0, t, c], [0, c, s]].
@@ -316,10 +317,13 @@ def heading_sigma(t, smt, gamma, lz, use_mag):
     frame): with â, m̂ the unit vectors, t = var(â_⊥) and smt = var(m̂_⊥) (both / s_ref), the field
     direction (0, h, v) in ENU (h² = gamma, v = lz):  δθ_x = δâ_y, δθ_y = −δâ_x,
     δθ_z = (δm̂_x − v δâ_x)/h, hence s = (smt + v² t)/h² and c = cov(δθ_y, δθ_z) = t v / h.
-    Without a usable field reading the heading is uninformed: s = R_HEAD_MAX, c = 0."""
+    Without a usable field reading the heading is uninformed: s = R_HEAD_MAX, c = 0.
+    ``coupling`` scales c: 1 is the exact first-order covariance; 0 treats the heading error
+    as independent of the tilt error, so heading innovations (e.g. from a magnetic
+    disturbance, which no white-noise model covers) never change the tilt."""
     inv_h2 = 1.0 / fmax(gamma, MIN_FIELD_SIN2)
     s_m = clamp((smt + lz * lz * t) * inv_h2, 0.0, R_HEAD_MAX)
-    c_m = t * lz * sqrt(inv_h2)
+    c_m = t * lz * sqrt(inv_h2) * coupling
     lim = sqrt(fmax(t * s_m, 0.0))
     c_m = clamp(c_m, -lim, lim)                   # keeps Σ̃ positive semidefinite after the cap
     s = select(use_mag, s_m, R_HEAD_MAX)
@@ -365,6 +369,16 @@ def quat_kf(x, chk, q_pred: Quat, k_proc, z: Quat, R, do_update, p_max: float = 
     q_new = vselect(do_update, q_up, q_pred)
     P_new = [[select(do_update, Pn[i][j], Pm[i][j]) for j in range(4)] for i in range(4)]
     return q_new, pack4(P_new)
+
+
+def initial_covariance(R):
+    """P̃ of an initialisation: the measurement covariance R̃ of that sample, scaled down (a PSD
+    matrix stays PSD) so that its trace is at most P0_TRACE.  Keeps the covariance within the
+    range one fixed-point format can hold with the resolution the per-step process noise needs
+    (P̃ then only shrinks with updates, or grows by k per step).  Returns packed P̃."""
+    tr = R[0][0] + R[1][1] + R[2][2] + R[3][3]
+    f = 1.0 / fmax(1.0, tr * (1.0 / P0_TRACE))
+    return tuple(assume(f * R[i][j], -P0_TRACE, P0_TRACE) for i in range(4) for j in range(i, 4))
 
 
 def capped_gram(cols, scale, cap: float):

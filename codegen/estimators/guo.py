@@ -26,14 +26,16 @@ s_ref = var_acc max(1, var_mag/(16 var_acc)) (gains are unchanged by a common sc
 values suit one fixed-point format); the traces of the accelerometer and magnetometer parts of
 R are capped at 64 and 128 s_ref (all number systems).  Initialisation: from the first valid sample (algebraic quaternion — instead of
 the identity, from which the seed notes GUO's slow convergence and Guo's code runs 2000 warm-up
-iterations), P = R there.
+iterations), P = R there (scaled to a trace of at most 8 s_ref).
+Defaults (ours, chosen once on the 12 BROAD trials): var_acc 0.01, var_gyr 0.001 rad²/s²,
+var_mag 0.01 (only the ratios matter); the ``ahrs`` preset is that package's FKF setting.
 """
 from __future__ import annotations
 
 from kinefuse.codegen.estimator import Estimator, Param, Var
 from kinefuse.codegen.estimators.algebraic import (MIN_FIELD_SIN2, P_MAX, P_STATE_DOC, R_FLOOR,
                                                    R_HEAD_MAX, aqua,
-                                                   capped_gram, m_matrix, pack4,
+                                                   capped_gram, initial_covariance, m_matrix,
                                                    predict_quaternion, quat_kf, tilt_quaternion)
 from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISED,
                                                 MAG_NORM_MIN_SQ, Q_OUT, Q_STATE, REJECTED,
@@ -108,7 +110,7 @@ class Guo(Estimator):
     params = (
         Param("var_acc", 0.01, "", 1e-6, 1.0,
               "variance of each component of the unit accelerometer vector"),
-        Param("var_gyr", 0.01, "rad^2/s^2", 1e-8, 10.0,
+        Param("var_gyr", 0.001, "rad^2/s^2", 1e-8, 10.0,
               "gyroscope noise variance per axis"),
         Param("var_mag", 0.01, "", 1e-6, 10.0,
               "variance of each component of the unit magnetometer vector"),
@@ -166,7 +168,7 @@ class Guo(Estimator):
         zz = vselect(z.dot(q_pred) < 0.0, z.scale(-1.0), z)
         q_kf, P_kf = quat_kf(x, chk, q_pred, k_proc, zz, R, do_update, P_MAX_GUO,
                              2.0 * R_HEAD_GUO)
-        Rp = pack4(R)
+        Rp = initial_covariance(R)
         q_kf = vselect(first_heading, canonical(q_am), q_kf)
         P_kf = tuple(select(first_heading, r_, v) for r_, v in zip(Rp, P_kf))
 

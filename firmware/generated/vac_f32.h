@@ -17,9 +17,9 @@
 
 /* Parameters; set them with vac_f32_default_params() and change what you need. */
 typedef struct {
-    float gain_acc;  /* range [0, 1], default 0.01: accelerometer correction gain α per accelerometer sample (LERP/SLERP fraction) */
-    float gain_mag;  /* range [0, 1], default 0.01: magnetometer correction gain β per magnetometer reading */
-    float adaptive;  /* range [0, 1], default 1: 1: scale α by the adaptive factor; 0: constant α */
+    float gain_acc;  /* range [0, 1], default 0.001: accelerometer correction gain α per accelerometer sample (LERP/SLERP fraction) */
+    float gain_mag;  /* range [0, 1], default 0.0003: magnetometer correction gain β per magnetometer reading */
+    float adaptive;  /* range [0, 1], default 0: 1: scale α by the adaptive factor; 0: constant α */
     float t1;  /* range [0, 1], default 0.1: relative |a| error below which the full α applies (Valenti: 0.1) */
     float t2;  /* range [0, 2], default 0.2: relative |a| error above which the accelerometer is ignored (Valenti: 0.2) */
     float slerp_threshold;  /* range [0, 0.95], default 0.9: LERP when the correction's w component exceeds this, SLERP otherwise (Valenti: 0.9) */

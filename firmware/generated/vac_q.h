@@ -17,9 +17,9 @@
 
 /* Parameters; set them with vac_q_default_params() and change what you need. */
 typedef struct {
-    int32_t gain_acc;  /* range [0, 1], default 0.01, Q1.30: value = raw * 2^-30: accelerometer correction gain α per accelerometer sample (LERP/SLERP fraction) */
-    int32_t gain_mag;  /* range [0, 1], default 0.01, Q1.30: value = raw * 2^-30: magnetometer correction gain β per magnetometer reading */
-    int32_t adaptive;  /* range [0, 1], default 1, Q1.30: value = raw * 2^-30: 1: scale α by the adaptive factor; 0: constant α */
+    int32_t gain_acc;  /* range [0, 1], default 0.001, Q1.30: value = raw * 2^-30: accelerometer correction gain α per accelerometer sample (LERP/SLERP fraction) */
+    int32_t gain_mag;  /* range [0, 1], default 0.0003, Q1.30: value = raw * 2^-30: magnetometer correction gain β per magnetometer reading */
+    int32_t adaptive;  /* range [0, 1], default 0, Q1.30: value = raw * 2^-30: 1: scale α by the adaptive factor; 0: constant α */
     int32_t t1;  /* range [0, 1], default 0.1, Q1.30: value = raw * 2^-30: relative |a| error below which the full α applies (Valenti: 0.1) */
     int32_t t2;  /* range [0, 2], default 0.2, Q2.29: value = raw * 2^-29: relative |a| error above which the accelerometer is ignored (Valenti: 0.2) */
     int32_t slerp_threshold;  /* range [0, 0.95], default 0.9, Q0.31: value = raw * 2^-31: LERP when the correction's w component exceeds this, SLERP otherwise (Valenti: 0.9) */

@@ -13,7 +13,7 @@ _where = np.where
 
 # field layout: kind -> [(name, size, type)]
 FIELDS = {'input': [('gyr', 3, 'real'), ('acc', 3, 'real'), ('mag', 3, 'real'), ('mag_valid', 1, 'bool'), ('dt', 1, 'real')], 'param': [('gain_acc', 1, 'real'), ('gain_mag', 1, 'real'), ('adaptive', 1, 'real'), ('t1', 1, 'real'), ('t2', 1, 'real'), ('slerp_threshold', 1, 'real'), ('gravity', 1, 'real')], 'state': [('q', 4, 'real'), ('initialised', 1, 'bool'), ('heading_set', 1, 'bool'), ('rejected', 1, 'int')], 'output': [('q', 4, 'real'), ('rejected', 1, 'int')]}
-DEFAULTS = {'gain_acc': 0.01, 'gain_mag': 0.01, 'adaptive': 1.0, 't1': 0.1, 't2': 0.2, 'slerp_threshold': 0.9, 'gravity': 9.81}
+DEFAULTS = {'gain_acc': 0.001, 'gain_mag': 0.0003, 'adaptive': 0.0, 't1': 0.1, 't2': 0.2, 'slerp_threshold': 0.9, 'gravity': 9.81}
 STATE_INIT = {'q': (1.0, 0.0, 0.0, 0.0), 'initialised': (False,), 'heading_set': (False,), 'rejected': (0,)}
 
 F = np.float32
