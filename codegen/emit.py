@@ -85,7 +85,8 @@ class Lowered:
     # -- naming ---------------------------------------------------------------------------
     @property
     def prefix(self) -> str:
-        return f"{self.est.name}_{self.system}"
+        # registry names may contain '-' (e.g. angle-kf); C identifiers and module names may not
+        return f"{self.est.name.replace('-', '_')}_{self.system}"
 
     @property
     def input_struct(self) -> str:

@@ -37,7 +37,8 @@ class ModelInfo:
         self.name, self.system = name, system
         if mod is None:
             try:
-                mod = importlib.import_module(f"kinefuse.firmware.generated.models.{name}_{system}")
+                mod = importlib.import_module("kinefuse.firmware.generated.models."
+                                              f"{name.replace('-', '_')}_{system}")
             except ModuleNotFoundError as exc:
                 raise RuntimeError(f"no generated model for {name} ({system}); run "
                                    "`kinefuse codegen`") from exc
@@ -117,7 +118,7 @@ class CRunner(ModelInfo):
             ffi_lib = build_filter(name, system)
             input_spec = estimators.get(name).inputs.name
         self.ffi, self.lib = ffi_lib
-        self.P = f"{name}_{system}"
+        self.P = f"{name.replace('-', '_')}_{system}"
         self.in_type = f"kf_{input_spec}_input_{system}"
 
     def _dtype(self, ctype: str, kind: str) -> np.dtype:

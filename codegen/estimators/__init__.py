@@ -11,6 +11,7 @@ from kinefuse.codegen.estimators.triad import Triad
 from kinefuse.codegen.estimators.vac import Vac
 from kinefuse.codegen.estimators.vak import Vak
 from kinefuse.codegen.estimators.guo import Guo
+from kinefuse.codegen.estimators.angle_kf import AngleEKF, AngleKF, AngleSRUKF, AngleUKF
 from kinefuse.codegen.estimators.mahony import Mahony
 from kinefuse.codegen.estimators.dynamics.pendulum import PendulumEKF
 from kinefuse.codegen.estimators.dynamics.leg import LegEKF, LegFootEKF
@@ -26,6 +27,10 @@ ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
     Vac,
     Vak,
     Guo,
+    AngleKF,
+    AngleEKF,
+    AngleUKF,
+    AngleSRUKF,
     Flagship,
     PendulumEKF,
     LegEKF,
