@@ -34,6 +34,8 @@ def register_bench(sub):
     p.add_argument("--no-ref", action="store_true",
                    help="skip the (slow) Python reference runs of the pendulum variants")
     p.add_argument("--no-qemu", action="store_true", help="skip the Cortex-M4F count")
+    p.add_argument("--no-fixed", action="store_true",
+                   help="skip the leg's fixed-point emulation (about a minute)")
     p.add_argument("--jobs", type=int, default=2, help="parallel processes (default 2)")
     p.add_argument("--seed", type=int, default=0, help="noise seed of the synthetic trials")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
@@ -72,7 +74,8 @@ def run(args) -> int:
         if "robustness" in parts:
             result["robustness"] = B.robustness(bar, args.seed)
         if "leg" in parts:
-            result["leg"] = B.leg_study(bar, qemu=not args.no_qemu, seed=args.seed)
+            result["leg"] = B.leg_study(bar, qemu=not args.no_qemu, seed=args.seed,
+                                        fixed=not args.no_fixed)
     result = _clean(result)
     if args.json:
         print(json.dumps(result))
@@ -147,3 +150,13 @@ def _print(r: dict) -> None:
         con.print(f"float32 C vs reference: max {lg['f32_vs_ref_max_nm']:.2e} N·m; "
                   f"Cortex-M4F instructions per step: "
                   f"{_f(lg['m4f_instructions_per_step'], '{:,.0f}')}")
+        fx = lg.get("fixed_point")
+        if fx:
+            con.print(f"Fixed point: generator: {fx['generator']}")
+            for o in fx["oracle_fixed_point"]:
+                fg = o["same_formats_on_a_faster_gait_1p4hz"]
+                con.print(f"  oracle Q formats (observed range x{o['margin']:g}, fractional bits "
+                          f"{o['fractional_bits_range'][0]}..{o['fractional_bits_range'][1]}): "
+                          f"max torque deviation {_f(o['max_torque_error_nm'], '{:.2e}')} N·m; "
+                          f"same formats on a faster gait: "
+                          f"{_f(fg['max_torque_error_nm'], '{:.2e}')} N·m, {fg['resets']} resets")

@@ -370,7 +370,8 @@ def m4f_instructions(name: str, trial: T.LegTrial, params: dict, n_table: int = 
                 d["instructions_per_call"] * 100.0 / 64e6 * 100.0}
 
 
-def leg_study(progress=None, qemu: bool = True, duration: float = 10.0, seed: int = 0) -> dict:
+def leg_study(progress=None, qemu: bool = True, duration: float = 10.0, seed: int = 0,
+              fixed: bool = True) -> dict:
     from kinefuse.codegen import runner as cg
     from kinefuse.codegen.estimators.dynamics.ekf import Variant
     from kinefuse.codegen.estimators.dynamics.leg import leg_variant
@@ -418,6 +419,9 @@ def leg_study(progress=None, qemu: bool = True, duration: float = 10.0, seed: in
     out["foot_sensor"] = leg_metrics(foot, trial_f)
     out["foot_sensor"]["trial"] = "same motion with a stance-like ankle force (up to 150 N)"
     step()
+    if fixed:
+        from kinefuse.host.dynamics.fixed_leg import study
+        out["fixed_point"] = study(3.0, 2.0)
     out["m4f_instructions_per_step"] = None
     if qemu:
         cost = m4f_instructions("leg", trial, prm)

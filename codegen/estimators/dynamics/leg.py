@@ -16,7 +16,7 @@ from kinefuse.codegen.estimator import Estimator, InputSpec, Param, Var
 from kinefuse.codegen.ir import BOOL, INT
 from kinefuse.codegen.mathlib import atan2
 from kinefuse.codegen.scalar import (all_of, fabs, fmax, inc_if, logical_and, logical_not,
-                                     select, sqrt)
+                                     select, sqrt, when)
 from kinefuse.codegen.estimators.dynamics.ad import sincos
 from kinefuse.codegen.estimators.dynamics.ekf import (Variant, diag_sym_init, measurement_jacobian,
                                                       pack_sym, predict, sequential_update,
@@ -215,23 +215,26 @@ class LegEKF(Estimator):
             rejected = inc_if(rejected, b)
         rejected = inc_if(rejected, logical_and(x.initialised, logical_not(dt_ok)))
 
-        # prediction at the current estimate
-        zn, zdn, Pp, _ = predict(model, v, z, zd, te, P, self._qdiag(p), p, dt)
-        # sensors at the prior: the accelerometers need z̈ and its sensitivity there
-        D = Dynamics(model, zn, zdn, te, p)
-        sens = D.sensitivity(full=True)
-        hv, H = measurement_jacobian(self.h_fn, zn, zdn, te, D.zdd, sens, p)
-        innov = [select(use[i], ys[i] - hv[i], 0.0) for i in range(len(ys))]
-        xu, Pu, skipped_now = sequential_update(zn + zdn + te, Pp, innov, H, rvar, use)
-
-        # start: angles from the gravity direction (f_along = -g cos th, f_ant = g sin th)
-        z0 = [atan2(acc[2 * i + 1], -acc[2 * i]) for i in range(2)]
-        zd0 = [select(g_ok[i], gyr[i], 0.0) for i in range(2)]
-        te0 = [0.0, 0.0] + ([select(use[6], foot[0], 0.0), select(use[7], foot[1], 0.0)]
-                            if self.foot else [])
-        te0[:2] = static_efforts(model, z0, zd0, te0, (0, 1), p)   # quasi-static torques
         do_init = logical_and(logical_not(x.initialised), logical_and(a_ok[0], a_ok[1]))
         run = logical_and(x.initialised, dt_ok)
+        # (conditional regions only save work when they do not run; results are selected)
+        with when(run):
+            # prediction at the current estimate
+            zn, zdn, Pp, _ = predict(model, v, z, zd, te, P, self._qdiag(p), p, dt)
+            # sensors at the prior: the accelerometers need z̈ and its sensitivity there
+            D = Dynamics(model, zn, zdn, te, p)
+            sens = D.sensitivity(full=True)
+            hv, H = measurement_jacobian(self.h_fn, zn, zdn, te, D.zdd, sens, p)
+            innov = [select(use[i], ys[i] - hv[i], 0.0) for i in range(len(ys))]
+            xu, Pu, skipped_now = sequential_update(zn + zdn + te, Pp, innov, H, rvar, use)
+        with when(do_init):
+            # start: angles from the gravity direction (f_along = -g cos th, f_ant = g sin th),
+            # rates from the gyroscopes, torques from the quasi-static balance
+            z0 = [atan2(acc[2 * i + 1], -acc[2 * i]) for i in range(2)]
+            zd0 = [select(g_ok[i], gyr[i], 0.0) for i in range(2)]
+            te0 = [0.0, 0.0] + ([select(use[6], foot[0], 0.0), select(use[7], foot[1], 0.0)]
+                                if self.foot else [])
+            te0[:2] = static_efforts(model, z0, zd0, te0, (0, 1), p)
         lims = [Z_LIM] * 2 + [ZD_LIM] * 2 + [TE_LIM] * ne
         xs, Pn, init_next, reset_now = start_run_or_hold(
             x.initialised, do_init, run, z0 + zd0 + te0, self._p0_diag(p), xu, Pu,

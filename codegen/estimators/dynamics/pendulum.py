@@ -15,7 +15,7 @@ from kinefuse.codegen.estimator import Estimator, InputSpec, Param, Var
 from kinefuse.codegen.ir import BOOL, INT
 from kinefuse.codegen.mathlib import atan2
 from kinefuse.codegen.scalar import (all_of, any_of, fabs, fmax, inc_if, logical_and,
-                                     logical_not, logical_or, select, sqrt)
+                                     logical_not, logical_or, select, sqrt, when)
 from kinefuse.codegen.estimators.dynamics.ekf import (Variant, diag_sym_init, measurement_jacobian,
                                                       pack_sym, predict, sequential_update,
                                                       start_run_or_hold, tri_size, unpack_sym)
@@ -222,26 +222,28 @@ class PendulumEKF(Estimator):
             rejected = inc_if(rejected, b)
         rejected = inc_if(rejected, logical_and(x.initialised, logical_not(dt_ok)))
 
-        # prediction at the current estimate, then the update at the prior
-        zn, zdn, Pp, _ = predict(model, v, z, zd, te, P, self._qdiag(p), p, dt)
-        hv, H = measurement_jacobian(self.h_fn, zn, zdn, te, None, None, p)
-        ys = mk + ef
-        use = [mk_ok[i // 2] for i in range(8)] + ef_ok
-        innov = [select(use[i], ys[i] - hv[i], 0.0) for i in range(12)]
-        sm, sf, st = p.sigma_marker, p.sigma_force, p.sigma_torque
-        rvar = [sm * sm] * 8 + [st * st, sf * sf, sf * sf, st * st]
-        xu, Pu, skipped_now = sequential_update(zn + zdn + te, Pp, innov, H, rvar, use)
-
-        # start from a full set of markers
-        z0 = self.z_from_markers(mk, p)
-        # efforts from their sensors; tau1 without its sensor from the static balance
-        te0 = [select(ef_ok[i], ef[i], 0.0) for i in range(4)] + [0.0] * (ne - 4)
-        tau1_static = static_efforts(model, z0, [0.0] * 4, te0, (0,), p)[0]
-        te0[0] = select(ef_ok[0], ef[0], tau1_static)
-        x_init = z0 + [0.0] * 4 + te0
-        P0 = self._p0_diag(p)
         do_init = logical_and(logical_not(x.initialised), all_of(*mk_ok))
         run = logical_and(x.initialised, dt_ok)
+        sm, sf, st = p.sigma_marker, p.sigma_force, p.sigma_torque
+        rvar = [sm * sm] * 8 + [st * st, sf * sf, sf * sf, st * st]
+        use = [mk_ok[i // 2] for i in range(8)] + ef_ok
+        ys = mk + ef
+        # (conditional regions only save work when they do not run; results are selected)
+        with when(run):
+            # prediction at the current estimate, then the update at the prior
+            zn, zdn, Pp, _ = predict(model, v, z, zd, te, P, self._qdiag(p), p, dt)
+            hv, H = measurement_jacobian(self.h_fn, zn, zdn, te, None, None, p)
+            innov = [select(use[i], ys[i] - hv[i], 0.0) for i in range(12)]
+            xu, Pu, skipped_now = sequential_update(zn + zdn + te, Pp, innov, H, rvar, use)
+        with when(do_init):
+            # start from a full set of markers: efforts from their sensors, tau1 without its
+            # sensor from the static balance
+            z0 = self.z_from_markers(mk, p)
+            te0 = [select(ef_ok[i], ef[i], 0.0) for i in range(4)] + [0.0] * (ne - 4)
+            tau1_static = static_efforts(model, z0, [0.0] * 4, te0, (0,), p)[0]
+            te0[0] = select(ef_ok[0], ef[0], tau1_static)
+        x_init = z0 + [0.0] * 4 + te0
+        P0 = self._p0_diag(p)
         lims = list(Z_LIM) + [ZD_LIM] * 4 + [TE_LIM] * ne
         xs, Pn, init_next, reset_now = start_run_or_hold(
             x.initialised, do_init, run, x_init, P0, xu, Pu, z + zd + te, P, lims, P_LIM)
