@@ -5,6 +5,7 @@ from __future__ import annotations
 from kinefuse.codegen.estimator import Estimator
 from kinefuse.codegen.estimators.complementary import Complementary
 from kinefuse.codegen.estimators.flagship import Flagship
+from kinefuse.codegen.estimators.eskf import Eskf
 from kinefuse.codegen.estimators.madgwick import Madgwick
 from kinefuse.codegen.estimators.ecompass import Ecompass
 from kinefuse.codegen.estimators.triad import Triad
@@ -32,6 +33,7 @@ ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
     AngleUKF,
     AngleSRUKF,
     Flagship,
+    Eskf,
     PendulumEKF,
     LegEKF,
     LegFootEKF,
