@@ -41,6 +41,8 @@ BENCH_MODULES = [
     "kinefuse.host.bench.decode",
     "kinefuse.hil_tests.qemu.bench",
     "kinefuse.host.bench.dynamics",
+    "kinefuse.host.bench.seed001",
+    "kinefuse.host.bench.seed004",
 ]
 
 

@@ -267,7 +267,8 @@ OSC_PARAMS = (
     Param("q_center", 0.01, "rad^2/s", 1e-8, 10.0, "random-walk density of the centre angle"),
     Param("q_omega", 1.0, "rad^2/s^3", 1e-6, 100.0,
           "random-walk density of the frequency Ω ((rad/s)²/s)"),
-    Param("omega0", 3.0, "rad/s", OMEGA_MIN, OMEGA_MAX, "initial frequency"),
+    Param("omega0", 8.0, "rad/s", OMEGA_MIN, OMEGA_MAX,
+          "initial frequency (a high start keeps the sigma points clear of the lower limit)"),
 )
 OSC_INIT_SD = (0.03, 3.0, 0.5, 5.0)
 

@@ -20,7 +20,7 @@ typedef struct {
     float q_acc;  /* rad^2/s^3, range [1e-06, 10000], default 1: spectral density of the angular acceleration the oscillator does not explain */
     float q_center;  /* rad^2/s, range [1e-08, 10], default 0.01: random-walk density of the centre angle */
     float q_omega;  /* rad^2/s^3, range [1e-06, 100], default 1: random-walk density of the frequency Ω ((rad/s)²/s) */
-    float omega0;  /* rad/s, range [0.2, 30], default 3: initial frequency */
+    float omega0;  /* rad/s, range [0.2, 30], default 8: initial frequency (a high start keeps the sigma points clear of the lower limit) */
 } angle_ekf_f32_params;
 
 /* Filter state (no hidden globals: one struct per filter instance). */

@@ -20,7 +20,7 @@ typedef struct {
     int32_t q_acc;  /* rad^2/s^3, range [1e-06, 10000], default 1, Q14.17: value = raw * 2^-17: spectral density of the angular acceleration the oscillator does not explain */
     int32_t q_center;  /* rad^2/s, range [1e-08, 10], default 0.01, Q4.27: value = raw * 2^-27: random-walk density of the centre angle */
     int32_t q_omega;  /* rad^2/s^3, range [1e-06, 100], default 1, Q7.24: value = raw * 2^-24: random-walk density of the frequency Ω ((rad/s)²/s) */
-    int32_t omega0;  /* rad/s, range [0.2, 30], default 3, Q5.26: value = raw * 2^-26: initial frequency */
+    int32_t omega0;  /* rad/s, range [0.2, 30], default 8, Q5.26: value = raw * 2^-26: initial frequency (a high start keeps the sigma points clear of the lower limit) */
     int32_t w0;  /* range [0, 0.9], default 0, Q0.31: value = raw * 2^-31: weight of the central sigma point (W_i = (1 − W0)/(2n); spread sqrt(n/(1 − W0))) */
 } angle_srukf_q_params;
 

@@ -13,7 +13,7 @@ _where = np.where
 
 # field layout: kind -> [(name, size, type)]
 FIELDS = {'input': [('angle', 1, 'real'), ('angle_valid', 1, 'bool'), ('dt', 1, 'real')], 'param': [('sigma_meas', 1, 'real'), ('q_acc', 1, 'real'), ('q_center', 1, 'real'), ('q_omega', 1, 'real'), ('omega0', 1, 'real'), ('w0', 1, 'real')], 'state': [('theta', 1, 'real'), ('rate', 1, 'real'), ('center', 1, 'real'), ('omega', 1, 'real'), ('initialised', 1, 'bool'), ('rejected', 1, 'int'), ('Stt', 1, 'real'), ('Srt', 1, 'real'), ('Srr', 1, 'real'), ('Sct', 1, 'real'), ('Scr', 1, 'real'), ('Scc', 1, 'real'), ('Swt', 1, 'real'), ('Swr', 1, 'real'), ('Swc', 1, 'real'), ('Sww', 1, 'real')], 'output': [('angle', 1, 'real'), ('rate', 1, 'real'), ('omega', 1, 'real'), ('rejected', 1, 'int')]}
-DEFAULTS = {'sigma_meas': 0.03, 'q_acc': 1.0, 'q_center': 0.01, 'q_omega': 1.0, 'omega0': 3.0, 'w0': 0.0}
+DEFAULTS = {'sigma_meas': 0.03, 'q_acc': 1.0, 'q_center': 0.01, 'q_omega': 1.0, 'omega0': 8.0, 'w0': 0.0}
 STATE_INIT = {'theta': (0.0,), 'rate': (0.0,), 'center': (0.0,), 'omega': (3.0,), 'initialised': (False,), 'rejected': (0,), 'Stt': (0.03,), 'Srt': (0.0,), 'Srr': (3.0,), 'Sct': (0.0,), 'Scr': (0.0,), 'Scc': (0.5,), 'Swt': (0.0,), 'Swr': (0.0,), 'Swc': (0.0,), 'Sww': (5.0,)}
 
 F = np.float32

@@ -13,7 +13,7 @@ _where = np.where
 
 # field layout: kind -> [(name, size, type)]
 FIELDS = {'input': [('angle', 1, 'real'), ('angle_valid', 1, 'bool'), ('dt', 1, 'real')], 'param': [('sigma_meas', 1, 'real'), ('q_acc', 1, 'real'), ('q_center', 1, 'real'), ('q_omega', 1, 'real'), ('omega0', 1, 'real'), ('w0', 1, 'real')], 'state': [('theta', 1, 'real'), ('rate', 1, 'real'), ('center', 1, 'real'), ('omega', 1, 'real'), ('initialised', 1, 'bool'), ('rejected', 1, 'int'), ('Ptt', 1, 'real'), ('Ptr', 1, 'real'), ('Ptc', 1, 'real'), ('Ptw', 1, 'real'), ('Prr', 1, 'real'), ('Prc', 1, 'real'), ('Prw', 1, 'real'), ('Pcc', 1, 'real'), ('Pcw', 1, 'real'), ('Pww', 1, 'real')], 'output': [('angle', 1, 'real'), ('rate', 1, 'real'), ('omega', 1, 'real'), ('rejected', 1, 'int')]}
-DEFAULTS = {'sigma_meas': 0.03, 'q_acc': 1.0, 'q_center': 0.01, 'q_omega': 1.0, 'omega0': 3.0, 'w0': 0.0}
+DEFAULTS = {'sigma_meas': 0.03, 'q_acc': 1.0, 'q_center': 0.01, 'q_omega': 1.0, 'omega0': 8.0, 'w0': 0.0}
 STATE_INIT = {'theta': (0.0,), 'rate': (0.0,), 'center': (0.0,), 'omega': (3.0,), 'initialised': (False,), 'rejected': (0,), 'Ptt': (0.0009,), 'Ptr': (0.0,), 'Ptc': (0.0,), 'Ptw': (0.0,), 'Prr': (9.0,), 'Prc': (0.0,), 'Prw': (0.0,), 'Pcc': (0.25,), 'Pcw': (0.0,), 'Pww': (25.0,)}
 
 F = np.float32
