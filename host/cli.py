@@ -30,6 +30,7 @@ COMMAND_MODULES = [
     "kinefuse.host.commands.stats_cmd",
     "kinefuse.host.commands.params_cmd",
     "kinefuse.host.commands.ports_cmd",
+    "kinefuse.host.commands.sil_cmd",
 ]
 # Modules providing `kinefuse bench <name>` sub-commands.
 BENCH_MODULES = [
@@ -43,6 +44,7 @@ BENCH_MODULES = [
     "kinefuse.host.bench.dynamics",
     "kinefuse.host.bench.seed001",
     "kinefuse.host.bench.seed004",
+    "kinefuse.host.bench.cost",
 ]
 
 

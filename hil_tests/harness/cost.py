@@ -1,0 +1,247 @@
+"""Cost of one filter update on Cortex-M4F and M0: exact instructions, estimated cycles, size.
+
+Measured exactly like the competitors (:mod:`kinefuse.hil_tests.qemu.competitors`): the same
+synthetic motion (100 Hz, rotations up to ~150 °/s, gravity and an Earth-like field, noise;
+:func:`~kinefuse.hil_tests.qemu.competitors.motion`), ``WARMUP`` updates in the setup, then
+``K`` counted updates on the following samples; the same flags (``-O2`` counted, ``-Os`` and
+``-O2`` sizes), the same cost driver and the same size baseline (the input table is kept
+referenced in the baseline program so only the filter's code and state count).
+
+* instructions per update: ``(count(K) − count(0)) / K`` under QEMU's counting plugin, exact;
+  includes callees (libm/libgcc soft-float on M0) and the driver loop (≈3 instructions).
+* cycles: an *estimate* from the executed instruction mix (QEMU single-step trace over
+  ``K_MIX`` updates, mnemonics from the disassembly) with the Cortex-M4 table: integer and FP
+  data processing 1, loads/stores 2 (LDM/STM/PUSH/POP 1 + registers), VDIV/VSQRT 14, VFMA 3,
+  integer divide 7, taken branches 3 (pipeline refill), other branches 1.  Not a measurement.
+  µs at ``CLOCK_HZ`` = 64 MHz, zero wait states.
+* flash = text + data, RAM = data + bss (static state; no stack) that the filter adds.
+"""
+from __future__ import annotations
+
+import bisect
+import os
+import re
+import subprocess
+import tempfile
+from collections import Counter
+from pathlib import Path
+
+import numpy as np
+
+from kinefuse.codegen import estimators
+from kinefuse.codegen.generate import GENERATED_DIR
+from kinefuse.codegen.runner import ModelInfo
+from kinefuse.host.errors import KinefuseError
+
+CLOCK_HZ = 64_000_000
+K_MIX = 50                 # updates traced for the instruction mix
+
+
+def _table_sources(name: str, system: str) -> tuple[Path, Path, str, int]:
+    """Input records of the competitors' motion as a C table; returns (c, dir, ctype, n)."""
+    from kinefuse.hil_tests.qemu.batch import write_generated
+    from kinefuse.hil_tests.qemu.competitors import N_SAMPLES, RATE_HZ, motion
+
+    est = estimators.get(name)
+    if est.inputs.name != "imu":
+        raise KinefuseError(f"cost measurement needs an IMU filter; {name} takes {est.inputs.name}")
+    m = motion()
+    n = N_SAMPLES
+    inputs = {"gyr": m["gyr"].astype(float), "acc": m["acc"].astype(float),
+              "mag": m["mag"].astype(float), "mag_valid": np.ones(n, bool),
+              "dt": np.full(n, 1.0 / RATE_HZ)}
+    info = ModelInfo(name, system)
+    enc = info.encode(inputs, est.resolve_params(None))
+    ctype = f"kf_imu_input_{system}"
+
+    def lit(v, typ):
+        if typ == "bool":
+            return "1u" if v else "0u"
+        if system == "q" or typ == "int":
+            return str(int(v))
+        return float.hex(float(v)) + "f"
+
+    rows = []
+    for i in range(n):
+        parts = []
+        for fname, size, typ in info.fields["input"]:
+            vals = enc.inputs[fname][i]
+            if size == 1:
+                parts.append(lit(vals[0], typ))
+            else:
+                parts.append("{" + ", ".join(lit(x, typ) for x in vals) + "}")
+        rows.append("{" + ", ".join(parts) + "}")
+    header = (f'#ifndef KF_COST_{system.upper()}_H\n#define KF_COST_{system.upper()}_H\n'
+              f'#include "kf_imu_{system}.h"\n#define KF_COST_N {n}u\n#define KF_WARMUP 400u\n'
+              f"extern const {ctype} kf_cost_in_{system}[KF_COST_N];\n#endif\n")
+    body = (f'#include "kf_cost_{system}.h"\nconst {ctype} kf_cost_in_{system}[KF_COST_N] = {{\n'
+            + ",\n".join(rows) + "\n};\n")
+    hpath = write_generated(header, f"kf_cost_{system}.h")
+    cpath = write_generated(body, f"kf_cost_{system}.c")
+    sibling = cpath.parent / hpath.name
+    if not sibling.is_file() or sibling.read_text() != header:
+        tmp = sibling.with_name(f".{hpath.name}.{os.getpid()}")
+        tmp.write_text(header)
+        os.replace(tmp, sibling)
+    return cpath, hpath.parent, ctype, n
+
+
+def _snippets(name: str, system: str):
+    P = f"{name}_{system}"
+    prelude = (f'#include "{P}.h"\n#include "kf_cost_{system}.h"\n'
+               f"static {P}_state kf_st;\nstatic {P}_params kf_p;\nstatic {P}_output kf_out;\n"
+               "static volatile uintptr_t kf_keep_sink;\n")
+    setup = (f"{P}_default_params(&kf_p);\nif ({P}_init(&kf_st, &kf_p) != 0) {{ return 5; }}\n"
+             f"for (uint32_t w = 0u; w < KF_WARMUP; ++w) {{ {P}_update(&kf_st, &kf_cost_in_{system}[w], &kf_out); }}")
+    call = f"{P}_update(&kf_st, &kf_cost_in_{system}[KF_WARMUP + kf_i], &kf_out);"
+    finish = "kf_keep_sink = (uintptr_t)&kf_out;"
+    baseline = f"kf_keep_sink = (uintptr_t)&kf_cost_in_{system}[0];"
+    return prelude, setup, call, finish, baseline
+
+
+def measure_filter(name: str, system: str, target: str, *, k: int = 1000,
+                   size_opts=("-Os", "-O2"), mix: bool = True) -> dict:
+    """Instructions per update (exact), cycle estimate, flash/RAM added (bytes)."""
+    from kinefuse.hil_tests.qemu.cost import measure_call_cost
+
+    src = GENERATED_DIR / f"{name}_{system}.c"
+    if not src.is_file():
+        raise KinefuseError(f"{src} does not exist")
+    table_c, table_dir, _ctype, n = _table_sources(name, system)
+    if k > n - 400:
+        raise KinefuseError(f"k must be at most {n - 400}")
+    prelude, setup, call, finish, baseline = _snippets(name, system)
+    cost = measure_call_cost([src, table_c], setup, call, target, k=k, prelude=prelude,
+                             finish=finish, baseline_code=baseline,
+                             include_dirs=[GENERATED_DIR, table_dir], size_opts=size_opts)
+    row = {"impl": "kinefuse", "filter": name, "format": system, "target": target,
+           "instructions_per_update": cost.per_call, "k": k, "warmup": 400,
+           "flash_bytes": cost.size["-Os"].flash if "-Os" in cost.size else None,
+           "ram_bytes": cost.size["-Os"].ram if "-Os" in cost.size else None,
+           "size": {o: s.as_dict() for o, s in cost.size.items()}}
+    if mix:
+        row.update(cycle_estimate(cost.build, target, K_MIX))
+    return row
+
+
+# ---- instruction mix and cycle estimate -------------------------------------------------------
+
+_LINE = re.compile(r"^\s*([0-9a-f]+):\s+(\S.*)$")
+
+
+def _disassembly(elf: Path) -> tuple[list[int], list[str], dict[int, int]]:
+    from kinefuse.firmware.targets import tool
+    out = subprocess.run([tool("objdump"), "-d", "--no-show-raw-insn", str(elf)],
+                         capture_output=True, text=True, check=True).stdout
+    addrs, mnems = [], []
+    for line in out.splitlines():
+        m = _LINE.match(line)
+        if m:
+            text = m.group(2).split(";")[0].strip()
+            if not text or text.startswith("."):
+                continue
+            addrs.append(int(m.group(1), 16))
+            mnems.append(text)
+    order = sorted(range(len(addrs)), key=addrs.__getitem__)
+    addrs = [addrs[i] for i in order]
+    mnems = [mnems[i] for i in order]
+    return addrs, mnems, {a: i for i, a in enumerate(addrs)}
+
+
+def _trace_pcs(elf: Path, target: str, k: int, timeout: float = 600.0) -> Counter:
+    from kinefuse.hil_tests.qemu.runner import run_elf
+    with tempfile.TemporaryDirectory(prefix="kf-mix-") as tmp:
+        log = Path(tmp) / "exec.log"
+        res = run_elf(elf, target, args=[f"{k:010d}"], timeout=timeout,
+                      extra_args=["-singlestep", "-d", "exec,nochain", "-D", str(log)])
+        res.check("instruction-mix trace")
+        pcs = Counter()
+        pat = re.compile(rb"Trace \d+: 0x[0-9a-f]+ \[[0-9a-f]+/([0-9a-f]+)/")
+        with open(log, "rb") as f:
+            for line in f:
+                m = pat.search(line)
+                if m:
+                    pcs[int(m.group(1), 16)] += 1
+    return pcs
+
+
+def classify(mnemonic: str, taken: float) -> float:
+    """Estimated Cortex-M4 cycles of one executed instruction (see the module docstring)."""
+    op = mnemonic.split()[0].lower()
+    base = op.split(".")[0]
+    if base in ("vdiv", "vsqrt"):
+        return 14.0
+    if base in ("vfma", "vfms", "vfnma", "vfnms", "vmla", "vmls"):
+        return 3.0
+    if base in ("sdiv", "udiv"):
+        return 7.0
+    if base in ("vldr", "vstr") or re.match(r"^(ldr|str|ldrex|strex)", base):
+        return 2.0
+    if re.match(r"^(ldm|stm|push|pop|vpush|vpop|vldm|vstm)", base):
+        regs = mnemonic[mnemonic.find("{") + 1:mnemonic.find("}")] if "{" in mnemonic else ""
+        nreg = 0
+        for part in regs.split(","):
+            part = part.strip()
+            if "-" in part:
+                a, b = part.split("-")
+                nreg += int(re.sub(r"\D", "", b)) - int(re.sub(r"\D", "", a)) + 1
+            elif part:
+                nreg += 1
+        return 1.0 + max(nreg, 1) + (2.0 if "pc" in regs else 0.0)
+    if re.match(r"^(b|bl|blx|bx|cbz|cbnz)(eq|ne|cs|cc|mi|pl|vs|vc|hi|ls|ge|lt|gt|le|hs|lo|al)?(\.[nw])?$", op) \
+            or base in ("b", "bl", "blx", "bx", "cbz", "cbnz"):
+        return 1.0 + 2.0 * taken
+    return 1.0
+
+
+def cycle_estimate(build, target: str, k: int = K_MIX) -> dict:
+    """Estimated cycles per update from a single-step trace of K and 0 calls."""
+    addrs, mnems, index = _disassembly(build.elf)
+    with_k = _trace_pcs(build.elf, target, k)
+    without = _trace_pcs(build.elf, target, 0)
+    per = Counter()
+    for pc, c in with_k.items():
+        d = c - without.get(pc, 0)
+        if d:
+            per[pc] = d
+    cycles = 0.0
+    classes = Counter()
+    unknown = 0
+    for pc, c in per.items():
+        i = index.get(pc)
+        if i is None:
+            j = bisect.bisect_right(addrs, pc) - 1
+            unknown += c
+            if j < 0:
+                continue
+            i = j
+        mn = mnems[i]
+        # taken fraction: how often the next executed instruction was not the next address
+        nxt = addrs[i + 1] if i + 1 < len(addrs) else None
+        fall = per.get(nxt, 0) if nxt is not None else 0
+        taken = 1.0 - min(1.0, fall / c) if c else 0.0
+        cyc = classify(mn, taken)
+        cycles += c * cyc
+        classes[_class(mn)] += c
+    total = sum(per.values())
+    cpu = cycles / k
+    return {"traced_instructions_per_update": total / k,
+            "est_cycles_per_update": cpu,
+            "est_us_at_64mhz": cpu / CLOCK_HZ * 1e6,
+            "mix_per_update": {c: v / k for c, v in sorted(classes.items())},
+            "cycle_model": "Cortex-M4 table estimate (not measured)"}
+
+
+def _class(mn: str) -> str:
+    base = mn.split()[0].lower().split(".")[0]
+    if base in ("vdiv", "vsqrt"):
+        return "fp_div_sqrt"
+    if base.startswith("v") and base not in ("vldr", "vstr", "vpush", "vpop", "vldm", "vstm", "vmov", "vmrs", "vmsr"):
+        return "fp_arith"
+    if base in ("vldr", "vstr", "vpush", "vpop", "vldm", "vstm") or re.match(r"^(ldr|str|ldm|stm|push|pop)", base):
+        return "load_store"
+    if re.match(r"^(b|bl|blx|bx|cbz|cbnz)([a-z]{2})?$", base):
+        return "branch"
+    if base in ("mul", "mla", "mls", "smull", "umull", "smlal", "umlal", "muls"):
+        return "int_mul"
+    return "other"

@@ -1,0 +1,185 @@
+"""``kinefuse sil report``: the scenario set through every loop; Markdown + PNG.
+
+For every IMU filter and scenario: orientation errors against ground truth (BROAD metric:
+RMSE of total / heading / inclination over the scored samples, degrees) for f32 and q (and the
+float64 reference with ``with_ref``); the bit-exactness table (every loop of a number system
+compared bit for bit with its Python model, first differing sample with its inputs); and the
+cost table of ``kinefuse bench cost --json`` when given.
+"""
+from __future__ import annotations
+
+import json
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from kinefuse.hil_tests.harness import compare, loops, motion
+from kinefuse.hil_tests.harness.scenarios import Case
+
+
+@dataclass
+class Report:
+    cases: list[str]
+    filters: list[str]
+    errors: dict = field(default_factory=dict)      # (filter, case, system) -> {total, heading, inclination}
+    bitexact: list = field(default_factory=list)    # rows
+    cost: list = field(default_factory=list)
+    seconds: float = 0.0
+
+    def as_dict(self) -> dict:
+        return {"cases": self.cases, "filters": self.filters,
+                "errors": [{"filter": f, "case": c, "system": s, **v}
+                           for (f, c, s), v in self.errors.items()],
+                "bitexact": self.bitexact, "cost": self.cost, "seconds": self.seconds}
+
+    @property
+    def all_bitexact(self) -> bool:
+        return all(r["mismatch"] is None and not r.get("error") for r in self.bitexact)
+
+
+def rmse_errors(q_est: np.ndarray, case: Case) -> dict[str, float]:
+    mask = case.movement & np.all(np.isfinite(case.q_true), axis=1)
+    if not mask.any():                     # static scenarios: score every sample with a reference
+        mask = np.all(np.isfinite(case.q_true), axis=1)
+    tot, hd, inc = motion.errors_deg(q_est[mask], case.q_true[mask])
+    return {"total": float(np.sqrt(np.mean(tot ** 2))), "heading": float(np.sqrt(np.mean(hd ** 2))),
+            "inclination": float(np.sqrt(np.mean(inc ** 2))), "scored": int(mask.sum())}
+
+
+def build_report(cases: list[Case], filters: list[str], loop_names: dict[str, list[str]] | None = None,
+                 with_ref: bool = False, qemu: bool = True, firmware: bool = False,
+                 progress: Callable[[str], None] | None = None) -> Report:
+    t0 = time.perf_counter()
+    rep = Report([c.name for c in cases], filters)
+    for name in filters:
+        for case in cases:
+            if with_ref:
+                if progress:
+                    progress(f"{name} / {case.name}: reference")
+                ref = loops.run_loop("ref", name, case.inputs)
+                rep.errors[(name, case.name, "ref")] = rmse_errors(ref["q"], case)
+            for system in loops.systems(name):
+                lps = (loop_names or {}).get(system) or loops.bitexact_loops(name, system, qemu=qemu,
+                                                                              firmware=firmware)
+                outs, errors = {}, {}
+                for lp in lps:
+                    if progress:
+                        progress(f"{name} / {case.name}: {lp}")
+                    try:
+                        outs[lp] = loops.run_loop(lp, name, case.inputs)
+                    except Exception as exc:        # reported in the table, not hidden
+                        errors[lp] = f"{type(exc).__name__}: {exc}"
+                first = next(iter(outs), None)
+                for lp in lps:
+                    row = {"filter": name, "case": case.name, "system": system, "model": first,
+                           "loop": lp, "samples": case.n, "mismatch": None, "error": errors.get(lp)}
+                    if lp in outs and first is not None and lp != first:
+                        m = compare.compare(first, outs[first], lp, outs[lp], case.inputs)
+                        row["mismatch"] = m.as_dict() if m else None
+                    if lp != first:
+                        rep.bitexact.append(row)
+                if first is not None:
+                    q = loops.decode(name, first, outs[first])["q"]
+                    rep.errors[(name, case.name, system)] = rmse_errors(q, case)
+    rep.seconds = time.perf_counter() - t0
+    return rep
+
+
+def write_markdown(rep: Report, out_dir: Path, png_name: str | None) -> Path:
+    lines = ["# kinefuse SIL/PIL report", "",
+             f"{len(rep.filters)} filters × {len(rep.cases)} scenarios, {rep.seconds:.0f} s. "
+             "Errors: BROAD metric (e = q_est ⊗ q_true⁻¹; RMSE over scored samples; degrees; "
+             "ENU earth frame).", ""]
+    systems = sorted({s for (_f, _c, s) in rep.errors}, key=["ref", "f32", "q"].index)
+    lines += ["## Orientation error against ground truth (total RMSE, degrees)", ""]
+    for system in systems:
+        lines += [f"### {system}", "", "| scenario | " + " | ".join(rep.filters) + " |",
+                  "|---|" + "---:|" * len(rep.filters)]
+        for c in rep.cases:
+            cells = []
+            for f in rep.filters:
+                e = rep.errors.get((f, c, system))
+                cells.append(f"{e['total']:.2f} (h {e['heading']:.2f}, i {e['inclination']:.2f})" if e else "–")
+            lines.append(f"| {c} | " + " | ".join(cells) + " |")
+        lines.append("")
+    lines += ["## Bit-exactness (every output bit of every sample against the Python model)", "",
+              "| filter | format | loop | scenarios | samples | identical | first mismatch |",
+              "|---|---|---|---:|---:|---|---|"]
+    groups: dict = {}
+    for r in rep.bitexact:
+        groups.setdefault((r["filter"], r["system"], r["loop"]), []).append(r)
+    for (f, s, lp), rows in groups.items():
+        bad = [r for r in rows if r["mismatch"] or r["error"]]
+        first = ""
+        if bad:
+            r = bad[0]
+            first = (f"{r['case']}: {r['error']}" if r["error"] else
+                     f"{r['case']} sample {r['mismatch']['sample']} ({', '.join(r['mismatch']['fields'])}); "
+                     f"inputs {r['mismatch']['inputs']}")
+        lines.append(f"| {f} | {s} | {lp} vs {rows[0]['model']} | {len(rows)} | "
+                     f"{sum(r['samples'] for r in rows)} | {'yes' if not bad else 'NO'} | {first} |")
+    lines.append("")
+    if rep.cost:
+        lines += ["## Cost per update", "",
+                  "Instructions exact (QEMU); cycles and µs at 64 MHz are a Cortex-M4 table estimate; "
+                  "bytes added at -Os (own = the filter's object/state only).", "",
+                  "| impl | filter | format | target | instructions | est. cycles | est. µs | flash | own flash | RAM | own RAM |",
+                  "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+        for r in rep.cost:
+            if r.get("error"):
+                lines.append(f"| {r['impl']} | {r['filter']} | {r['format']} | {r['target']} | error: {r['error']} |||||||")
+                continue
+            cyc = r.get("est_cycles_per_update")
+            cyc_s = "" if cyc is None else f"{cyc:.0f}"
+            us_s = "" if cyc is None else f"{r['est_us_at_64mhz']:.1f}"
+            lines.append(f"| {r['impl']} | {r['filter']} | {r['format']} | {r['target']} | "
+                         f"{r['instructions_per_update']:.1f} | {cyc_s} | {us_s} | {r['flash_bytes']} | "
+                         f"{r.get('own_flash_bytes', '')} | {r['ram_bytes']} | {r.get('own_ram_bytes', '')} |")
+        lines.append("")
+    if png_name:
+        lines += [f"![errors]({png_name})", ""]
+    path = out_dir / "sil_report.md"
+    path.write_text("\n".join(lines))
+    return path
+
+
+def write_png(rep: Report, out_dir: Path) -> Path | None:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    systems = [s for s in ("f32", "q") if any(k[2] == s for k in rep.errors)]
+    if not systems:
+        return None
+    fig, axes = plt.subplots(len(systems), 1, figsize=(max(8, 0.9 * len(rep.cases) + 3), 3.6 * len(systems)),
+                             squeeze=False)
+    width = 0.8 / max(1, len(rep.filters))
+    x = np.arange(len(rep.cases))
+    for ax, system in zip(axes[:, 0], systems):
+        for i, f in enumerate(rep.filters):
+            vals = [rep.errors.get((f, c, system), {}).get("total", np.nan) for c in rep.cases]
+            ax.bar(x + i * width - 0.4 + width / 2, vals, width, label=f)
+        ax.set_yscale("log")
+        ax.set_ylabel("total RMSE [deg]")
+        ax.set_title(f"orientation error vs ground truth ({system})")
+        ax.set_xticks(x)
+        ax.set_xticklabels(rep.cases, rotation=30, ha="right", fontsize=8)
+        ax.grid(axis="y", alpha=0.3)
+    axes[0, 0].legend(fontsize=7, ncol=min(5, len(rep.filters)))
+    fig.tight_layout()
+    path = out_dir / "sil_report.png"
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def load_cost(path: str | Path) -> list[dict]:
+    from kinefuse.host.errors import KinefuseError
+    try:
+        data = json.loads(Path(path).read_text())
+        return list(data["rows"])
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        raise KinefuseError(f"cannot read cost JSON {path}: {exc}") from None

@@ -1,0 +1,183 @@
+"""``kinefuse bench cost``: per-update cost of every IMU filter on Cortex-M4F and M0, with
+x-io Fusion and VQF measured in the same run with the same flags and the same motion.
+
+Per filter, number format and target: executed instructions per update (exact, QEMU counting
+plugin, averaged over K updates after 400 warm-up updates of the same synthetic motion the
+competitors get: 100 Hz, magnetometer present), estimated cycles and µs at 64 MHz (an estimate
+from the executed instruction mix with a Cortex-M4 cycle table: FP add/mul 1, load/store 2,
+VDIV/VSQRT 14, VFMA 3, taken branch 3 — not a measurement), and the flash/RAM the filter adds
+to a program (``arm-none-eabi-size`` with and without it, ``-Os``, ``--gc-sections``); the part
+of that which is the filter's own object file is given separately from newlib/libgcc.
+
+``--json``: exactly one JSON object ``{"rows": [...], ...}``; each row has ``impl``
+(kinefuse|fusion|vqf), ``filter``, ``format`` (f32|q), ``target`` (m4f|m0),
+``instructions_per_update``, ``flash_bytes``, ``ram_bytes`` and more.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+
+from kinefuse.host.errors import KinefuseError
+
+COMPETITOR_CASES = ("fusion-ahrs-9d", "fusion-ahrs-6d", "vqf-9d-f32", "vqf-6d-f32")
+TARGETS = {"f32": ("m4f", "m0"), "q": ("m4f", "m0")}
+GOALS = {  # (filter, format, target): instructions per update the issue sets as a target
+    ("flagship", "f32", "m4f"): 400, ("madgwick", "f32", "m4f"): 200, ("flagship", "q", "m0"): 2500,
+}
+
+
+def register_bench(bench_subparsers) -> None:
+    p = bench_subparsers.add_parser(
+        "cost", help="instructions per update (exact, QEMU), cycle estimate, flash/RAM on "
+                     "Cortex-M4F and M0 for every filter, with Fusion and VQF")
+    p.add_argument("--filters", default=None, help="comma-separated filters (default: every IMU filter)")
+    p.add_argument("--formats", default="f32,q", help="comma-separated number formats (default f32,q)")
+    p.add_argument("--targets", default="m4f,m0", help="comma-separated targets (default m4f,m0)")
+    p.add_argument("--k", type=int, default=1000, help="counted updates (default 1000, at most 1000)")
+    p.add_argument("--no-competitors", action="store_true", help="skip Fusion and VQF")
+    p.add_argument("--no-mix", action="store_true", help="skip the instruction-mix cycle estimate")
+    p.add_argument("--jobs", type=int, default=2, help="parallel measurements (default 2)")
+    p.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    p.set_defaults(func=run)
+
+
+def _own_split(cost, stems: set[str]) -> dict:
+    origin = cost.size_origin.get("-Os", {})
+    own_flash = sum(v.flash for k, v in origin.items() if k in stems)
+    own_ram = sum(v.ram for k, v in origin.items() if k in stems or k == "kf_cost_driver")
+    return {"own_flash_bytes": own_flash, "own_ram_bytes": own_ram,
+            "size_by_origin": {k: v.as_dict() for k, v in origin.items()}}
+
+
+def measure_ours(name: str, system: str, target: str, k: int, mix: bool) -> dict:
+    from kinefuse.hil_tests.harness import cost as hc
+    from kinefuse.hil_tests.qemu import cost as qc
+
+    row = hc.measure_filter(name, system, target, k=k, mix=False)
+    # size split: rebuild through measure_call_cost's origin data
+    table_c, table_dir, _ct, _n = hc._table_sources(name, system)
+    prelude, setup, call, finish, baseline = hc._snippets(name, system)
+    from kinefuse.codegen.generate import GENERATED_DIR
+    total, origin = qc.size_delta_by_origin([GENERATED_DIR / f"{name}_{system}.c", table_c], setup, call,
+                                            target, opt="-Os", prelude=prelude, finish=finish,
+                                            baseline_code=baseline,
+                                            include_dirs=[GENERATED_DIR, table_dir])
+    stem = f"{name}_{system}"
+    row["own_flash_bytes"] = sum(v.flash for kk, v in origin.items() if kk == stem)
+    row["own_ram_bytes"] = sum(v.ram for kk, v in origin.items() if kk in (stem, "kf_cost_driver"))
+    row["size_by_origin"] = {kk: v.as_dict() for kk, v in origin.items()}
+    if mix:
+        prog = qc.cost_program([GENERATED_DIR / f"{name}_{system}.c", table_c], setup, call, target,
+                               prelude=prelude, finish=finish, baseline_code=baseline,
+                               include_dirs=[GENERATED_DIR, table_dir])
+        row.update(hc.cycle_estimate(prog, target))
+    goal = GOALS.get((name, system, target))
+    if goal is not None:
+        row["goal_instructions"] = goal
+        row["goal_met"] = row["instructions_per_update"] <= goal
+    return row
+
+
+def measure_competitor(case: str, target: str, mix: bool) -> dict:
+    from kinefuse.hil_tests.harness import cost as hc
+    from kinefuse.hil_tests.qemu.competitors import CASES, K, WARMUP, fetch_sdist, measure_case
+
+    r = measure_case(case, target)
+    c = CASES[case]
+    row = {"impl": "fusion" if c.package == "imufusion" else "vqf", "filter": case, "format": "f32",
+           "target": target, "description": c.description, "k": K, "warmup": WARMUP}
+    if r.cost is None:
+        row.update({"error": r.error, "instructions_per_update": None, "flash_bytes": None,
+                    "ram_bytes": None})
+        return row
+    row.update({"instructions_per_update": r.cost.per_call,
+                "flash_bytes": r.cost.size["-Os"].flash, "ram_bytes": r.cost.size["-Os"].ram,
+                "size": {o: s.as_dict() for o, s in r.cost.size.items()}})
+    stems = {p.stem for p in c.sources(fetch_sdist(c.package))}
+    row.update(_own_split(r.cost, stems))
+    if mix:
+        row.update(hc.cycle_estimate(r.cost.build, target))
+    return row
+
+
+def _job(kind: str, a: str, b: str, c: str, k: int, mix: bool) -> dict:
+    try:
+        if kind == "ours":
+            return measure_ours(a, b, c, k, mix)
+        return measure_competitor(a, c, mix)
+    except KinefuseError as exc:
+        return {"impl": "kinefuse" if kind == "ours" else kind, "filter": a, "format": b, "target": c,
+                "error": str(exc), "instructions_per_update": None, "flash_bytes": None,
+                "ram_bytes": None}
+
+
+def run(args: argparse.Namespace) -> int:
+    from concurrent.futures import ProcessPoolExecutor
+
+    from kinefuse.hil_tests.harness import loops
+    from kinefuse.hil_tests.qemu import qemu_unavailable
+
+    reason = qemu_unavailable()
+    if reason:
+        raise KinefuseError(reason)
+    filters = [f.strip() for f in args.filters.split(",")] if args.filters else loops.imu_filters()
+    unknown = [f for f in filters if f not in loops.imu_filters()]
+    if unknown:
+        raise KinefuseError(f"unknown IMU filter {unknown[0]!r} (available: {', '.join(loops.imu_filters())})")
+    formats = [f.strip() for f in args.formats.split(",") if f.strip()]
+    targets = [t.strip() for t in args.targets.split(",") if t.strip()]
+    if any(f not in ("f32", "q") for f in formats) or any(t not in ("m4f", "m0") for t in targets):
+        raise KinefuseError("--formats takes f32,q and --targets m4f,m0")
+    if not 1 <= args.k <= 1000:
+        raise KinefuseError("--k must be between 1 and 1000")
+    jobs = [("ours", f, s, t) for f in filters for s in formats if s in loops.systems(f)
+            for t in targets if t in TARGETS[s]]
+    if not args.no_competitors and "f32" in formats:
+        jobs += [("competitor", c, "f32", t) for c in COMPETITOR_CASES for t in targets]
+
+    from kinefuse.host.bench.common import progress
+    rows = []
+    with progress(not args.json) as bar, ProcessPoolExecutor(max(1, args.jobs)) as pool:
+        task = bar.add_task("cost on M4F/M0", total=len(jobs))
+        futs = [pool.submit(_job, kind, a, b, c, args.k, not args.no_mix) for kind, a, b, c in jobs]
+        for fut in futs:
+            rows.append(fut.result())
+            bar.advance(task)
+    result = {"rows": rows, "clock_hz": 64_000_000,
+              "cycle_model": "estimate: Cortex-M4 table (FP add/mul 1, load/store 2, VDIV/VSQRT 14, "
+                             "VFMA 3, taken branch 3) over the executed instruction mix; not measured",
+              "motion": "competitors.motion(): 100 Hz synthetic rotation with magnetometer, 400 "
+                        "warm-up updates, then K counted"}
+    if args.json:
+        print(json.dumps(result))
+    else:
+        print_table(rows)
+    return 0 if all(not r.get("error") for r in rows) else 1
+
+
+def print_table(rows: list[dict]) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
+    t = Table(title="Cost per update (instructions exact under QEMU; cycles/µs estimated at 64 MHz; "
+                    "bytes added, -Os)")
+    for col in ("impl", "filter", "format", "target", "instr/update", "est. cycles", "est. µs",
+                "flash", "own flash", "RAM", "own RAM", "goal"):
+        t.add_column(col, justify="right")
+    for r in rows:
+        if r.get("error"):
+            t.add_row(r["impl"], r["filter"], r["format"], r["target"], f"error: {r['error']}",
+                      *[""] * 7)
+            continue
+        goal = ""
+        if "goal_instructions" in r:
+            goal = f"≤{r['goal_instructions']} {'met' if r['goal_met'] else 'MISSED'}"
+        cyc = r.get("est_cycles_per_update")
+        t.add_row(r["impl"], r["filter"], r["format"], r["target"],
+                  f"{r['instructions_per_update']:,.1f}",
+                  f"{cyc:,.0f}" if cyc is not None else "-",
+                  f"{r['est_us_at_64mhz']:.1f}" if cyc is not None else "-",
+                  str(r["flash_bytes"]), str(r.get("own_flash_bytes", "")), str(r["ram_bytes"]),
+                  str(r.get("own_ram_bytes", "")), goal)
+    Console().print(t)

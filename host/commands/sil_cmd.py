@@ -1,0 +1,95 @@
+"""``kinefuse sil report``: every IMU filter through the model, host and QEMU loops on the
+scenario set; Markdown + PNG report (errors vs ground truth, bit-exact table, cost table)."""
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from kinefuse.host.errors import KinefuseError
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("sil", help="software/processor-in-the-loop harness")
+    sub = p.add_subparsers(dest="sil_command", metavar="ACTION")
+    r = sub.add_parser("report", help="run the scenario set through every loop; write Markdown + PNG")
+    r.add_argument("--out", default="sil_report", help="output directory (default ./sil_report)")
+    r.add_argument("--ci", action="store_true",
+                   help="the CI subset: short (12 s) simulated scenarios, no BROAD trial")
+    r.add_argument("--filters", default=None, help="comma-separated filters (default: every IMU filter)")
+    r.add_argument("--scenarios", default=None, help="comma-separated simulator scenarios")
+    r.add_argument("--seconds", type=float, default=None, help="keep only the first SECONDS of each scenario")
+    r.add_argument("--broad", default=None,
+                   help="BROAD trial file added to the set (default: first shared/bundled trial; 'none')")
+    r.add_argument("--seed", type=int, default=1, help="simulator seed (default 1)")
+    r.add_argument("--no-qemu", action="store_true", help="skip the Cortex-M loops")
+    r.add_argument("--with-ref", action="store_true", help="also score the float64 reference (slow)")
+    r.add_argument("--cost", default=None, metavar="JSON",
+                   help="include a cost table from `kinefuse bench cost --json` output")
+    r.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    r.set_defaults(func=run_report)
+    p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
+
+
+def run_report(args: argparse.Namespace) -> int:
+    from kinefuse.hil_tests.harness import loops, report, scenarios
+    from kinefuse.hil_tests.sim.segments import SpecError
+
+    filters = [f.strip() for f in args.filters.split(",")] if args.filters else loops.imu_filters()
+    bad = [f for f in filters if f not in loops.imu_filters()]
+    if bad:
+        raise KinefuseError(f"unknown IMU filter {bad[0]!r} (available: {', '.join(loops.imu_filters())})")
+    if args.seconds is not None and not args.seconds > 0:
+        raise KinefuseError("--seconds must be positive")
+    qemu = not args.no_qemu
+    if qemu:
+        from kinefuse.hil_tests.qemu import qemu_unavailable
+        reason = qemu_unavailable()
+        if reason:
+            raise KinefuseError(f"{reason} (or pass --no-qemu)")
+    cost = report.load_cost(args.cost) if args.cost else []
+    names = ([s.strip() for s in args.scenarios.split(",")] if args.scenarios
+             else list(scenarios.CI_SCENARIOS if args.ci else scenarios.FULL_SCENARIOS))
+    seconds = args.seconds if args.seconds is not None else (scenarios.CI_SECONDS if args.ci else None)
+    out = Path(args.out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise KinefuseError(f"cannot create {out}: {exc.strerror}") from None
+
+    from kinefuse.host.bench.common import progress
+    with progress(not args.json) as bar:
+        task = bar.add_task("simulating scenarios", total=None)
+        try:
+            cases = [scenarios.sim_case(n, seed=args.seed, seconds=seconds) for n in names]
+        except SpecError as exc:
+            raise KinefuseError(str(exc)) from None
+        broad = "none" if args.ci and args.broad is None else args.broad
+        if broad != "none":
+            path = broad or scenarios.default_broad_trial()
+            if not Path(path).exists():
+                raise KinefuseError(f"BROAD trial {path} not found")
+            case = scenarios.broad_case(path)
+            cases.append(case.head(int(seconds * case.rate_hz)) if seconds else case)
+        rep = report.build_report(cases, filters, with_ref=args.with_ref, qemu=qemu,
+                                  progress=lambda s: bar.update(task, description=s))
+    rep.cost = cost
+    png = report.write_png(rep, out)
+    md = report.write_markdown(rep, out, png.name if png else None)
+    (out / "sil_report.json").write_text(json.dumps(rep.as_dict(), default=float))
+    if args.json:
+        print(json.dumps({"markdown": str(md), "png": str(png) if png else None,
+                          "all_bitexact": rep.all_bitexact, "seconds": rep.seconds,
+                          "bitexact": rep.bitexact}, default=float))
+    else:
+        n_bad = sum(1 for r in rep.bitexact if r["mismatch"] or r["error"])
+        print(f"wrote {md}" + (f" and {png}" if png else ""))
+        print(f"bit-exact: {len(rep.bitexact) - n_bad} of {len(rep.bitexact)} loop comparisons identical"
+              f" ({rep.seconds:.0f} s)")
+        for r in rep.bitexact:
+            if r["error"]:
+                print(f"ERROR {r['filter']} {r['system']} {r['loop']} on {r['case']}: {r['error']}")
+            elif r["mismatch"]:
+                from kinefuse.hil_tests.harness.compare import Mismatch
+                print("MISMATCH " + f"{r['filter']} on {r['case']}: " + Mismatch(**r["mismatch"]).message())
+    return 0 if rep.all_bitexact else 1
