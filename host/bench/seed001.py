@@ -26,12 +26,11 @@ defaults instead.
 from __future__ import annotations
 
 import json
-import math
 import time
 
 import numpy as np
 
-from kinefuse.host.bench.common import eprint, progress
+from kinefuse.host.bench.common import progress
 from kinefuse.host.errors import KinefuseError
 
 SEED_FILTERS = ("madgwick", "vac", "vak", "guo")
