@@ -44,4 +44,18 @@ int kf_hal_storage_write(uint32_t offset, const void *buf, uint32_t len);
 /* Restart the unit (never returns on hardware; the host build may return). */
 void kf_hal_reboot(void);
 
+/* Optional functions: the application links weak defaults (firmware/app/kf_hal_optional.c)
+ * that a board may override. */
+
+/* Set the sensor output data rate; returns the rate the sensor will deliver (Hz), or -1
+ * when the board has no sensor (default). */
+int32_t kf_hal_sensor_configure(uint32_t rate_hz);
+
+/* Battery voltage in millivolts; UINT16_MAX when unknown (default). */
+uint16_t kf_hal_battery_mv(void);
+
+/* Sensor samples lost before kf_hal_sensor_read could deliver them (FIFO overrun), counted
+ * since reset; 0 by default. */
+uint32_t kf_hal_sensor_dropped(void);
+
 #endif /* KF_HAL_H */

@@ -1,0 +1,48 @@
+/*
+ * kf_app_internal.h - functions shared by the application's source files (not an API).
+ */
+#ifndef KF_APP_INTERNAL_H
+#define KF_APP_INTERNAL_H
+
+#include <stdint.h>
+
+#include "kf_app.h"
+
+/* kf_config.c */
+void kf_config_load(kf_app *app);
+int kf_config_save(kf_app *app);
+/* validate, apply and persist one parameter value: 0 or a MAV_PARAM_ERROR code */
+uint8_t kf_config_set(kf_app *app, int32_t index, kf_pvalue value);
+void kf_config_apply_rates(kf_app *app);
+void kf_config_select_filter(kf_app *app);
+void kf_config_reset_filter(kf_app *app);
+
+/* kf_send.c: pack one message and queue it (1: queued, 0: dropped) */
+int kf_send(kf_app *app, mavlink_message_t *msg);
+uint8_t kf_sysid(const kf_app *app);
+int kf_send_param_value(kf_app *app, int32_t index);
+int kf_send_param_error(kf_app *app, const char *name16, int32_t index, uint8_t error,
+                        uint8_t to_sys, uint8_t to_comp);
+int kf_send_ack(kf_app *app, uint16_t command, uint8_t result, uint8_t to_sys, uint8_t to_comp);
+int kf_send_heartbeat(kf_app *app);
+int kf_send_unit_status(kf_app *app);
+int kf_send_sys_status(kf_app *app);
+int kf_send_autopilot_version(kf_app *app);
+
+/* kf_handle.c */
+void kf_handle_frame(kf_app *app, const mavlink_message_t *msg);
+/* install a signing key (all zero: signing off); timestamp: lowest accepted from now on */
+void kf_app_set_key(kf_app *app, const uint8_t key[32], uint64_t timestamp);
+
+/* kf_status.c */
+void kf_status_tick(kf_app *app, uint64_t now);
+
+/* kf_quat.c */
+void kf_quat_mul(const float a[4], const float b[4], float out[4]);
+/* tare quaternion (rotation about earth z) making the heading of the sensor x axis `heading`
+ * rad; returns 0, or -1 when the x axis is (nearly) vertical */
+int kf_quat_heading_tare(const float q[4], float heading, float tare[4]);
+/* ENU earth frame -> NED earth frame (body frame unchanged) */
+void kf_quat_enu_to_ned(const float q_enu[4], float q_ned[4]);
+
+#endif /* KF_APP_INTERNAL_H */

@@ -1,0 +1,272 @@
+/*
+ * kf_config.c - parameter values: defaults, load/save through kf_store, validation and the
+ * side effects of a change (filter switch, stream rates, unit id, calibration).
+ */
+#include <stdint.h>
+#include <string.h>
+
+#include "kf_app_internal.h"
+
+static const kf_filter_ops *active_ops(const kf_app *app)
+{
+    return app->filter >= 0 ? &kf_gen_filters[app->filter] : NULL;
+}
+
+/* float32 parameter vector of filter k, with value v at position `at` (-1: none replaced) */
+static void filter_vector(const kf_app *app, int32_t k, int32_t at, float v, float *vec)
+{
+    const kf_filter_ops *f = &kf_gen_filters[k];
+    for (uint16_t i = 0; i < f->param_count; i++) {
+        vec[i] = app->values[KF_P_FILTER_FIRST + f->first_param + i].f;
+    }
+    if (at >= 0) {
+        vec[at] = v;
+    }
+}
+
+static void calib_vector(const kf_app *app, int32_t at, float v, float *vec)
+{
+    for (uint16_t i = 0; i < KF_GEN_CALIB_PARAM_COUNT; i++) {
+        vec[i] = app->values[KF_P_CALIB_FIRST + i].f;
+    }
+    if (at >= 0) {
+        vec[at] = v;
+    }
+}
+
+static int filter_check(kf_app *app, int32_t k, const float *vec)
+{
+    const kf_filter_ops *f = &kf_gen_filters[k];
+    if (f->build == NULL) {
+        return 0;    /* left out of this build: the values' own ranges are all we can check */
+    }
+    f->build(vec, &app->fparams);
+    return f->init(&app->scratch, &app->fparams);
+}
+
+static void update_calibrated_flag(kf_app *app)
+{
+    app->calibrated = 0u;
+    for (uint32_t i = KF_P_CALIB_FIRST; i < KF_P_FILTER_FIRST; i++) {
+        if (app->values[i].u != kf_param_table[i].def.u) {
+            app->calibrated = 1u;
+        }
+    }
+}
+
+/* (Re)start the selected filter from its parameters; clears tare and status. */
+void kf_config_reset_filter(kf_app *app)
+{
+    float vec[KF_GEN_FILTER_PARAM_MAX + 1];
+    const kf_filter_ops *f = active_ops(app);
+    app->cnt.rejected_base += (uint32_t)app->out.rejected;
+    memset(&app->out, 0, sizeof app->out);
+    app->out.q[0] = 1.0f;
+    app->initialised = 0u;
+    app->tared = 0u;
+    if (f == NULL) {
+        return;
+    }
+    filter_vector(app, app->filter, -1, 0.0f, vec);
+    f->build(vec, &app->fparams);
+    (void)f->init(&app->filt, &app->fparams);   /* validated when the values were accepted */
+}
+
+void kf_config_select_filter(kf_app *app)
+{
+    app->filter = kf_filter_index(app->values[KF_P_FILTER].u);
+    kf_config_reset_filter(app);
+}
+
+static uint16_t divider(uint32_t rate, uint32_t hz)
+{
+    if (hz == 0u || rate == 0u) {
+        return 0u;
+    }
+    uint32_t d = (rate + hz / 2u) / hz;
+    return (uint16_t)(d == 0u ? 1u : d);
+}
+
+void kf_config_apply_rates(kf_app *app)
+{
+    uint32_t rate = app->values[KF_P_RATE_HZ].u;
+    app->div_ori = divider(rate, app->values[KF_P_ORI_RATE_HZ].u);
+    app->div_hr = divider(rate, app->values[KF_P_HRIMU_RATE].u);
+    app->div_aq = divider(rate, app->values[KF_P_ATTQ_RATE].u);
+    app->cnt_ori = app->cnt_hr = app->cnt_aq = 0u;
+    (void)kf_hal_sensor_configure(rate);
+}
+
+/* --- persistence ------------------------------------------------------------------------ */
+
+static void put_entry(void *ctx, const kf_store_entry *e)
+{
+    kf_app *app = (kf_app *)ctx;
+    for (int32_t i = 0; i < (int32_t)KF_PARAM_COUNT; i++) {
+        const kf_param_desc *d = &kf_param_table[i];
+        if ((d->flags & KF_PF_READONLY) == 0u && kf_store_name_hash(d->name) == e->name_hash) {
+            kf_pvalue v;
+            v.u = e->value;
+            if (kf_param_in_range(d, v)) {
+                app->values[i] = v;
+            } else {
+                app->cnt.stored_rejects++;   /* e.g. a range narrowed by a firmware update */
+            }
+            return;
+        }
+    }
+}
+
+static void get_entry(void *ctx, uint16_t i, kf_store_entry *e)
+{
+    const kf_app *app = (const kf_app *)ctx;
+    /* the table without its read-only rows, in table order */
+    uint16_t k = 0;
+    for (int32_t j = 0; j < (int32_t)KF_PARAM_COUNT; j++) {
+        if ((kf_param_table[j].flags & KF_PF_READONLY) != 0u) {
+            continue;
+        }
+        if (k == i) {
+            e->name_hash = kf_store_name_hash(kf_param_table[j].name);
+            e->value = app->values[j].u;
+            return;
+        }
+        k++;
+    }
+    e->name_hash = 0u;
+    e->value = 0u;
+}
+
+static uint16_t stored_count(void)
+{
+    uint16_t n = 0;
+    for (int32_t j = 0; j < (int32_t)KF_PARAM_COUNT; j++) {
+        if ((kf_param_table[j].flags & KF_PF_READONLY) == 0u) {
+            n++;
+        }
+    }
+    return n;
+}
+
+int kf_config_save(kf_app *app)
+{
+    kf_store_header h;
+    memset(&h, 0, sizeof h);
+    memcpy(h.key, app->key, sizeof h.key);
+    h.sign_timestamp = app->signing.timestamp;
+    return kf_store_save(&app->store, &h, stored_count(), get_entry, app);
+}
+
+/* Values that pass their own range but not the filter's/calibration's joint check go back
+ * to their defaults, one at a time (the generated init names the first bad one). */
+static void repair_groups(kf_app *app)
+{
+    float vec[KF_GEN_CALIB_PARAM_COUNT + KF_GEN_FILTER_PARAM_MAX];
+    for (int tries = 0; tries <= (int)KF_GEN_CALIB_PARAM_COUNT; tries++) {
+        calib_vector(app, -1, 0.0f, vec);
+        int r = kf_gen_calib_init(&app->calib, vec);
+        if (r >= 0 || -r - 1 >= (int)KF_GEN_CALIB_PARAM_COUNT) {
+            break;
+        }
+        uint32_t i = KF_P_CALIB_FIRST + (uint32_t)(-r - 1);
+        app->values[i] = kf_param_table[i].def;
+        app->cnt.stored_rejects++;
+    }
+    for (int32_t k = 0; k < (int32_t)KF_GEN_FILTER_COUNT; k++) {
+        for (int tries = 0; tries <= (int)KF_GEN_FILTER_PARAM_MAX; tries++) {
+            filter_vector(app, k, -1, 0.0f, vec);
+            int r = filter_check(app, k, vec);
+            if (r >= 0 || -r - 1 >= (int)kf_gen_filters[k].param_count) {
+                break;
+            }
+            uint32_t i = KF_P_FILTER_FIRST + kf_gen_filters[k].first_param + (uint32_t)(-r - 1);
+            app->values[i] = kf_param_table[i].def;
+            app->cnt.stored_rejects++;
+        }
+    }
+}
+
+void kf_config_load(kf_app *app)
+{
+    kf_store_header h;
+    for (int32_t i = 0; i < (int32_t)KF_PARAM_COUNT; i++) {
+        app->values[i] = kf_param_table[i].def;
+    }
+    memset(app->key, 0, sizeof app->key);
+    app->key_set = 0u;
+    app->sign_floor = 0u;
+    if (kf_store_load(&app->store, &h, put_entry, app) >= 0) {
+        memcpy(app->key, h.key, sizeof app->key);
+        for (uint32_t i = 0; i < KF_STORE_KEY_LEN; i++) {
+            app->key_set |= (uint8_t)(app->key[i] != 0u);
+        }
+        app->sign_floor = h.sign_timestamp;
+    }
+    app->values[KF_P_SIGNING].u = app->key_set;
+    if (!kf_param_in_range(&kf_param_table[KF_P_FILTER], app->values[KF_P_FILTER])) {
+        /* the default filter is not in this build: take the first that is */
+        app->values[KF_P_FILTER].u = 0u;
+        for (int32_t k = KF_GEN_FILTER_COUNT - 1; k >= 0; k--) {
+            if (kf_gen_filters[k].update != NULL) {
+                app->values[KF_P_FILTER].u = kf_gen_filters[k].id;
+            }
+        }
+    }
+    repair_groups(app);
+    update_calibrated_flag(app);
+}
+
+/* --- one parameter ---------------------------------------------------------------------- */
+
+uint8_t kf_config_set(kf_app *app, int32_t index, kf_pvalue v)
+{
+    float vec[KF_GEN_CALIB_PARAM_COUNT + KF_GEN_FILTER_PARAM_MAX];
+    const kf_param_desc *d;
+    if (index < 0 || index >= (int32_t)KF_PARAM_COUNT) {
+        return MAV_PARAM_ERROR_DOES_NOT_EXIST;
+    }
+    d = &kf_param_table[index];
+    if ((d->flags & KF_PF_READONLY) != 0u) {
+        return MAV_PARAM_ERROR_READ_ONLY;
+    }
+    if (!kf_param_in_range(d, v)) {
+        return MAV_PARAM_ERROR_VALUE_OUT_OF_RANGE;
+    }
+    if (d->group == KF_PG_CALIB) {
+        kf_calib_state tmp;
+        calib_vector(app, d->index, v.f, vec);
+        if (kf_gen_calib_init(&tmp, vec) != 0) {
+            return MAV_PARAM_ERROR_VALUE_OUT_OF_RANGE;   /* the generated range check */
+        }
+        app->calib = tmp;
+    } else if (d->group == KF_PG_FILTER) {
+        const kf_filter_ops *f = &kf_gen_filters[d->filter];
+        filter_vector(app, d->filter, d->index, v.f, vec);
+        if (filter_check(app, d->filter, vec) != 0) {
+            return MAV_PARAM_ERROR_VALUE_OUT_OF_RANGE;   /* the generated range check */
+        }
+        if ((int32_t)d->filter == app->filter && f->set != NULL) {
+            f->set(&app->filt, &app->fparams);           /* live: no reset of the estimate */
+        }
+    }
+    uint32_t old = app->values[index].u;
+    app->values[index] = v;
+    if (old != v.u) {
+        switch (index) {
+        case KF_P_FILTER:
+            kf_config_select_filter(app);
+            break;
+        case KF_P_RATE_HZ:
+        case KF_P_ORI_RATE_HZ:
+        case KF_P_HRIMU_RATE:
+        case KF_P_ATTQ_RATE:
+            kf_config_apply_rates(app);
+            break;
+        default:
+            break;
+        }
+        update_calibrated_flag(app);
+        (void)kf_config_save(app);   /* a failure is counted in store.errors */
+    }
+    return 0u;
+}

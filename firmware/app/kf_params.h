@@ -1,0 +1,78 @@
+/*
+ * kf_params.h - the unit's parameters: one table of descriptors (name <= 16 characters,
+ * MAVLink type, default, range) for the application settings, the calibration and every
+ * wired filter; values as 32-bit patterns (float bits for REAL32, integers bytewise).
+ *
+ * Order: application parameters (kf_app_param), calibration (KF_ACC_*, KF_GYR_*, KF_MAG_*,
+ * generated), then each filter's parameters (KF_<tag>_*, generated) in kf_filter_list.h order.
+ */
+#ifndef KF_PARAMS_H
+#define KF_PARAMS_H
+
+#include <stdint.h>
+
+#include "kf_filters.h"
+
+/* MAV_PARAM_TYPE values used (common.xml) */
+#define KF_PT_UINT8  1u
+#define KF_PT_UINT16 3u
+#define KF_PT_UINT32 5u
+#define KF_PT_REAL32 9u
+
+/* parameter groups */
+#define KF_PG_APP    0u
+#define KF_PG_CALIB  1u
+#define KF_PG_FILTER 2u
+
+/* flags */
+#define KF_PF_READONLY 1u
+
+typedef union {
+    float f;
+    int32_t i;
+    uint32_t u;
+} kf_pvalue;
+
+typedef struct {
+    const char *name;      /* NUL-terminated, at most 16 characters */
+    uint8_t type;          /* KF_PT_* */
+    uint8_t group;         /* KF_PG_* */
+    uint8_t filter;        /* group FILTER: index in kf_gen_filters */
+    uint8_t index;         /* index within the group's value vector */
+    uint8_t flags;
+    kf_pvalue def, lo, hi; /* integers: lo/hi inclusive (uint32); REAL32: float bounds */
+} kf_param_desc;
+
+/* Application parameters (indices into the table). */
+enum {
+    KF_P_UNIT_ID,          /* MAVLink system id and unit id, 1..254 */
+    KF_P_RATE_HZ,          /* sensor sample rate = KF_RAW_SAMPLE rate, Hz */
+    KF_P_ORI_RATE_HZ,      /* KF_ORIENTATION rate, Hz (0: off) */
+    KF_P_HRIMU_RATE,       /* HIGHRES_IMU rate, Hz (0: off) */
+    KF_P_ATTQ_RATE,        /* ATTITUDE_QUATERNION rate, Hz (0: off) */
+    KF_P_FILTER,           /* KF_FILTER id of the running filter (0: none) */
+    KF_P_MAG_ENABLE,       /* 0: never pass magnetometer readings to the filter (6D) */
+    KF_P_STREAM_BOOT,      /* 1: stream from power-up (else wait for MAV_CMD_KF_STREAM) */
+    KF_P_HIL_MODE,         /* HIL_SENSOR input: 0 counts + calibration, 1 direct float32 */
+    KF_P_SERIAL_NO,        /* unit serial number */
+    KF_P_SIGNING,          /* read-only: 1 when a signing key is set */
+    KF_P_APP_COUNT
+};
+
+#define KF_P_CALIB_FIRST  KF_P_APP_COUNT
+#define KF_P_FILTER_FIRST (KF_P_CALIB_FIRST + KF_GEN_CALIB_PARAM_COUNT)
+#define KF_PARAM_COUNT    (KF_P_FILTER_FIRST + KF_GEN_FILTER_PARAM_COUNT)
+
+extern const kf_param_desc kf_param_table[KF_PARAM_COUNT];
+
+/* Index of the parameter named `name` (a 16-byte MAVLink field, NUL-terminated or not), or -1. */
+int32_t kf_param_find(const char *name);
+
+/* 1 when v (a bit pattern of the parameter's type) is within the descriptor's range. */
+int kf_param_in_range(const kf_param_desc *d, kf_pvalue v);
+
+/* Index of the filter with KF_FILTER id `id` in kf_gen_filters, or -1 (0 = none, unknown, or
+ * left out of this build). */
+int32_t kf_filter_index(uint32_t id);
+
+#endif /* KF_PARAMS_H */

@@ -1,0 +1,196 @@
+/*
+ * kf_sample.c - one sample through the pipeline: time step, calibration (generated
+ * calib_apply) or the direct HIL conversion, the selected filter, then the messages that are
+ * due for it (KF_RAW_SAMPLE, KF_ORIENTATION, HIGHRES_IMU, ATTITUDE_QUATERNION).
+ */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "kf_app_internal.h"
+
+#define KF_DT_US_MAX 1000000u
+
+#if KF_NUMERIC_Q
+/* raw Q value -> float: one rounding (int -> float), then an exact power-of-two scaling */
+static float q_to_f(int32_t raw, int frac)
+{
+    return (float)raw * (1.0f / (float)(1ul << frac));
+}
+#endif
+
+/* the filter input record as float32 SI values (f32 builds: the values themselves) */
+static void input_to_float(const kf_imu_input *in, float gyr[3], float acc[3], float mag[3])
+{
+    for (int i = 0; i < 3; i++) {
+#if KF_NUMERIC_Q
+        gyr[i] = q_to_f(in->gyr[i], KF_GEN_FRAC_GYR);
+        acc[i] = q_to_f(in->acc[i], KF_GEN_FRAC_ACC);
+        mag[i] = q_to_f(in->mag[i], KF_GEN_FRAC_MAG);
+#else
+        gyr[i] = in->gyr[i];
+        acc[i] = in->acc[i];
+        mag[i] = in->mag[i];
+#endif
+    }
+}
+
+static uint32_t time_step_us(kf_app *app, uint64_t t)
+{
+    uint32_t dt;
+    if (!app->have_prev) {
+        uint32_t rate = app->values[KF_P_RATE_HZ].u;   /* first sample: the nominal period */
+        dt = (1000000u + rate / 2u) / rate;
+    } else if (t <= app->t_prev) {
+        dt = 0u;                                       /* the filter rejects a zero step */
+    } else {
+        uint64_t d = t - app->t_prev;
+        dt = d > KF_DT_US_MAX ? KF_DT_US_MAX : (uint32_t)d;
+    }
+    app->t_prev = t;
+    app->have_prev = 1u;
+    return dt;
+}
+
+static void output_quat(const kf_app *app, float q[4])
+{
+    if (app->tared) {
+        kf_quat_mul(app->tare, app->out.q, q);
+    } else {
+        memcpy(q, app->out.q, sizeof app->out.q);
+    }
+}
+
+static void send_raw(kf_app *app, const kf_sample *s, uint32_t counter, uint8_t mag_valid)
+{
+    mavlink_message_t msg;
+    uint8_t flags = (uint8_t)(s->flags | (mag_valid ? KF_RAW_SAMPLE_FLAGS_MAG_UPDATED : 0u));
+    mavlink_msg_kf_raw_sample_pack_status(
+        kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg, s->time_us, counter,
+        s->acc[0], s->acc[1], s->acc[2], s->gyr[0], s->gyr[1], s->gyr[2], s->mag[0], s->mag[1],
+        s->mag[2], s->temperature, kf_sysid(app), flags);
+    if (kf_send(app, &msg)) {
+        app->rates.raw++;
+    }
+}
+
+static void send_orientation(kf_app *app, uint64_t t, uint32_t counter)
+{
+    static const float no_cov[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
+    mavlink_message_t msg;
+    float q[4];
+    uint16_t st = 0u;
+    output_quat(app, q);
+    st |= app->initialised ? KF_ORIENTATION_STATUS_INITIALISED : 0u;
+    st |= app->out.rest ? KF_ORIENTATION_STATUS_AT_REST : 0u;
+    st |= app->out.mag_disturbed ? KF_ORIENTATION_STATUS_MAG_DISTURBED : 0u;
+    st |= (app->mag_seen && !app->out.mag_disturbed) ? KF_ORIENTATION_STATUS_MAG_USED : 0u;
+    st |= app->tared ? KF_ORIENTATION_STATUS_HEADING_TARED : 0u;
+    st |= app->clipped ? KF_ORIENTATION_STATUS_INPUT_CLIPPED : 0u;
+    st |= app->numeric_reset ? KF_ORIENTATION_STATUS_NUMERIC_RESET : 0u;
+    mavlink_msg_kf_orientation_pack_status(
+        kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg, t, counter, q[0], q[1], q[2], q[3],
+        app->cnt.rejected_base + (uint32_t)app->out.rejected, st, KF_EARTH_FRAME_ENU,
+        kf_gen_filters[app->filter].id, kf_sysid(app), no_cov);
+    if (kf_send(app, &msg)) {
+        app->rates.ori++;
+        app->clipped = 0u;
+        app->numeric_reset = 0u;
+        app->mag_seen = 0u;
+    }
+}
+
+static void send_highres(kf_app *app, const kf_sample *s, uint8_t mag_valid)
+{
+    mavlink_message_t msg;
+    float g[3], a[3], m[3];
+    input_to_float(&app->last_in, g, a, m);
+    uint16_t upd = 0x3Fu | (mag_valid ? 0x1C0u : 0u)
+                   | ((s->flags & KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID) ? 0x1000u : 0u);
+    /* HIGHRES_IMU: calibrated values, magnetometer in gauss (1 gauss = 100 uT) */
+    mavlink_msg_highres_imu_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg,
+                                        s->time_us, a[0], a[1], a[2], g[0], g[1], g[2],
+                                        m[0] * 0.01f, m[1] * 0.01f, m[2] * 0.01f, 0.0f, 0.0f, 0.0f,
+                                        (float)s->temperature * 0.01f, upd, 0u);
+    (void)kf_send(app, &msg);
+}
+
+static void send_attitude_quaternion(kf_app *app, uint64_t t)
+{
+    static const float no_offset[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    mavlink_message_t msg;
+    float q[4], ned[4], g[3], a[3], m[3];
+    output_quat(app, q);
+    kf_quat_enu_to_ned(q, ned);    /* MAVLink's earth frame is NED; body = the sensor frame */
+    input_to_float(&app->last_in, g, a, m);
+    mavlink_msg_attitude_quaternion_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status,
+                                                &msg, (uint32_t)(t / 1000u), ned[0], ned[1], ned[2],
+                                                ned[3], g[0], g[1], g[2], no_offset);
+    (void)kf_send(app, &msg);
+}
+
+static int due(uint16_t div, uint16_t *cnt)
+{
+    if (div == 0u) {
+        return 0;
+    }
+    if (++*cnt >= div) {
+        *cnt = 0u;
+        return 1;
+    }
+    return 0;
+}
+
+static int quat_finite(const float q[4])
+{
+    return isfinite(q[0]) && isfinite(q[1]) && isfinite(q[2]) && isfinite(q[3]);
+}
+
+void kf_app_sample(kf_app *app, const kf_sample *s)
+{
+    uint32_t counter = app->sample_counter++;
+    uint32_t dt_us = time_step_us(app, s->time_us);
+    uint8_t mag_valid = (uint8_t)(s->mag_valid != 0u);
+    uint8_t hil = (uint8_t)((s->flags & KF_RAW_SAMPLE_FLAGS_SIMULATED) != 0u);
+    kf_imu_input in;
+
+    app->cnt.samples++;
+    app->rates.samples++;
+    if (s->direct) {
+        float dt = (float)dt_us * 1e-6f;   /* the same single rounding as calib_apply's dt */
+        kf_gen_imu_from_f32(s->f_gyr, s->f_acc, s->f_mag, dt, &in);
+    } else {
+        kf_gen_calib_apply(&app->calib, s->acc, s->gyr, s->mag, dt_us, &in);
+    }
+    in.mag_valid = (uint8_t)(mag_valid && app->values[KF_P_MAG_ENABLE].u != 0u);
+    app->last_in = in;
+    app->mag_seen |= in.mag_valid;
+    if ((s->flags & (KF_RAW_SAMPLE_FLAGS_ACC_CLIPPED | KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED
+                     | KF_RAW_SAMPLE_FLAGS_MAG_CLIPPED)) != 0u) {
+        app->clipped = 1u;
+    }
+    if (app->filter >= 0) {
+        int32_t before = app->out.rejected;
+        kf_gen_filters[app->filter].update(&app->filt, &in, &app->out);
+        if (!quat_finite(app->out.q)) {
+            kf_config_reset_filter(app);      /* never stream NaN: start again from the next sample */
+            app->numeric_reset = 1u;
+            app->cnt.numeric_resets++;
+        } else if (app->out.rejected == before) {
+            app->initialised = 1u;
+        }
+    }
+
+    if (app->streaming || hil) {
+        send_raw(app, s, counter, mag_valid);
+    }
+    if (app->filter >= 0 && (hil || (app->streaming && due(app->div_ori, &app->cnt_ori)))) {
+        send_orientation(app, s->time_us, counter);
+    }
+    if (app->streaming && due(app->div_hr, &app->cnt_hr)) {
+        send_highres(app, s, mag_valid);
+    }
+    if (app->streaming && app->filter >= 0 && due(app->div_aq, &app->cnt_aq)) {
+        send_attitude_quaternion(app, s->time_us);
+    }
+}

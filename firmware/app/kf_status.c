@@ -1,0 +1,35 @@
+/*
+ * kf_status.c - once per second: HEARTBEAT, KF_UNIT_STATUS and SYS_STATUS, with the rates
+ * achieved and the processor load measured over the second that ended.
+ */
+#include <stdint.h>
+
+#include "kf_app_internal.h"
+
+#define KF_STATUS_PERIOD_US 1000000u
+
+void kf_status_tick(kf_app *app, uint64_t now)
+{
+    kf_rates *r = &app->rates;
+    uint64_t span = now - r->t0;
+    if (span > 0u) {
+        float s = (float)span * 1e-6f;
+        r->sensor_hz = (float)r->samples / s;
+        r->raw_hz = (float)r->raw / s;
+        r->ori_hz = (float)r->ori / s;
+        uint64_t load = r->busy_us * 1000u / span;
+        r->load = (uint16_t)(load > 1000u ? 1000u : load);
+    }
+    r->samples = r->raw = r->ori = 0u;
+    r->busy_us = 0u;
+    r->t0 = now;
+    app->cnt.samples_dropped = kf_hal_sensor_dropped();
+    (void)kf_send_heartbeat(app);
+    (void)kf_send_unit_status(app);
+    (void)kf_send_sys_status(app);
+    /* next second on the device clock; after a stall, skip what was missed */
+    app->next_status_us += KF_STATUS_PERIOD_US;
+    if (app->next_status_us <= now) {
+        app->next_status_us = now + KF_STATUS_PERIOD_US;
+    }
+}
