@@ -194,7 +194,7 @@ class Flagship(Estimator):
             init=0.0),
         Var("cand_t", 1, 0.0, T_SAT, "s", "time the candidate has been consistent in rotation",
             init=0.0),
-        Var("dist_t", 1, 0.0, T_SAT, "s", "rejection time (decays twice as fast when clear)",
+        Var("dist_t", 1, 0.0, T_SAT, "s", "rejection time (decays twice as fast when accepted)",
             init=0.0),
         Var("undist_t", 1, 0.0, T_SAT, "s", "time the field has been undisturbed", init=0.0),
         INITIALISED,
@@ -276,13 +276,20 @@ class Flagship(Estimator):
         gh, _ = g_e.normalized(1e-6)
         # C = (1 + gz, gy, -gx, 0) rotates the filtered direction onto +z (half-way quaternion,
         # exact at the start); the floor keeps an upside-down start defined (noise leaves it)
-        corr = Quat(fmax(1.0 + gh.z, 1e-3), gh.y, -gh.x, 0.0)
+        # exactly upside down the axis is undefined: any horizontal one will do (x here)
+        flip = logical_and(gh.z < 0.0, fabs(gh.x) + fabs(gh.y) < 1e-3)
+        corr = Quat(fmax(1.0 + gh.z, 1e-9), select(flip, 1e-3, gh.y), -gh.x, 0.0)
         q_a_new = vselect(acc_ok, (corr * q_a).normalized(), q_a)
         lp_x_new = vselect(acc_ok, lp_x_new, lp_x)
         lp_v_new = vselect(acc_ok, lp_v_new, lp_v)
         q6 = q_a_new * q_i_new                           # product of unit quaternions
         # this step's correction (rad, E6 frame; sin of the angle): input of the bias estimation
-        theta_c = vselect(logical_and(acc_ok, run), Vec3(gh.y, -gh.x, 0.0), zero3)
+        # (a bias of at most bias_max turns the frame by bias_max dt per step: a larger
+        # correction is not drift and is limited to that here)
+        c_max = p.bias_max * dt
+        theta_c = vselect(logical_and(acc_ok, run),
+                          Vec3(clamp(gh.y, -c_max, c_max), clamp(-gh.x, -c_max, c_max), 0.0),
+                          zero3)
 
         # -- rest detection -------------------------------------------------------------------
         k_rest = fmin(dt / p.tau_rest, 1.0)
@@ -309,10 +316,10 @@ class Flagship(Estimator):
         rh, h2 = rnorm((mx, my), 1e-9)
         h_u = assume(h2 * rh, 0.0, 1.0)                  # horizontal part of the direction
         v_u = m_e.z                                      # vertical part (up)
-        # sine of the heading disagreement (field east of north > 0), +-1 beyond 90 deg
+        # horizontal field direction in the 9D frame: (sin, cos) of the heading disagreement
+        # (field east of north > 0); north means ex = 0, ey = 1
         ex = assume(mx * rh, *UNIT)
         ey = assume(my * rh, *UNIT)
-        err = select(my >= 0.0, ex, select(ex >= 0.0, 1.0, -1.0))
 
         # -- magnetometer: disturbance --------------------------------------------------------
         t_mag = fmin(x.t_mag + dt, 2.0 * DT_MAX)
@@ -335,7 +342,7 @@ class Flagship(Estimator):
         p_head = select(do_init, P_HEAD_MAX,
                         fmin(x.p_head + p.heading_rw * p.heading_rw * dt, P_HEAD_MAX))
         gate_var = p.mag_gate * p.mag_gate * (p_head + p.mag_sigma_gate * p.mag_sigma_gate)
-        implausible = err * err > gate_var
+        implausible = logical_or(ey < 0.0, ex * ex > gate_var)
 
         # candidate: a new field that stays consistent while the sensor rotates is a real
         # (homogeneous) field, not a disturbance moving with the sensor or passing by
@@ -346,32 +353,48 @@ class Flagship(Estimator):
         cand = vselect(cand_off, cur, cand_old + (cur - cand_old) * k_cand)
         cand_t = select(cand_off, 0.0, select(rotating, fmin(x.cand_t + dt, T_SAT), x.cand_t))
 
-        # rejection time grows while disturbed and decays twice as fast while clear (noise at
-        # the threshold does not restart the bound)
-        dist_t = select(disturbed_now, fmin(x.dist_t + dt, T_SAT), fmax(x.dist_t - 2.0 * dt, 0.0))
+        # rejection (field tests or gate) is bounded: the rejection time grows while readings
+        # are rejected and decays twice as fast while they are accepted (noise at a threshold
+        # does not restart the bound); at mag_reject_time the candidate field is adopted and an
+        # implausible heading is re-initialised from the reading
+        settled = logical_or(x.undist_t >= p.mag_min_undisturbed, logical_not(has_ref))
+        h_first = logical_and(use_mag, logical_not(has_ref))
+        rejected_now = all_of(use_mag, has_ref, logical_or(
+            disturbed_now, logical_and(settled, implausible)))
+        dist_t = select(rejected_now, fmin(x.dist_t + dt, T_SAT), fmax(x.dist_t - 2.0 * dt, 0.0))
         undist_t = select(disturbed_now, 0.0, fmin(x.undist_t + dt, T_SAT))
-        adopt = logical_and(disturbed_now, logical_or(cand_t >= p.mag_new_time,
-                                                      dist_t >= p.mag_reject_time))
-        settled = logical_or(undist_t >= p.mag_min_undisturbed, logical_not(has_ref))
-        accept = all_of(use_mag, logical_not(disturbed_now), settled,
-                        logical_or(logical_not(implausible), logical_not(has_ref)))
-        mag_disturbed = all_of(nine, has_ref, logical_or(disturbed_now, logical_not(settled)))
+        give_up = logical_and(rejected_now, dist_t >= p.mag_reject_time)
+        adopt = logical_or(logical_and(disturbed_now, cand_t >= p.mag_new_time), give_up)
+        reset_head = logical_or(h_first, logical_and(give_up, implausible))
+        accept = logical_and(use_mag, any_of(
+            all_of(logical_not(disturbed_now), settled, logical_not(implausible)),
+            give_up, h_first))
+        mag_disturbed = logical_and(nine, logical_or(
+            rejected_now, logical_and(has_ref, logical_not(settled))))
 
         # -- heading update: R_c = heading_rw^2 tau_mag^2 (noise density) makes tau_mag the
         # steady-state time constant; a sample covering t_mag seconds has variance R_c / t_mag
         r_c = p.heading_rw * p.heading_rw * p.tau_mag * p.tau_mag
         pt = p_head * t_mag
-        k_head = select(accept, assume(pt / fmax(pt + r_c, 1e-12), 0.0, 1.0), 0.0)
-        d_head = k_head * err                            # rad
-        hw_n = hw - hz * (0.5 * d_head)
-        hz_n = hz + hw * (0.5 * d_head)
-        # first reading: delta = atan2(ex, ey) exactly, as the half-way quaternion (1 + ey, ex)
-        h_first = logical_and(use_mag, logical_not(has_ref))
-        hw_n = select(h_first, fmax(1.0 + ey, 1e-3), hw_n)
-        hz_n = select(h_first, ex, hz_n)
+        k_head = select(reset_head, 1.0,
+                        select(accept, assume(pt / fmax(pt + r_c, 1e-12), 0.0, 1.0), 0.0))
+        # the disagreement as a rotation about the vertical: the half-way quaternion
+        # (1 + ey, ex) / |.| = (cos, sin) of half the angle, exact for any angle; a fraction
+        # k_head of it (normalised linear blend with the identity) is applied
+        # (exactly south: the sense of the half turn is free; +z is taken)
+        ex_s = select(logical_and(ey < 0.0, fabs(ex) < 1e-3), 1e-3, ex)
+        rf, _ = rnorm((fmax(1.0 + ey, 1e-9), ex_s), 1e-12)
+        fw = assume(fmax(1.0 + ey, 1e-9) * rf, 0.0, 1.0)
+        fz = assume(ex_s * rf, *UNIT)
+        cw = 1.0 - k_head + k_head * fw
+        cz = k_head * fz
+        hw_n = cw * hw - cz * hz                         # (cw, cz) (x) (hw, hz), about z
+        hz_n = cw * hz + cz * hw
         rn, _ = rnorm((hw_n, hz_n), 1e-6)
         hd_new = (assume(hw_n * rn, *UNIT), assume(hz_n * rn, *UNIT))
-        p_head = select(accept, (1.0 - k_head) * p_head, p_head)
+        d_head = 2.0 * cz                                # rad (small angles), for the bias
+        p_head = select(reset_head, P_HEAD_MAX,
+                        select(accept, (1.0 - k_head) * p_head, p_head))
 
         # reference: learnt while accepted (1/N at first, then tau_mag_ref), or adopted
         ref_t = select(accept, fmin(x.ref_t + dt, T_SAT), x.ref_t)
@@ -380,8 +403,8 @@ class Flagship(Estimator):
         ref_new = vselect(h_first, cur, vselect(adopt, cand, vselect(
             logical_and(accept, has_ref), ref + (cur - ref) * k_ref, ref)))
         ref_t = select(logical_or(h_first, adopt), fmax(ref_t, 1e-3), ref_t)
-        dist_t = select(adopt, 0.0, dist_t)
-        undist_t = select(adopt, p.mag_min_undisturbed, undist_t)
+        dist_t = select(give_up, 0.0, dist_t)
+        undist_t = select(logical_or(adopt, h_first), p.mag_min_undisturbed, undist_t)
 
         # -- gyroscope bias -------------------------------------------------------------------
         p0 = p.bias_sigma_init * p.bias_sigma_init
