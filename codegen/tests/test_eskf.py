@@ -194,6 +194,7 @@ def test_tracks_simulated_motion_and_bias():
     sigma = np.degrees(np.sqrt(out["var_bias"][-1]))
     assert np.all(err < 2.0 * sigma) and np.all(err < 0.1)
     assert np.all(out["var_bias"][-1] < 0.1 * out["var_bias"][100])
-    # the reported attitude uncertainty shrinks at rest
+    # the reported tilt uncertainty shrinks at rest (to the steady state set by gyr_noise and
+    # acc_noise: about 2.5 deg with the defaults, which cover gyroscope errors in fast motion)
     assert out["cov_att"][-1, 0] < out["cov_att"][10, 0]
-    assert math.degrees(math.sqrt(out["cov_att"][-1, 0])) < 2.0
+    assert math.degrees(math.sqrt(out["cov_att"][-1, 0])) < 3.0
