@@ -1,0 +1,351 @@
+"""The unit application as a host process (software in the loop), and what it should output.
+
+    from kinefuse.firmware.hostunit import HostUnit
+    with HostUnit() as unit:                      # builds firmware/ports/host once (cached)
+        s = unit.session()                        # a kinefuse.host.link Session on its pty
+        ...                                       # or: kinefuse record --port pty:<unit.device>
+
+    out = hil_run(s, time_us, acc, gyr, mag_uT)   # HIL_SENSOR in, KF_RAW_SAMPLE + KF_ORIENTATION back
+    ref = unit_model("madgwick", "f32", time_us, acc, gyr, mag_uT, rate_hz=1000)
+
+:func:`unit_model` computes, with the generated Python models, exactly what the unit computes
+for HIL input: the HIL_SENSOR float32 fields -> counts (``KF_HIL_MODE`` 0: as
+``kinefuse.host.link.hil.raw_counts``, then the generated calibration map ``calib_apply``) or
+direct float32 values (mode 1: gyr, acc as sent, mag ``float32(gauss) * 100f``), the time step
+from ``time_usec`` differences (the first sample: the nominal period ``round(1e6 / KF_RATE_HZ)``),
+then the filter; the q build reports ``float32(raw) * 2^-frac``.  Parameters are float32 on the
+unit: the q build converts the float32 value (``kf_q_from_f32``).
+:func:`synthetic_samples` recomputes the host port's synthetic sensor (kf_host_sensor.c).
+"""
+from __future__ import annotations
+
+import math
+import os
+import select
+import subprocess
+import time
+from pathlib import Path
+
+import numpy as np
+
+from kinefuse.host.errors import KinefuseError
+
+MSG_RAW, MSG_ORI, MSG_STATUS = 52500, 52501, 52504
+UNIT_COMPONENT = 200
+FRAC_OUT_Q = None  # per filter: read from the model
+
+
+class HostUnit:
+    """``kinefuse-unit`` (firmware/ports/host) running on a fresh pseudo-terminal.
+
+    Args: system ``"f32"`` / ``"q"``; filters: subset to build (default all wired);
+    storage: file path (None: RAM, lost at exit); sensor: synthetic IMU on/off;
+    max_samples: the sensor stops after that many; wait_connect: start only when the first
+    byte arrives; sanitize: ASan/UBSan build; extra: more command-line arguments.
+    """
+
+    def __init__(self, system: str = "f32", *, filters=None, storage=None, sensor: bool = True,
+                 max_samples: int | None = None, wait_connect: bool = False, sanitize: bool = False,
+                 extra=(), exe: str | os.PathLike | None = None, start_timeout: float = 10.0):
+        self.system, self.filters, self.storage = system, filters, storage
+        self.sensor, self.max_samples, self.wait_connect = sensor, max_samples, wait_connect
+        self.sanitize, self.extra, self.exe = sanitize, list(extra), exe
+        self.start_timeout = start_timeout
+        self.proc: subprocess.Popen | None = None
+        self.device: str | None = None
+        self._sessions = []
+        self.stderr_text = ""
+
+    def command(self) -> list[str]:
+        if self.exe is None:
+            from kinefuse.firmware.build import build_host
+            self.exe = build_host(self.system, filters=self.filters, sanitize=self.sanitize).exe
+        cmd = [str(self.exe), "--uart", "pty"]
+        if self.storage is not None:
+            cmd += ["--storage", str(self.storage)]
+        if not self.sensor:
+            cmd.append("--no-sensor")
+        if self.max_samples is not None:
+            cmd += ["--max-samples", str(int(self.max_samples))]
+        if self.wait_connect:
+            cmd.append("--wait-connect")
+        return cmd + [str(a) for a in self.extra]
+
+    def start(self) -> "HostUnit":
+        cmd = self.command()
+        env = dict(os.environ)
+        if self.sanitize:
+            env.setdefault("ASAN_OPTIONS", "detect_leaks=0:abort_on_error=1")
+            env.setdefault("UBSAN_OPTIONS", "halt_on_error=1:print_stacktrace=1")
+        self.proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                                     stderr=subprocess.PIPE, env=env)
+        deadline = time.monotonic() + self.start_timeout
+        buf = b""
+        while time.monotonic() < deadline and b"\n" not in buf:
+            r, _, _ = select.select([self.proc.stderr], [], [], 0.1)
+            if r:
+                chunk = os.read(self.proc.stderr.fileno(), 4096)
+                if not chunk:
+                    break
+                buf += chunk
+        line = buf.split(b"\n", 1)[0].decode(errors="replace")
+        if not line.startswith("uart "):
+            self.stop()
+            raise KinefuseError(f"kinefuse-unit did not start: {line or 'no output'}")
+        self.device = line.split(" ", 1)[1].strip()
+        return self
+
+    def session(self, key: bytes | None = None):
+        """A new :class:`~kinefuse.host.link.session.Session` on the unit's pty."""
+        from kinefuse.host.link.connection import open_tty_raw
+        from kinefuse.host.link.session import Session
+        s = Session(open_tty_raw(self.device), key=key)
+        self._sessions.append(s)
+        return s
+
+    def stop(self, timeout: float = 5.0) -> int | None:
+        for s in self._sessions:
+            try:
+                s.close()
+            except Exception:  # noqa: BLE001 - closing goes on
+                pass
+        self._sessions.clear()
+        if self.proc is None:
+            return None
+        if self.proc.poll() is None:
+            self.proc.terminate()
+            try:
+                self.proc.wait(timeout)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+        try:
+            self.stderr_text = self.proc.stderr.read().decode(errors="replace")
+        except (OSError, ValueError):
+            pass
+        self.proc.stderr.close()
+        return self.proc.returncode
+
+    def __enter__(self) -> "HostUnit":
+        return self.start()
+
+    def __exit__(self, *exc) -> None:
+        self.stop()
+
+
+# --------------------------------------------------------------------------- synthetic sensor
+
+def _sin_table() -> np.ndarray:
+    return np.array([round(1000 * math.sin(2 * math.pi * i / 256)) for i in range(256)], dtype=np.int64)
+
+
+def _c_div(a, b):
+    """C integer division (truncation towards zero)."""
+    a = np.asarray(a, dtype=np.int64)
+    q = np.abs(a) // b
+    return np.where(a < 0, -q, q)
+
+
+def _noise(k: np.ndarray, axis: int) -> np.ndarray:
+    m = np.uint64(0xFFFFFFFF)
+    k = k.astype(np.uint64)
+    x = ((k & m) * np.uint64(2654435761)) & m
+    x ^= (k >> np.uint64(32)) & m
+    x ^= np.uint64((axis * 0x9E3779B9) & 0xFFFFFFFF)
+    x ^= x >> np.uint64(15)
+    x = (x * np.uint64(0x2C1B3C6D)) & m
+    x ^= x >> np.uint64(12)
+    return (x % np.uint64(7)).astype(np.int64) - 3
+
+
+def synthetic_samples(n: int, rate_hz: int, k0: int = 0) -> dict[str, np.ndarray]:
+    """Samples k0..k0+n-1 of the host port's synthetic IMU (counts in KF_RAW_SAMPLE units),
+    with t_rel_us = k * 1e6 // rate (time since the sensor started)."""
+    k = np.arange(k0, k0 + n, dtype=np.int64)
+    t = (k * 1_000_000) // int(rate_hz)
+    ph = (t * 32) // 1_000_000
+    s = _sin_table()
+    sat = lambda v: np.clip(v, -32768, 32767)  # noqa: E731
+    acc = np.stack([sat(_noise(k, 0)), sat(_noise(k, 1)), sat(1000 + _noise(k, 2))], axis=1)
+    gyr = np.stack([sat(_noise(k, 3)), sat(_noise(k, 4)), sat(785 + _noise(k, 5))], axis=1)
+    mag = np.stack([sat(_c_div(190 * s[ph & 255], 1000) + _noise(k, 6)),
+                    sat(_c_div(190 * s[(ph + 64) & 255], 1000) + _noise(k, 7)),
+                    sat(-450 + _noise(k, 8))], axis=1)
+    return {"k": k, "t_rel_us": t, "acc": acc, "gyr": gyr, "mag": mag, "mag_valid": (k % 10) == 0}
+
+
+# ------------------------------------------------------------------------------ HIL helpers
+
+def hil_frames(time_us, acc, gyr, mag_uT, mag_updated=None, seq0: int = 0, key: bytes | None = None) -> list[bytes]:
+    """One HIL_SENSOR frame per sample (SI units; mag in uT, sent in gauss)."""
+    if key is None:
+        from kinefuse.host.link.hil import hil_sensor_frames
+        data = hil_sensor_frames(time_us, acc, gyr, mag_uT, mag_updated=mag_updated, seq0=seq0)
+        return _split(data)
+    from kinefuse.host.link.codec import Encoder
+    from kinefuse.host.link.hil import UPDATED_ACC_GYRO, UPDATED_MAG, UT_PER_GAUSS
+    enc = Encoder(255, 190, key=key)
+    enc.seq = seq0
+    out = []
+    upd = np.ones(len(time_us), bool) if mag_updated is None else np.asarray(mag_updated, bool)
+    for i in range(len(time_us)):
+        m = np.asarray(mag_uT[i], np.float64) / UT_PER_GAUSS
+        out.append(enc.encode("HIL_SENSOR", time_usec=int(time_us[i]),
+                              xacc=float(np.float32(acc[i][0])), yacc=float(np.float32(acc[i][1])),
+                              zacc=float(np.float32(acc[i][2])), xgyro=float(np.float32(gyr[i][0])),
+                              ygyro=float(np.float32(gyr[i][1])), zgyro=float(np.float32(gyr[i][2])),
+                              xmag=float(np.float32(m[0])), ymag=float(np.float32(m[1])),
+                              zmag=float(np.float32(m[2])),
+                              fields_updated=UPDATED_ACC_GYRO | (UPDATED_MAG if upd[i] else 0)))
+    return out
+
+
+def _split(data: bytes) -> list[bytes]:
+    out, i = [], 0
+    while i < len(data):
+        n = 12 + data[i + 1] + (13 if data[i + 2] & 1 else 0)
+        out.append(data[i:i + n])
+        i += n
+    return out
+
+
+def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 100,
+            timeout: float = 10.0, key: bytes | None = None) -> dict[str, np.ndarray]:
+    """Send one HIL_SENSOR per sample (``window`` at a time, waiting for every answer before
+    the next window: nothing can overflow) and collect the unit's answers.
+
+    Returns arrays per sample: ``raw`` (acc, gyr, mag counts, flags), ``q`` (N, 4) float32 from
+    KF_ORIENTATION (NaN where none came), ``counter`` (sample_counter echoed), ``status``,
+    ``time_us`` echoed.  Raises KinefuseError when an answer is missing after ``timeout``."""
+    frames = hil_frames(time_us, acc, gyr, mag_uT, mag_updated, key=key)
+    n = len(frames)
+    q = np.full((n, 4), np.nan, np.float32)
+    counters = np.full(n, -1, np.int64)
+    t_echo = np.zeros(n, np.int64)
+    status = np.zeros(n, np.int64)
+    raw = np.zeros((n, 9), np.int64)
+    flags = np.zeros(n, np.int64)
+    first_counter = None
+    got_raw = got_ori = 0
+    for start in range(0, n, window):
+        stop = min(n, start + window)
+        session.send_bytes(b"".join(frames[start:stop]))
+        deadline = time.monotonic() + timeout
+        while got_ori < stop or got_raw < stop:
+            if time.monotonic() > deadline:
+                raise KinefuseError(f"HIL: {stop - min(got_raw, got_ori)} answers missing after {timeout} s "
+                                    f"(samples {start}..{stop - 1})")
+            session.poll(0.05)
+            for _, f in session.drain():
+                if f.msgid not in (MSG_RAW, MSG_ORI):
+                    continue
+                m = f.msg
+                if first_counter is None:
+                    first_counter = m.sample_counter
+                i = (m.sample_counter - first_counter) & 0xFFFFFFFF
+                if i >= n:
+                    continue
+                if f.msgid == MSG_RAW:
+                    raw[i] = [m.acc_x, m.acc_y, m.acc_z, m.gyro_x, m.gyro_y, m.gyro_z, m.mag_x, m.mag_y, m.mag_z]
+                    flags[i] = m.flags
+                    counters[i] = m.sample_counter
+                    t_echo[i] = m.time_boot_us
+                    got_raw += 1
+                else:
+                    q[i] = np.array([m.q_w, m.q_x, m.q_y, m.q_z], np.float32)
+                    status[i] = m.status
+                    got_ori += 1
+    return {"q": q, "counter": counters, "time_us": t_echo, "status": status,
+            "acc": raw[:, 0:3], "gyr": raw[:, 3:6], "mag": raw[:, 6:9], "flags": flags}
+
+
+# ---------------------------------------------------------------------------------- model
+
+def _f32(x) -> np.ndarray:
+    return np.asarray(x, np.float64).astype(np.float32)
+
+
+def time_steps_us(time_us, rate_hz: int) -> np.ndarray:
+    """dt in whole us as the unit takes it: differences clamped to [0, 1e6], first = nominal."""
+    t = np.asarray(time_us, np.int64)
+    dt = np.empty(len(t), np.int64)
+    dt[0] = (1_000_000 + rate_hz // 2) // rate_hz
+    dt[1:] = np.clip(np.diff(t), 0, 1_000_000)
+    return dt
+
+
+def unit_model(name: str, system: str, time_us, acc, gyr, mag_uT, mag_updated=None, *,
+               rate_hz: int = 1000, mode: int = 0, params: dict | None = None,
+               calib: dict | None = None, mag_enable: bool = True) -> dict[str, np.ndarray]:
+    """What the unit outputs for HIL input (see the module docstring), from the generated
+    models: ``q`` (N, 4) float32 as in KF_ORIENTATION, ``q_raw`` (q build: the raw Q values),
+    ``counts`` (N, 9) as echoed in KF_RAW_SAMPLE, ``rejected``."""
+    from kinefuse.codegen.runner import runner
+    from kinefuse.host.link.hil import UT_PER_GAUSS, raw_counts
+    n = len(time_us)
+    acc32, gyr32 = _f32(acc).reshape(n, 3), _f32(gyr).reshape(n, 3)
+    gauss32 = _f32(np.asarray(mag_uT, np.float64).reshape(n, 3) / UT_PER_GAUSS)
+    upd = np.ones(n, bool) if mag_updated is None else np.asarray(mag_updated, bool)
+    a, g, m, _, _ = raw_counts(acc32.astype(np.float64), gyr32.astype(np.float64),
+                               gauss32.astype(np.float64) * UT_PER_GAUSS)
+    counts = np.concatenate([a, g, m], axis=1).astype(np.int64)
+    if mode == 0:
+        out = counts_model(name, system, time_us, a, g, m, upd, rate_hz=rate_hz, params=params,
+                           calib=calib, mag_enable=mag_enable)
+        out["counts"] = counts
+        return out
+    dt_us = time_steps_us(time_us, rate_hz)
+    fi = runner(name, f"{system}-model")
+    mag32 = (gauss32 * np.float32(100.0)).astype(np.float32)
+    dt32 = (dt_us.astype(np.float32) * np.float32(1e-6)).astype(np.float32)
+    host = {"gyr": gyr32.astype(np.float64), "acc": acc32.astype(np.float64),
+            "mag": mag32.astype(np.float64), "dt": dt32.astype(np.float64),
+            "mag_valid": upd & bool(mag_enable)}
+    inputs = {k: fi.encode_values("input", k, t, host[k].reshape(n, -1)) for k, _, t in fi.fields["input"]}
+    out = _filter_model(name, system, inputs, n, params)
+    out["counts"] = counts
+    return out
+
+
+def counts_model(name: str, system: str, time_us, acc_counts, gyr_counts, mag_counts, mag_valid, *,
+                 rate_hz: int = 1000, params: dict | None = None, calib: dict | None = None,
+                 mag_enable: bool = True) -> dict[str, np.ndarray]:
+    """What the unit outputs for samples given as counts (the sensor path, and HIL mode 0):
+    the generated calibration map, then the filter (models, float32 parameter values)."""
+    from kinefuse.codegen import estimators
+    from kinefuse.codegen.runner import runner
+    n = len(time_us)
+    dt_us = time_steps_us(time_us, rate_hz)
+    ci = runner("calib_apply", f"{system}-model")
+    e = ci.encode({"acc_raw": np.asarray(acc_counts, float).reshape(n, 3),
+                   "gyr_raw": np.asarray(gyr_counts, float).reshape(n, 3),
+                   "mag_raw": np.asarray(mag_counts, float).reshape(n, 3),
+                   "dt_us": dt_us.astype(float)}, _p32(estimators.get("calib_apply"), calib))
+    co = ci.run_encoded(e)
+    inputs = {"gyr": co["gyr"], "acc": co["acc"], "mag": co["mag"], "dt": co["dt"],
+              "mag_valid": (np.asarray(mag_valid, bool) & bool(mag_enable)).reshape(n, 1)}
+    return _filter_model(name, system, inputs, n, params)
+
+
+def _p32(est, values) -> dict:
+    """The unit's parameter values: float32."""
+    prm = est.resolve_params(values)
+    return {k: float(np.float32(v)) for k, v in prm.items()}
+
+
+def _filter_model(name: str, system: str, inputs: dict, n: int, params) -> dict:
+    from kinefuse.codegen import estimators
+    from kinefuse.codegen.runner import Encoded, runner
+    fr = runner(name, f"{system}-model")
+    fp = _p32(estimators.get(name), params)
+    enc_p = {k: fr.encode_values("param", k, t, [fp[k]])[0] for k, _, t in fr.fields["param"]}
+    enc_in = {k: np.asarray(inputs[k]).reshape(n, -1) for k, _, _ in fr.fields["input"]}
+    out = fr.run_encoded(Encoded(enc_in, enc_p, n))
+    if system == "f32":
+        q = out["q"].astype(np.float32)
+        q_raw = None
+    else:
+        frac = fr.formats["output.q"][0]
+        q_raw = out["q"].astype(np.int64)
+        q = (q_raw.astype(np.float32) * np.float32(2.0 ** -frac)).astype(np.float32)
+    return {"q": q, "q_raw": q_raw, "rejected": out.get("rejected")}

@@ -1,0 +1,251 @@
+/*
+ * kf_hal_test.c - kf_hal.h for in-process tests (cffi): UART = two byte buffers, clock set by
+ * the test, storage = RAM with a write budget (a simulated power cut stops every write after
+ * the budget, mid-call if need be), sensor = a queue the test fills.
+ */
+#include <stdint.h>
+#include <string.h>
+
+#include "kf_app.h"
+#include "kf_hal_test.h"
+
+#define T_UART 65536u
+#define T_STORAGE 8192u
+#define T_SENSOR 256u
+
+static uint8_t g_rx[T_UART];
+static uint32_t g_rx_len, g_rx_pos;
+static uint8_t g_tx[T_UART];
+static uint32_t g_tx_len;
+static uint32_t g_tx_limit = T_UART;   /* bytes the UART accepts per call */
+static uint32_t g_now;
+static uint8_t g_storage[T_STORAGE];
+static uint32_t g_storage_size = 4096u;
+static int64_t g_budget = -1;           /* bytes that may still be written (-1: unlimited) */
+static uint32_t g_written;
+static kf_raw_sample g_sensor[T_SENSOR];
+static uint32_t g_sensor_head, g_sensor_tail;
+static int g_reboots;
+
+void kf_hal_init(void) {}
+
+uint32_t kf_hal_micros(void)
+{
+    return g_now;
+}
+
+int32_t kf_hal_uart_read(uint8_t *buf, int32_t max)
+{
+    int32_t n = 0;
+    while (n < max && g_rx_pos < g_rx_len) {
+        buf[n++] = g_rx[g_rx_pos++];
+    }
+    return n;
+}
+
+int32_t kf_hal_uart_write(const uint8_t *buf, int32_t len)
+{
+    uint32_t n = (uint32_t)len;
+    if (n > g_tx_limit) {
+        n = g_tx_limit;
+    }
+    if (n > T_UART - g_tx_len) {
+        n = T_UART - g_tx_len;
+    }
+    memcpy(&g_tx[g_tx_len], buf, n);
+    g_tx_len += n;
+    return (int32_t)n;
+}
+
+int kf_hal_sensor_read(kf_raw_sample *out)
+{
+    if (g_sensor_tail == g_sensor_head) {
+        return 0;
+    }
+    *out = g_sensor[g_sensor_tail % T_SENSOR];
+    g_sensor_tail++;
+    return 1;
+}
+
+uint32_t kf_hal_storage_size(void)
+{
+    return g_storage_size;
+}
+
+int kf_hal_storage_read(uint32_t offset, void *buf, uint32_t len)
+{
+    if (offset > g_storage_size || len > g_storage_size - offset) {
+        return -1;
+    }
+    memcpy(buf, &g_storage[offset], len);
+    return 0;
+}
+
+int kf_hal_storage_write(uint32_t offset, const void *buf, uint32_t len)
+{
+    if (offset > g_storage_size || len > g_storage_size - offset) {
+        return -1;
+    }
+    uint32_t n = len;
+    if (g_budget >= 0 && (int64_t)n > g_budget) {
+        n = (uint32_t)g_budget;       /* the power fails after n bytes of this write */
+    }
+    memcpy(&g_storage[offset], buf, n);
+    g_written += n;
+    if (g_budget >= 0) {
+        g_budget -= n;
+    }
+    return 0;                         /* the unit cannot tell: it lost power */
+}
+
+void kf_hal_reboot(void)
+{
+    g_reboots++;
+}
+
+/* --- test control ------------------------------------------------------------------------ */
+
+uint32_t kft_app_size(void)
+{
+    return (uint32_t)sizeof(kf_app);
+}
+
+void kft_reset(uint32_t storage_size)
+{
+    g_rx_len = g_rx_pos = g_tx_len = 0u;
+    g_tx_limit = T_UART;
+    g_now = 0u;
+    g_storage_size = storage_size <= T_STORAGE ? storage_size : T_STORAGE;
+    memset(g_storage, 0xFF, sizeof g_storage);
+    g_budget = -1;
+    g_written = 0u;
+    g_sensor_head = g_sensor_tail = 0u;
+    g_reboots = 0;
+}
+
+uint32_t kft_feed(const uint8_t *data, uint32_t len)
+{
+    if (g_rx_pos == g_rx_len) {
+        g_rx_pos = g_rx_len = 0u;
+    }
+    uint32_t n = len < T_UART - g_rx_len ? len : T_UART - g_rx_len;
+    memcpy(&g_rx[g_rx_len], data, n);
+    g_rx_len += n;
+    return n;
+}
+
+uint32_t kft_rx_left(void)
+{
+    return g_rx_len - g_rx_pos;
+}
+
+uint32_t kft_take(uint8_t *out, uint32_t max)
+{
+    uint32_t n = g_tx_len < max ? g_tx_len : max;
+    memcpy(out, g_tx, n);
+    memmove(g_tx, &g_tx[n], g_tx_len - n);
+    g_tx_len -= n;
+    return n;
+}
+
+void kft_tx_limit(uint32_t bytes_per_call)
+{
+    g_tx_limit = bytes_per_call;
+}
+
+void kft_set_time(uint32_t us)
+{
+    g_now = us;
+}
+
+void kft_budget(int64_t bytes)
+{
+    g_budget = bytes;
+}
+
+uint32_t kft_written(void)
+{
+    return g_written;
+}
+
+uint8_t *kft_storage(void)
+{
+    return g_storage;
+}
+
+int kft_sensor_push(const kf_raw_sample *s)
+{
+    if (g_sensor_head - g_sensor_tail >= T_SENSOR) {
+        return 0;
+    }
+    g_sensor[g_sensor_head % T_SENSOR] = *s;
+    g_sensor_head++;
+    return 1;
+}
+
+int kft_reboots(void)
+{
+    return g_reboots;
+}
+
+/* --- views of the application ------------------------------------------------------------ */
+
+void kft_counters(const void *vapp, uint32_t out[12])
+{
+    const kf_app *app = (const kf_app *)vapp;
+    out[0] = app->rx.crc_errors;
+    out[1] = app->rx.bad_frames;
+    out[2] = app->rx.unknown_ids;
+    out[3] = app->cnt.unknown_messages;
+    out[4] = app->cnt.param_rejects;
+    out[5] = app->cnt.unsigned_refused;
+    out[6] = app->cnt.signature_failures;
+    out[7] = app->rx.frames_ok;
+    out[8] = app->tx.frames_dropped;
+    out[9] = app->cnt.samples;
+    out[10] = app->store.errors;
+    out[11] = app->cnt.stored_rejects;
+}
+
+uint32_t kft_param_count(void)
+{
+    return KF_PARAM_COUNT;
+}
+
+const char *kft_param_name(uint32_t i)
+{
+    return i < KF_PARAM_COUNT ? kf_param_table[i].name : "";
+}
+
+uint32_t kft_param_get(const void *vapp, uint32_t i)
+{
+    const kf_app *app = (const kf_app *)vapp;
+    return i < KF_PARAM_COUNT ? app->values[i].u : 0u;
+}
+
+uint8_t kft_param_type(uint32_t i)
+{
+    return i < KF_PARAM_COUNT ? kf_param_table[i].type : 0u;
+}
+
+void kft_output(const void *vapp, float q[4], int32_t q_raw[4])
+{
+    const kf_app *app = (const kf_app *)vapp;
+    memcpy(q, app->out.q, sizeof app->out.q);
+    memcpy(q_raw, app->out.q_raw, sizeof app->out.q_raw);
+}
+
+void kft_app_init(void *app)
+{
+    kf_app_init((kf_app *)app);
+}
+
+int kft_app_poll(void *app)
+{
+    return kf_app_poll((kf_app *)app);
+}
+
+void kft_app_sample(void *app, const kf_sample *s)
+{
+    kf_app_sample((kf_app *)app, s);
+}
