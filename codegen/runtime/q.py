@@ -165,10 +165,11 @@ def kf_mul_dyn(a, r, kbase, lo, hi):
 
 
 def kf_mul_dyn_v(a, r, kbase, lo, hi):
-    a = np.broadcast_to(np.asarray(a, dtype=np.int64), np.shape(r[0]))
-    return np.array([kf_mul_dyn(x, (m, e), kbase, lo, hi)
-                     for x, m, e in zip(a.tolist(), np.asarray(r[0]).tolist(),
-                                        np.asarray(r[1]).tolist())], dtype=np.int64)
+    a, m, e = np.broadcast_arrays(np.asarray(a, dtype=np.int64), np.asarray(r[0], dtype=np.int64),
+                                  np.asarray(r[1], dtype=np.int64))
+    return np.array([kf_mul_dyn(x, (mm, ee), kbase, lo, hi)
+                     for x, mm, ee in zip(a.ravel().tolist(), m.ravel().tolist(),
+                                          e.ravel().tolist())], dtype=np.int64).reshape(a.shape)
 
 
 def kf_inc_if(c, cond):

@@ -142,3 +142,11 @@ def test_vector_helpers_equal_scalar_ones():
     assert rt.kf_isqrt_rnd_v(v).tolist() == [rt.kf_isqrt_rnd(int(x)) for x in v]
     assert rt.kf_lsh_sat_v(d, 12, -(2 ** 31 - 1), 2 ** 31 - 1).tolist() == \
         [rt.kf_lsh_sat(int(x), 12, -(2 ** 31 - 1), 2 ** 31 - 1) for x in d]
+
+
+def test_vector_dyn_product_broadcasts_a_per_run_scale():
+    """A parameter-only reciprocal (one dyn value) times per-sample values (seen as a model bug)."""
+    a = np.array([3, -7, 2 ** 30], dtype=np.int64)
+    r = rt.kf_rsqrt_dyn(12345, 10)
+    got = rt.kf_mul_dyn_v(a, r, 4, -(2 ** 31 - 1), 2 ** 31 - 1)
+    assert got.tolist() == [rt.kf_mul_dyn(int(x), r, 4, -(2 ** 31 - 1), 2 ** 31 - 1) for x in a]
