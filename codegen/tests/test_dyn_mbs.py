@@ -3,7 +3,6 @@ hand-written matrices, independent closed forms, finite differences, and Pinocch
 test-only oracle, skipped when `pin` is not installed)."""
 from __future__ import annotations
 
-import math
 from types import SimpleNamespace as NS
 
 import numpy as np

@@ -115,7 +115,7 @@ def _print(r: dict) -> None:
         t = Table(title=f"Robustness, seed 000 §3.3.4 — {rb['trial']}")
         t.add_column("study")
         t.add_column("dynamic EKF (FDMC)", justify="right")
-        t.add_column("FDMC + residual low/high", justify="right")
+        t.add_column("FDMC + residual low/high (occlusion: FDMC, other q)", justify="right")
         t.add_column("FCDI", justify="right")
         for label in ("true_masses", "observer_60_15"):
             m = rb["mass_misdistribution"][label]
@@ -124,12 +124,15 @@ def _print(r: dict) -> None:
                       f"{_f(m['fd_residual_high_tau1_rmse'], '{:.2f}')}",
                       _f(m["fcdi_tau1_rmse"], "{:.2f}"))
         oc = rb["occlusion"]
-        for key, label, fmt in (("theta1_max_abs_error_rad", "occlusion: max |θ1 error| (rad)", "{:.4f}"),
-                                ("tau1_rmse_during_nm", "occlusion: τ1 RMSE during (N·m)", "{:.2f}"),
-                                ("tau1_rmse_500ms_after_nm", "occlusion: τ1 RMSE 0.5 s after", "{:.2f}"),
-                                ("tau1_reconvergence_s", "occlusion: τ1 reconvergence (s)", "{:.2f}"),
-                                ("theta1_reconvergence_s", "occlusion: θ1 reconvergence (s)", "{:.2f}")):
-            t.add_row(label, _f(oc["fd"][key], fmt), "", _f(oc["fcdi"][key], fmt))
+        rows = (("theta1_max_abs_error_rad", "occlusion: max |θ1 error| (rad)", "{:.4f}"),
+                ("tau1_rmse_during_nm", "occlusion: τ1 RMSE during (N·m)", "{:.2f}"),
+                ("tau1_rmse_500ms_after_nm", "occlusion: τ1 RMSE 0.5 s after", "{:.2f}"),
+                ("tau1_reconvergence_s", "occlusion: τ1 reconvergence (s)", "{:.2f}"),
+                ("theta1_reconvergence_s", "occlusion: θ1 reconvergence (s)", "{:.2f}"))
+        for key, label, fmt in rows:
+            t.add_row(label, _f(oc["fd"][key], fmt),
+                      f"(q={oc['q_of_fd_q_annex_a']:g}: {_f(oc['fd_q_annex_a'][key], fmt)})",
+                      _f(oc["fcdi"][key], fmt))
         con.print(t)
         ob = rb["observability"]
         con.print("Observability rank: " + ", ".join(
@@ -147,6 +150,8 @@ def _print(r: dict) -> None:
             t.add_row(label, _f(m["hip_rmse_nm"], "{:.3f}"), _f(m["knee_rmse_nm"], "{:.3f}"),
                       _f(m["hip_lag_ms"], "{:.1f}"), _f(m["knee_lag_ms"], "{:.1f}"))
         con.print(t)
+        con.print("Observability rank: " + ", ".join(
+            f"{k}: {v['rank']}/{v['n']}" for k, v in lg["observability"].items()))
         con.print(f"float32 C vs reference: max {lg['f32_vs_ref_max_nm']:.2e} N·m; "
                   f"Cortex-M4F instructions per step: "
                   f"{_f(lg['m4f_instructions_per_step'], '{:,.0f}')}")

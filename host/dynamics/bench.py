@@ -21,7 +21,6 @@ N and N·m for T_e); τ1 separately.  Real-time factor = trial duration / comput
 """
 from __future__ import annotations
 
-import math
 import time
 
 import numpy as np
@@ -232,11 +231,16 @@ def robustness(progress=None, seed: int = 0) -> dict:
     t_end = float(nominal.t[k1])
     fd_nom, fd_occ = fd_run(nominal, 50.0, 25.0), fd_run(occl, 50.0, 25.0)
     fc_nom, fc_occ = _fcdi(nominal, sa_best, 50.0, 25.0), _fcdi(occl, sa_best, 50.0, 25.0)
+    # the dynamic filter with the plant noise of the Annex-A table (a stiffer effort model)
+    prm_a = table_3_1_params(PENDULUM_Q)
+    fda_nom, fda_occ = fd.run(nominal.inputs(), prm_a), fd.run(occl.inputs(), prm_a)
     step()
-    occlusion = {"window_s": [float(nominal.t[k0]), t_end], "frames": k1 - k0}
+    occlusion = {"window_s": [float(nominal.t[k0]), t_end], "frames": k1 - k0,
+                 "q_of_fd_q_annex_a": PENDULUM_Q}
     win = slice(k0, k1)
     after = slice(k1, min(len(nominal.t), k1 + 50))
-    for name, nom, occ in (("fd", fd_nom, fd_occ), ("fcdi", fc_nom, fc_occ)):
+    for name, nom, occ in (("fd", fd_nom, fd_occ), ("fcdi", fc_nom, fc_occ),
+                           ("fd_q_annex_a", fda_nom, fda_occ)):
         e_th = occ["z"][:, 2] - nominal.z[:, 2]
         e_tau = occ["te"][:, 0] - nominal.te[:, 0]
         occlusion[name] = {
@@ -346,7 +350,8 @@ def m4f_instructions(name: str, trial: T.LegTrial, params: dict, n_table: int = 
     for i in range(1, n_table + 1):
         recs.append("{.gyr={%s}, .acc={%s}, .foot={%s}, .gyr_valid={1u,1u}, .acc_valid={1u,1u}, "
                     ".foot_valid=%du, .dt=%s}" % (
-                        ", ".join(f(v) for v in inp["gyr"][i]), ", ".join(f(v) for v in inp["acc"][i]),
+                        ", ".join(f(v) for v in inp["gyr"][i]),
+                        ", ".join(f(v) for v in inp["acc"][i]),
                         ", ".join(f(v) for v in inp["foot"][i]), int(inp["foot_valid"][i]),
                         f(inp["dt"][i])))
     P = f"{name}_f32"
@@ -359,7 +364,8 @@ def m4f_instructions(name: str, trial: T.LegTrial, params: dict, n_table: int = 
                                          ", ".join(f(v) for v in inp["acc"][0]), f(inp["dt"][0])))
     setup = (f"{P}_params p; {P}_default_params(&p);\n{sets}"
              f"    (void){P}_init(&kf_s, &p);\n"
-             f"    {{ const kf_leg_input_f32 kf_first = {first}; {P}_update(&kf_s, &kf_first, &kf_o); }}")
+             f"    {{ const kf_leg_input_f32 kf_first = {first};\n"
+             f"      {P}_update(&kf_s, &kf_first, &kf_o); }}")
     call = f"{P}_update(&kf_s, &kf_in[kf_i % {n_table}u], &kf_o);"
     c = measure_call_cost([G / f"{P}.c"], setup, call, "m4f", k=k, prelude=prelude,
                           include_dirs=[G], size_opts=("-Os",))
@@ -368,6 +374,19 @@ def m4f_instructions(name: str, trial: T.LegTrial, params: dict, n_table: int = 
             "flash_bytes_Os": d["size"]["-Os"]["flash"],
             "cpu_percent_100hz_64mhz_at_1_cycle_per_instruction":
                 d["instructions_per_call"] * 100.0 / 64e6 * 100.0}
+
+
+def leg_observability(trial, prm, k: int = 150) -> dict:
+    """Rank test of the leg EKF's linearisation with all sensors, gyroscopes only and
+    accelerometers only."""
+    from kinefuse.codegen.estimators.dynamics.leg import LegEKF
+    from kinefuse.host.dynamics.observability import linearisation, observability
+    F, H = linearisation(LegEKF(), trial.z[k], trial.zd[k], trial.te[k], prm)
+    st = [0.01, 0.01, 0.1, 0.1, 1.0, 1.0]
+    sn = [trial.cfg.sigma_gyr] * 2 + [trial.cfg.sigma_acc] * 4
+    return {label: observability(F, H, lost, st, sn).as_dict()
+            for label, lost in (("all_sensors", ()), ("gyroscopes_only", (2, 3, 4, 5)),
+                                ("accelerometers_only", (0, 1)))}
 
 
 def leg_study(progress=None, qemu: bool = True, duration: float = 10.0, seed: int = 0,
@@ -422,6 +441,7 @@ def leg_study(progress=None, qemu: bool = True, duration: float = 10.0, seed: in
     if fixed:
         from kinefuse.host.dynamics.fixed_leg import study
         out["fixed_point"] = study(3.0, 2.0)
+    out["observability"] = leg_observability(trial, prm)
     out["m4f_instructions_per_step"] = None
     if qemu:
         cost = m4f_instructions("leg", trial, prm)

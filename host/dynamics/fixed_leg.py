@@ -21,7 +21,7 @@ import numpy as np
 
 from kinefuse.codegen.estimator import initial_state, trace
 from kinefuse.codegen.fixed import frac_for
-from kinefuse.codegen.ir import BOOL, INT, REAL
+from kinefuse.codegen.ir import BOOL, REAL
 from kinefuse.codegen.passes import eval_op, optimize
 
 

@@ -86,8 +86,8 @@ class VariantRunner(cg_runner.CRunner):
         self.is_model = model
         if not model:
             t0 = time.perf_counter()
-            self.ffi, self.lib = cffi_build(P, [d / f"kf_{est.inputs.name}_{system}.h", d / f"{P}.h"],
-                                            [d / f"{P}.c"], include_dirs=[d])
+            headers = [d / f"kf_{est.inputs.name}_{system}.h", d / f"{P}.h"]
+            self.ffi, self.lib = cffi_build(P, headers, [d / f"{P}.c"], include_dirs=[d])
             self.build_seconds = time.perf_counter() - t0
 
     def run_encoded(self, e):

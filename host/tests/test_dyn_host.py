@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from kinefuse.codegen.estimators.dynamics import mbs
-from kinefuse.codegen.estimators.dynamics.models import Leg, Pendulum
+from kinefuse.codegen.estimators.dynamics.models import Pendulum
 from kinefuse.host.dynamics import bench as B
 from kinefuse.host.dynamics import truth as T
 

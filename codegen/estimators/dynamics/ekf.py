@@ -40,7 +40,8 @@ import dataclasses
 import math
 
 from kinefuse.codegen.linalg import ZERO, sadd, smul, ssub, ssum
-from kinefuse.codegen.scalar import select
+from kinefuse.codegen.scalar import (all_of, fabs, fmax, logical_and, logical_not, logical_or,
+                                     select)
 from kinefuse.codegen.estimators.dynamics.ad import Dual, new_tag, tangent, value
 from kinefuse.codegen.estimators.dynamics.mbs import Dynamics, unit, zdd_of
 
@@ -296,7 +297,6 @@ def integrate(model, v: Variant, z, zd, te, zdd0, p, dt):
 def gauss_solve(A, b):
     """A x = b by Gaussian elimination without pivoting, for a matrix close to the identity
     (the Newton matrix I − hz̈_ż − h²z̈_z with h = Δt/2 small)."""
-    from kinefuse.codegen.scalar import fmax
     n = len(A)
     A = [row[:] for row in A]
     b = list(b)
@@ -391,8 +391,8 @@ def sequential_update(xv, P, innov, H, rvar, use):
         PHt = [ssum(smul(P[r][j], h[j]) for j in cols) for r in range(N)]
         s = sadd(ssum(smul(h[j], PHt[j]) for j in cols), rvar[i])
         ok = s > rvar[i] * 0.5
-        ok_use = _and(use[i], ok)
-        skipped = _or(skipped, _and(use[i], _not(ok)))
+        ok_use = logical_and(use[i], ok)
+        skipped = logical_or(skipped, logical_and(use[i], logical_not(ok)))
         sinv = 1.0 / select(ok, s, rvar[i])
         gain = [select(ok_use, smul(PHt[r], sinv), 0.0) if PHt[r] is not ZERO else ZERO
                 for r in range(N)]
@@ -411,24 +411,9 @@ def sequential_update(xv, P, innov, H, rvar, use):
     return x, P, skipped
 
 
-def _and(a, b):
-    from kinefuse.codegen.scalar import logical_and
-    return logical_and(a, b)
-
-
-def _or(a, b):
-    from kinefuse.codegen.scalar import logical_or
-    return logical_or(a, b)
-
-
-def _not(a):
-    from kinefuse.codegen.scalar import logical_not
-    return logical_not(a)
-
-
 __all__ = ["Variant", "predict", "sequential_update", "measurement_jacobian", "integrate",
            "phi_matrix", "sigma_ct", "van_loan", "expm_taylor", "build_F", "noise_matrix",
-           "unpack_sym", "pack_sym", "tri_size", "diag_sym_init"]
+           "unpack_sym", "pack_sym", "tri_size", "diag_sym_init", "start_run_or_hold"]
 
 
 def start_run_or_hold(initialised, do_init, run, x_init, P0diag, x_upd, P_upd, x_old, P_old,
@@ -437,7 +422,6 @@ def start_run_or_hold(initialised, do_init, run, x_init, P0diag, x_upd, P_upd, x
     or held; then the sanity check (every value finite and within lims, every variance in
     [0, p_lim]) that resets a filter whose estimate broke down.  Returns
     (x, P, initialised, reset_now)."""
-    from kinefuse.codegen.scalar import all_of, fabs, logical_and, logical_not, logical_or
     N = len(x_old)
     xs = [select(do_init, a, select(run, b, c)) for a, b, c in zip(x_init, x_upd, x_old)]
     Pn = [[None] * N for _ in range(N)]

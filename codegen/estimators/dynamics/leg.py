@@ -16,7 +16,7 @@ from kinefuse.codegen.estimator import Estimator, InputSpec, Param, Var
 from kinefuse.codegen.ir import BOOL, INT
 from kinefuse.codegen.mathlib import atan2
 from kinefuse.codegen.scalar import (all_of, fabs, fmax, inc_if, logical_and, logical_not,
-                                     select, sqrt, when)
+                                     logical_or, select, sqrt, when)
 from kinefuse.codegen.estimators.dynamics.ad import sincos
 from kinefuse.codegen.estimators.dynamics.ekf import (Variant, diag_sym_init, measurement_jacobian,
                                                       pack_sym, predict, sequential_update,
@@ -140,7 +140,8 @@ class LegEKF(Estimator):
     segment (positions a_i, b_i in the segment frames).  Runge-Kutta 4 for the mean,
     second-order Phi, Taylor noise covariance, scalar Joseph updates.  Starts from the first
     sample with both accelerometers (angles from the gravity direction, rates from the
-    gyroscopes, torques from the quasi-static balance); a non-finite or out-of-range estimate resets it (counted).
+    gyroscopes, torques from the quasi-static balance); a non-finite or out-of-range estimate
+    resets it (counted).
     """
 
     name = "leg"
@@ -244,18 +245,13 @@ class LegEKF(Estimator):
         resets = inc_if(x.resets, reset_now)
         zs, zds, tes = xs[:2], xs[2:4], xs[4:]
         te_std = [sqrt(fmax(Pn[4 + e][4 + e], 0.0)) for e in range(ne)]
-        imu_lost = logical_not(all_of(*(logical_or_(g_ok[i], a_ok[i]) for i in range(2))))
+        imu_lost = logical_not(all_of(*(logical_or(g_ok[i], a_ok[i]) for i in range(2))))
         nx = {"z": zs, "zd": zds, "te": tes, "P": pack_sym(Pn), "initialised": init_next,
               "rejected": rejected, "skipped": skipped, "resets": resets}
         y = {"z": zs, "zd": zds, "te": tes, "te_std": te_std, "initialised": init_next,
              "imu_lost": imu_lost, "skipped_now": skipped_now, "reset_now": reset_now,
              "rejected": rejected, "skipped": skipped, "resets": resets}
         return nx, y
-
-
-def logical_or_(a, b):
-    from kinefuse.codegen.scalar import logical_or
-    return logical_or(a, b)
 
 
 class LegFootEKF(LegEKF):

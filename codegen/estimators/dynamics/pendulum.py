@@ -130,8 +130,9 @@ class PendulumEKF(Estimator):
     automatic differentiation.  Sensors: the 4 markers and the effort sensors flagged valid,
     processed one scalar at a time in Joseph form.  The filter starts from the first frame in
     which all four markers are seen (z from the markers, rates 0, efforts from their sensors,
-    tau1 without its sensor from the static balance of the measured reactions, residual 0); an estimate that turns non-finite or leaves its range resets it (counted), so the
-    outputs stay finite.
+    tau1 without its sensor from the static balance of the measured reactions, residual 0);
+    an estimate that turns non-finite or leaves its range resets it (counted), so the outputs
+    stay finite.
     """
 
     name = "pendulum"
@@ -204,7 +205,7 @@ class PendulumEKF(Estimator):
     # -- one step -------------------------------------------------------------------------
     def step(self, x, u, p):
         model, v = self.model, self.variant
-        n, ne, N = 4, len(model.efforts), self.N
+        ne, N = len(model.efforts), self.N
         z, zd, te = list(x.z), list(x.zd), list(x.te)
         P = unpack_sym(list(x.P), N)
         dt = u.dt
