@@ -40,7 +40,7 @@ from kinefuse.codegen.estimators.common import (ACC_MAX, ACC_NORM_MIN_SQ, DT_MAX
 from kinefuse.codegen.ir import BOOL
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
 from kinefuse.codegen.scalar import (all_of, any_of, assume, clamp, fabs, fmax, fmin, inc_if,
-                                     logical_and, logical_not, logical_or, rnorm, select)
+                                     logical_and, logical_not, logical_or, rnorm, select, when)
 
 DEG = math.pi / 180.0
 T_SAT = 1.0e4              # s; timers saturate here
@@ -197,6 +197,8 @@ class Flagship(Estimator):
         Var("dist_t", 1, 0.0, T_SAT, "s", "rejection time (decays twice as fast when accepted)",
             init=0.0),
         Var("undist_t", 1, 0.0, T_SAT, "s", "time the field has been undisturbed", init=0.0),
+        Var("mag_flag", 1, 0, 1, "", "the last magnetometer reading was rejected", BOOL,
+            init=False),
         INITIALISED,
         REJECTED,
     )
@@ -304,107 +306,117 @@ class Flagship(Estimator):
         rest = rest_t >= p.rest_time
         rest_acc = vselect(acc_ok, rest_acc, Vec3(*x.rest_acc))
 
-        # -- magnetometer: heading disagreement ------------------------------------------------
-        r_m, _ = rnorm(mag, 1e-6)
-        m_unit = _unit(mag * r_m)
-        m_norm = assume(m_unit.dot(mag), 0.0, MAG_MAX * 1.7321)   # |m| in the input's unit
-        m_e = _unit(q6.rotate(m_unit))                   # direction in the 6D earth frame
-        cd = hw * hw - hz * hz                           # cos(delta)
-        sd = 2.0 * hw * hz                               # sin(delta)
-        mx = assume(cd * m_e.x - sd * m_e.y, *UNIT)      # ... in the 9D earth frame
-        my = assume(sd * m_e.x + cd * m_e.y, *UNIT)
-        rh, h2 = rnorm((mx, my), 1e-9)
-        h_u = assume(h2 * rh, 0.0, 1.0)                  # horizontal part of the direction
-        v_u = m_e.z                                      # vertical part (up)
-        # horizontal field direction in the 9D frame: (sin, cos) of the heading disagreement
-        # (field east of north > 0); north means ex = 0, ey = 1
-        ex = assume(mx * rh, *UNIT)
-        ey = assume(my * rh, *UNIT)
-
-        # -- magnetometer: disturbance --------------------------------------------------------
+        # -- magnetometer --------------------------------------------------------------------
+        # the heading variance grows every step (random walk: gyroscope bias residual); the
+        # rest runs only with a reading (a conditional region: cost only, never results)
+        p_head_pred = select(do_init, P_HEAD_MAX,
+                             fmin(x.p_head + p.heading_rw * p.heading_rw * dt, P_HEAD_MAX))
         t_mag = fmin(x.t_mag + dt, 2.0 * DT_MAX)
-        k_cur = select(do_init, 1.0, fmin(t_mag / p.tau_mag_noise, 1.0))
         cur_old = _fld(x.cur_n, x.cur_d)
-        cur = cur_old + (Vec3(m_norm, h_u, v_u) - cur_old) * k_cur
-        c_n, c_h, c_v = cur
-
-        def field_off(fld):
-            """Magnitude beyond mag_th, or dip (sin of the difference) beyond mag_dip_th."""
-            n_ref, h_ref, v_ref = fld
-            norm_off = fabs(c_n - n_ref) > p.mag_th * n_ref
-            dip_off = fabs(c_h * v_ref - c_v * h_ref) > p.mag_dip_th
-            return logical_or(norm_off, dip_off)
-
-        has_ref = logical_and(x.ref_t > 0.0, logical_not(do_init))
-        disturbed_now = all_of(use_mag, has_ref, field_off(_fld(x.ref_n, x.ref_d)))
-
-        # heading variance: random walk; the gate compares the disagreement with it
-        p_head = select(do_init, P_HEAD_MAX,
-                        fmin(x.p_head + p.heading_rw * p.heading_rw * dt, P_HEAD_MAX))
-        gate_var = p.mag_gate * p.mag_gate * (p_head + p.mag_sigma_gate * p.mag_sigma_gate)
-        implausible = logical_or(ey < 0.0, ex * ex > gate_var)
-
-        # candidate: a new field that stays consistent while the sensor rotates is a real
-        # (homogeneous) field, not a disturbance moving with the sensor or passing by
         cand_old = _fld(x.cand_n, x.cand_d)
-        cand_off = logical_or(do_init, field_off(cand_old))
-        rotating = rest_gyr.norm_sq() >= p.mag_new_min_rate * p.mag_new_min_rate
-        k_cand = fmin(dt / p.tau_mag_ref, 1.0)
-        cand = vselect(cand_off, cur, cand_old + (cur - cand_old) * k_cand)
-        cand_t = select(cand_off, 0.0, select(rotating, fmin(x.cand_t + dt, T_SAT), x.cand_t))
-
-        # rejection (field tests or gate) is bounded: the rejection time grows while readings
-        # are rejected and decays twice as fast while they are accepted (noise at a threshold
-        # does not restart the bound); at mag_reject_time the candidate field is adopted and an
-        # implausible heading is re-initialised from the reading
-        settled = logical_or(x.undist_t >= p.mag_min_undisturbed, logical_not(has_ref))
-        h_first = logical_and(use_mag, logical_not(has_ref))
-        rejected_now = all_of(use_mag, has_ref, logical_or(
-            disturbed_now, logical_and(settled, implausible)))
-        dist_t = select(rejected_now, fmin(x.dist_t + dt, T_SAT), fmax(x.dist_t - 2.0 * dt, 0.0))
-        undist_t = select(disturbed_now, 0.0, fmin(x.undist_t + dt, T_SAT))
-        give_up = logical_and(rejected_now, dist_t >= p.mag_reject_time)
-        adopt = logical_or(logical_and(disturbed_now, cand_t >= p.mag_new_time), give_up)
-        reset_head = logical_or(h_first, logical_and(give_up, implausible))
-        accept = logical_and(use_mag, any_of(
-            all_of(logical_not(disturbed_now), settled, logical_not(implausible)),
-            give_up, h_first))
-        mag_disturbed = logical_and(nine, logical_or(
-            rejected_now, logical_and(has_ref, logical_not(settled))))
-
-        # -- heading update: R_c = heading_rw^2 tau_mag^2 (noise density) makes tau_mag the
-        # steady-state time constant; a sample covering t_mag seconds has variance R_c / t_mag
-        r_c = p.heading_rw * p.heading_rw * p.tau_mag * p.tau_mag
-        pt = p_head * t_mag
-        k_head = select(reset_head, 1.0,
-                        select(accept, assume(pt / fmax(pt + r_c, 1e-12), 0.0, 1.0), 0.0))
-        # the disagreement as a rotation about the vertical: the half-way quaternion
-        # (1 + ey, ex) / |.| = (cos, sin) of half the angle, exact for any angle; a fraction
-        # k_head of it (normalised linear blend with the identity) is applied
-        # (exactly south: the sense of the half turn is free; +z is taken)
-        ex_s = select(logical_and(ey < 0.0, fabs(ex) < 1e-3), 1e-3, ex)
-        rf, _ = rnorm((fmax(1.0 + ey, 1e-9), ex_s), 1e-12)
-        fw = assume(fmax(1.0 + ey, 1e-9) * rf, 0.0, 1.0)
-        fz = assume(ex_s * rf, *UNIT)
-        cw = 1.0 - k_head + k_head * fw
-        cz = k_head * fz
-        hw_n = cw * hw - cz * hz                         # (cw, cz) (x) (hw, hz), about z
-        hz_n = cw * hz + cz * hw
-        rn, _ = rnorm((hw_n, hz_n), 1e-6)
-        hd_new = (assume(hw_n * rn, *UNIT), assume(hz_n * rn, *UNIT))
-        d_head = 2.0 * cz                                # rad (small angles), for the bias
-        p_head = select(reset_head, P_HEAD_MAX,
-                        select(accept, (1.0 - k_head) * p_head, p_head))
-
-        # reference: learnt while accepted (1/N at first, then tau_mag_ref), or adopted
-        ref_t = select(accept, fmin(x.ref_t + dt, T_SAT), x.ref_t)
-        k_ref = fmin(dt * (1.0 / fmax(fmin(ref_t, p.tau_mag_ref), 1e-3)), 1.0)
         ref = _fld(x.ref_n, x.ref_d)
-        ref_new = vselect(h_first, cur, vselect(adopt, cand, vselect(
-            logical_and(accept, has_ref), ref + (cur - ref) * k_ref, ref)))
-        ref_t = select(logical_or(h_first, adopt), fmax(ref_t, 1e-3), ref_t)
-        dist_t = select(give_up, 0.0, dist_t)
-        undist_t = select(logical_or(adopt, h_first), p.mag_min_undisturbed, undist_t)
+        with when(use_mag):
+            # -- magnetometer: heading disagreement ------------------------------------------------
+            r_m, _ = rnorm(mag, 1e-6)
+            m_unit = _unit(mag * r_m)
+            m_norm = assume(m_unit.dot(mag), 0.0, MAG_MAX * 1.7321)   # |m| in the input's unit
+            m_e = _unit(q6.rotate(m_unit))                   # direction in the 6D earth frame
+            cd = hw * hw - hz * hz                           # cos(delta)
+            sd = 2.0 * hw * hz                               # sin(delta)
+            mx = assume(cd * m_e.x - sd * m_e.y, *UNIT)      # ... in the 9D earth frame
+            my = assume(sd * m_e.x + cd * m_e.y, *UNIT)
+            rh, h2 = rnorm((mx, my), 1e-9)
+            h_u = assume(h2 * rh, 0.0, 1.0)                  # horizontal part of the direction
+            v_u = m_e.z                                      # vertical part (up)
+            # horizontal field direction in the 9D frame: (sin, cos) of the heading disagreement
+            # (field east of north > 0); north means ex = 0, ey = 1
+            ex = assume(mx * rh, *UNIT)
+            ey = assume(my * rh, *UNIT)
+
+            # -- magnetometer: disturbance --------------------------------------------------------
+            k_cur = select(do_init, 1.0, fmin(t_mag / p.tau_mag_noise, 1.0))
+            cur = cur_old + (Vec3(m_norm, h_u, v_u) - cur_old) * k_cur
+            c_n, c_h, c_v = cur
+
+            def field_off(fld):
+                """Magnitude beyond mag_th, or dip (sin of the difference) beyond mag_dip_th."""
+                n_ref, h_ref, v_ref = fld
+                norm_off = fabs(c_n - n_ref) > p.mag_th * n_ref
+                dip_off = fabs(c_h * v_ref - c_v * h_ref) > p.mag_dip_th
+                return logical_or(norm_off, dip_off)
+
+            has_ref = logical_and(x.ref_t > 0.0, logical_not(do_init))
+            disturbed_now = all_of(use_mag, has_ref, field_off(_fld(x.ref_n, x.ref_d)))
+
+            # the gate compares the disagreement with the heading variance
+            p_head = p_head_pred
+            gate_var = p.mag_gate * p.mag_gate * (p_head + p.mag_sigma_gate * p.mag_sigma_gate)
+            implausible = logical_or(ey < 0.0, ex * ex > gate_var)
+
+            # candidate: a new field that stays consistent while the sensor rotates is a real
+            # (homogeneous) field, not a disturbance moving with the sensor or passing by
+            cand_off = logical_or(do_init, field_off(cand_old))
+            rotating = rest_gyr.norm_sq() >= p.mag_new_min_rate * p.mag_new_min_rate
+            k_cand = fmin(dt / p.tau_mag_ref, 1.0)
+            cand = vselect(cand_off, cur, cand_old + (cur - cand_old) * k_cand)
+            cand_t = select(cand_off, 0.0, select(rotating, fmin(x.cand_t + dt, T_SAT), x.cand_t))
+
+            # rejection (field tests or gate) is bounded: the rejection time grows while readings
+            # are rejected and decays twice as fast while they are accepted (noise at a threshold
+            # does not restart the bound); at mag_reject_time the candidate field is adopted and an
+            # implausible heading is re-initialised from the reading
+            settled = logical_or(x.undist_t >= p.mag_min_undisturbed, logical_not(has_ref))
+            h_first = logical_and(use_mag, logical_not(has_ref))
+            rejected_now = all_of(use_mag, has_ref, logical_or(
+                disturbed_now, logical_and(settled, implausible)))
+            dist_t = select(rejected_now, fmin(x.dist_t + dt, T_SAT), fmax(x.dist_t - 2.0 * dt, 0.0))
+            undist_t = select(disturbed_now, 0.0, fmin(x.undist_t + dt, T_SAT))
+            give_up = logical_and(rejected_now, dist_t >= p.mag_reject_time)
+            adopt = logical_or(logical_and(disturbed_now, cand_t >= p.mag_new_time), give_up)
+            reset_head = logical_or(h_first, logical_and(give_up, implausible))
+            accept = logical_and(use_mag, any_of(
+                all_of(logical_not(disturbed_now), settled, logical_not(implausible)),
+                give_up, h_first))
+            mag_disturbed = logical_and(nine, logical_or(
+                rejected_now, logical_and(has_ref, logical_not(settled))))
+
+            # -- heading update: R_c = heading_rw^2 tau_mag^2 (noise density) makes tau_mag the
+            # steady-state time constant; a sample covering t_mag seconds has variance R_c / t_mag
+            r_c = p.heading_rw * p.heading_rw * p.tau_mag * p.tau_mag
+            pt = p_head * t_mag
+            k_head = select(reset_head, 1.0,
+                            select(accept, assume(pt / fmax(pt + r_c, 1e-12), 0.0, 1.0), 0.0))
+            # the disagreement as a rotation about the vertical: the half-way quaternion
+            # (1 + ey, ex) / |.| = (cos, sin) of half the angle, exact for any angle; a fraction
+            # k_head of it (normalised linear blend with the identity) is applied
+            # (exactly south: the sense of the half turn is free; +z is taken)
+            ex_s = select(logical_and(ey < 0.0, fabs(ex) < 1e-3), 1e-3, ex)
+            rf, _ = rnorm((fmax(1.0 + ey, 1e-9), ex_s), 1e-12)
+            fw = assume(fmax(1.0 + ey, 1e-9) * rf, 0.0, 1.0)
+            fz = assume(ex_s * rf, *UNIT)
+            cw = 1.0 - k_head + k_head * fw
+            cz = k_head * fz
+            hw_n = cw * hw - cz * hz                         # (cw, cz) (x) (hw, hz), about z
+            hz_n = cw * hz + cz * hw
+            rn, _ = rnorm((hw_n, hz_n), 1e-6)
+            hd_new = (assume(hw_n * rn, *UNIT), assume(hz_n * rn, *UNIT))
+            d_head = 2.0 * cz                                # rad (small angles), for the bias
+            p_head = select(reset_head, P_HEAD_MAX,
+                            select(accept, (1.0 - k_head) * p_head, p_head))
+
+            # reference: learnt while accepted (1/N at first, then tau_mag_ref), or adopted
+            ref_t = select(accept, fmin(x.ref_t + dt, T_SAT), x.ref_t)
+            k_ref = fmin(dt * (1.0 / fmax(fmin(ref_t, p.tau_mag_ref), 1e-3)), 1.0)
+            ref_new = vselect(h_first, cur, vselect(adopt, cand, vselect(
+                logical_and(accept, has_ref), ref + (cur - ref) * k_ref, ref)))
+            ref_t = select(logical_or(h_first, adopt), fmax(ref_t, 1e-3), ref_t)
+            dist_t = select(give_up, 0.0, dist_t)
+            undist_t = select(logical_or(adopt, h_first), p.mag_min_undisturbed, undist_t)
+
+        hd_new = (select(use_mag, hd_new[0], hw), select(use_mag, hd_new[1], hz))
+        d_head = select(use_mag, d_head, 0.0)
+        p_head = select(use_mag, p_head, p_head_pred)
+        mag_flag = select(use_mag, mag_disturbed, x.mag_flag)
 
         # -- gyroscope bias -------------------------------------------------------------------
         p0 = p.bias_sigma_init * p.bias_sigma_init
@@ -453,10 +465,11 @@ class Flagship(Estimator):
             "dist_t": on_mag(dist_t, x.dist_t),
             "undist_t": on_mag(undist_t, x.undist_t),
             "initialised": live,
+            "mag_flag": logical_and(live, mag_flag),
             "rejected": inc_if(x.rejected, bad),
         }
         y = {"q": vselect(nine, q9, q6), "q6": q6, "q9": q9,
              "rest": logical_and(run, rest),
-             "mag_disturbed": logical_and(live, mag_disturbed),
+             "mag_disturbed": all_of(live, nine, mag_flag),
              "rejected": nx["rejected"], "bias": bias_new}
         return nx, y
