@@ -27,8 +27,11 @@ def register(sub):
 def run(args) -> int:
     from kinefuse.host.broad import load_trial
     name = args.filter or runner.default_filter()
+    if name not in runner.filter_names():
+        raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
+    prm = runner.parse_params(args.param)
     trial = load_trial(args.input)
-    res = runner.run_filter(name, args.impl, trial, runner.parse_params(args.param), args.preset)
+    res = runner.run_filter(name, args.impl, trial, prm, args.preset)
     n = len(res.q)
     t = np.arange(n) * float(trial.dt) if np.ndim(trial.dt) == 0 else np.cumsum(trial.dt)
     cols = [t, res.q[:, 0], res.q[:, 1], res.q[:, 2], res.q[:, 3]]

@@ -1,0 +1,96 @@
+"""`kinefuse filters | run | codegen | bench bitexact | bench speed` as a user calls them."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from kinefuse.host import broad
+
+
+def kf(*args, timeout=600):
+    return subprocess.run([sys.executable, "-m", "kinefuse.host.cli", *args], capture_output=True,
+                          text=True, timeout=timeout)
+
+
+@pytest.fixture(scope="module")
+def short_trial(tmp_path_factory):
+    """A 20 s cut of a bundled trial, saved in the bundled format."""
+    t = broad.load_trial(broad.bundled_trials()[0])
+    src = np.load(broad.bundled_trials()[0])
+    path = tmp_path_factory.mktemp("data") / f"{t.name}.npz"
+    n = int(20 * t.rate_hz)
+    np.savez(path, **{k: (v[:n] if getattr(v, "ndim", 0) and len(v) == t.n else v)
+                      for k, v in src.items()})
+    return path
+
+
+def test_filters_lists_parameters_with_units_and_defaults():
+    r = kf("filters", "--json")
+    assert r.returncode == 0, r.stderr
+    info = json.loads(r.stdout)
+    for name in ("madgwick", "mahony", "complementary"):
+        p = info[name]["params"]
+        assert p and all({"name", "default", "unit", "min", "max", "doc"} <= set(x) for x in p)
+    assert info["madgwick"]["presets"]["seed001"]["beta"] == 0.03
+
+
+def test_run_writes_one_row_per_sample(short_trial, tmp_path):
+    out = tmp_path / "est.csv"
+    r = kf("run", "--filter", "madgwick", "--impl", "q", "--input", str(short_trial), "--out", str(out))
+    assert r.returncode == 0, r.stderr
+    lines = out.read_text().splitlines()
+    assert lines[0].startswith("#") and lines[1] == "t,w,x,y,z"
+    data = np.loadtxt(out, delimiter=",", skiprows=2)
+    t = broad.load_trial(short_trial)
+    assert data.shape == (t.n, 5)
+    assert np.allclose(np.linalg.norm(data[:, 1:], axis=1), 1.0, atol=1e-3)
+
+
+@pytest.mark.parametrize("args,needle", [
+    (["run", "--filter", "nope", "--input", "x.mat", "--out", "o.csv"], "unknown filter"),
+    (["run", "--filter", "madgwick", "--input", "/does/not/exist.mat", "--out", "o.csv"], "exist"),
+    (["run", "--filter", "madgwick", "--param", "beta=abc", "--input", "x", "--out", "o"], ""),
+    (["run", "--filter", "madgwick", "--impl", "float", "--input", "x", "--out", "o"], "invalid choice"),
+    (["bench", "bitexact", "--filter", "nope"], "unknown filter"),
+])
+def test_bad_input_gives_one_line_error(args, needle, short_trial):
+    if "--input" in args and args[args.index("--input") + 1] == "x":
+        args[args.index("--input") + 1] = str(short_trial)
+    r = kf(*args)
+    assert r.returncode == 2
+    assert "Traceback" not in r.stderr and len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert needle in r.stderr
+
+
+def test_parameter_out_of_range_is_refused(short_trial, tmp_path):
+    r = kf("run", "--filter", "madgwick", "--param", "beta=99", "--input", str(short_trial),
+           "--out", str(tmp_path / "o.csv"))
+    assert r.returncode == 2 and "beta" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_codegen_check_passes_on_committed_files():
+    r = kf("codegen", "--check")
+    assert r.returncode == 0, r.stderr
+
+
+def test_bench_bitexact_json(short_trial):
+    r = kf("bench", "bitexact", "--data", str(short_trial), "--filter", "complementary", "--json")
+    assert r.returncode == 0, r.stderr
+    res = json.loads(r.stdout)
+    assert res["filter"] == "complementary"
+    for system in ("f32", "q"):
+        assert set(res[system]) == {"samples", "differing", "rms_deg", "max_deg"}
+        assert res[system]["differing"] == 0 and res[system]["samples"] > 5000
+
+
+def test_bench_speed_json(short_trial):
+    r = kf("bench", "speed", "--data", str(short_trial), "--filter", "madgwick", "--repeat", "1",
+           "--model-samples", "300", "--json")
+    assert r.returncode == 0, r.stderr
+    sps = json.loads(r.stdout)["samples_per_s"]
+    assert set(sps) == {"f32_c", "f32_model", "q_c", "q_model", "ref", "imufusion", "vqf"}
+    assert sps["f32_c"] > sps["f32_model"] > 0
