@@ -276,12 +276,17 @@ class Flagship(Estimator):
         g_e = Vec3(*(assume(c, -LP_MAX * 1.7321, LP_MAX * 1.7321)
                      for c in q_a.rotate(lp_x_new)))
         gh, _ = g_e.normalized(1e-6)
-        # C = (1 + gz, gy, -gx, 0) rotates the filtered direction onto +z (half-way quaternion,
-        # exact at the start); the floor keeps an upside-down start defined (noise leaves it)
-        # exactly upside down the axis is undefined: any horizontal one will do (x here)
+        # the correction rotates the filtered direction onto +z.  Running: the small-angle
+        # quaternion (1, gy/2, -gx/2, 0) (a step turns it by ~1e-4 rad: exact to third order)
+        # and a Newton renormalisation; exactly upside down any horizontal axis will do (x);
+        # large corrections converge over a few steps.  First sample: the exact half-way
+        # quaternion (1 + gz, gy, -gx, 0) / |.| (a conditional region, cost only)
         flip = logical_and(gh.z < 0.0, fabs(gh.x) + fabs(gh.y) < 1e-3)
-        corr = Quat(fmax(1.0 + gh.z, 1e-9), select(flip, 1e-3, gh.y), -gh.x, 0.0)
-        q_a_new = vselect(acc_ok, (corr * q_a).normalized(), q_a)
+        gy_f = select(flip, 1e-3, gh.y)
+        q_a_run = _renorm(Quat(1.0, 0.5 * gy_f, -0.5 * gh.x, 0.0) * q_a)
+        with when(do_init):
+            q_a_first = Quat(fmax(1.0 + gh.z, 1e-9), gy_f, -gh.x, 0.0).normalized(1e-12)
+        q_a_new = vselect(acc_ok, vselect(do_init, q_a_first, q_a_run), q_a)
         lp_x_new = vselect(acc_ok, lp_x_new, lp_x)
         lp_v_new = vselect(acc_ok, lp_v_new, lp_v)
         q6 = q_a_new * q_i_new                           # product of unit quaternions
@@ -421,18 +426,21 @@ class Flagship(Estimator):
         # -- gyroscope bias -------------------------------------------------------------------
         p0 = p.bias_sigma_init * p.bias_sigma_init
         p_bias = fmin(x.p_bias + p0 * (dt / p.bias_forget_time), p0)
-        # at rest: Kalman update towards the low-pass gyroscope (every orientation)
-        r_rest = p.bias_sigma_rest * p.bias_sigma_rest
-        k_b = assume(p_bias / (p_bias + r_rest), 0.0, 1.0)
         use_rest = logical_and(rest, run)
-        b_rest = bias + (rest_gyr - bias) * k_b
-        # in motion: integral of the corrections (E6 frame) in the sensor frame; the gain is
-        # 1/tau_bias while the bias is unknown and shrinks with its variance
-        g_m = assume(p_bias / p0, 0.0, 1.0) * (1.0 / p.tau_bias)
-        corr_s = q6.rotate_inv(Vec3(theta_c.x, theta_c.y, select(run, d_head, 0.0)))
-        b_motion = bias - corr_s * g_m
+        with when(use_rest):
+            # at rest: Kalman update towards the low-pass gyroscope (every orientation)
+            r_rest = p.bias_sigma_rest * p.bias_sigma_rest
+            k_b = assume(p_bias / (p_bias + r_rest), 0.0, 1.0)
+            b_rest = bias + (rest_gyr - bias) * k_b
+            p_rest = (1.0 - k_b) * p_bias
+        with when(logical_not(use_rest)):
+            # in motion: integral of the corrections (E6 frame) in the sensor frame; the gain
+            # is 1/tau_bias while the bias is unknown and shrinks with its variance
+            g_m = assume(p_bias / p0, 0.0, 1.0) * (1.0 / p.tau_bias)
+            corr_s = q6.rotate_inv(Vec3(theta_c.x, theta_c.y, select(run, d_head, 0.0)))
+            b_motion = bias - corr_s * g_m
         bias_new = _clamp3(vselect(use_rest, b_rest, b_motion), -p.bias_max, p.bias_max)
-        p_bias = select(use_rest, (1.0 - k_b) * p_bias, p_bias)
+        p_bias = select(use_rest, p_rest, p_bias)
 
         q9 = Quat(hd_new[0], 0.0, 0.0, hd_new[1]) * q6
 
