@@ -349,3 +349,85 @@ def _filter_model(name: str, system: str, inputs: dict, n: int, params) -> dict:
         q_raw = out["q"].astype(np.int64)
         q = (q_raw.astype(np.float32) * np.float32(2.0 ** -frac)).astype(np.float32)
     return {"q": q, "q_raw": q_raw, "rejected": out.get("rejected")}
+
+
+# ------------------------------------------------------------------------ end-to-end stream
+
+def stream_check(seconds: float, rate_hz: int = 1000, out_dir=None, system: str = "f32",
+                 filters=None, record_margin_s: float = 2.0) -> dict:
+    """The unit's host build streams ``seconds`` x ``rate_hz`` samples of its synthetic sensor
+    over a pty; ``kinefuse record`` records them into a .kfr; the file is decoded and every
+    KF_RAW_SAMPLE compared with what the sensor produced (recomputed here).
+
+    Returns a summary: samples expected/received, lost, duplicated, wrong (any field differs),
+    timing errors, the unit's own drop counters, recorder CRC errors, bytes and rates."""
+    import tempfile
+    from kinefuse.host.cli import main as cli_main
+    from kinefuse.host.link.frames import decode_file
+    n = int(round(seconds * rate_hz))
+    tmp = tempfile.TemporaryDirectory(prefix="kf-stream-") if out_dir is None else None
+    out = Path(tmp.name if tmp else out_dir) / f"stream_{rate_hz}hz_{n}.kfr"
+    try:
+        with HostUnit(system, filters=filters, max_samples=n, wait_connect=True) as unit:
+            t0 = time.monotonic()
+            args = ["record", "--port", f"pty:{unit.device}", "--out", str(out), "--force",
+                    "--duration", f"{seconds + record_margin_s:g}", "--start", "--json"]
+            if rate_hz != 1000:
+                args += ["--rate", str(rate_hz)]
+            import contextlib
+            import io
+            buf = io.StringIO()
+            with contextlib.redirect_stdout(buf):
+                code = cli_main(args)
+            wall = time.monotonic() - t0
+            if code != 0:
+                raise KinefuseError(f"kinefuse record failed with status {code}")
+        df = decode_file(out)
+        st = df.streams[0]
+        raw = st.arrays.get(MSG_RAW)
+        status = st.arrays.get(MSG_STATUS)
+        got = 0 if raw is None else len(raw)
+        res = {"samples_expected": n, "samples_received": got, "rate_hz": rate_hz,
+               "seconds": seconds, "file": str(out), "file_bytes": out.stat().st_size,
+               "rx_bytes": st.rx_bytes, "crc_errors": st.counters.crc_errors,
+               "bytes_skipped": st.counters.bytes_skipped, "wall_s": round(wall, 3)}
+        if raw is None:
+            res.update(lost=n, duplicates=0, wrong=0, timing_errors=0, ok=False)
+            return res
+        ctr = raw["sample_counter"].astype(np.int64)
+        uniq, counts = np.unique(ctr, return_counts=True)
+        res["duplicates"] = int((counts > 1).sum())
+        expected = np.arange(n)
+        res["lost"] = int(len(np.setdiff1d(expected, uniq)))
+        res["unexpected"] = int(len(np.setdiff1d(uniq, expected)))
+        ref = synthetic_samples(n, rate_hz)
+        order = np.argsort(ctr, kind="stable")
+        r = raw[order][: n]
+        k = r["sample_counter"].astype(np.int64)
+        ok_idx = k < n
+        k = k[ok_idx]
+        r = r[ok_idx]
+        fields = {"acc": ("acc_x", "acc_y", "acc_z"), "gyr": ("gyro_x", "gyro_y", "gyro_z"),
+                  "mag": ("mag_x", "mag_y", "mag_z")}
+        wrong = np.zeros(len(k), bool)
+        for key, cols in fields.items():
+            mine = np.stack([r[c].astype(np.int64) for c in cols], axis=1)
+            wrong |= np.any(mine != ref[key][k], axis=1)
+        wrong |= ((r["flags"] & 8) != 0) != ref["mag_valid"][k]
+        res["wrong"] = int(wrong.sum())
+        t = r["time_boot_us"].astype(np.int64)
+        res["timing_errors"] = int(np.sum((t - t[0]) != (ref["t_rel_us"][k] - ref["t_rel_us"][k[0]]))) if len(t) else 0
+        if status is not None and len(status):
+            last = status[-1]
+            res["unit_frames_dropped"] = int(last["frames_dropped"])
+            res["unit_samples_dropped"] = int(last["samples_dropped"])
+            res["unit_crc_errors"] = int(last["crc_errors"])
+        if len(t) > 1:
+            res["achieved_rate_hz"] = round((len(t) - 1) / ((t[-1] - t[0]) * 1e-6), 3)
+        res["ok"] = (res["lost"] == 0 and res["duplicates"] == 0 and res["wrong"] == 0
+                     and res["unexpected"] == 0 and res["timing_errors"] == 0 and res["crc_errors"] == 0
+                     and res.get("unit_frames_dropped", 0) == 0 and res.get("unit_samples_dropped", 0) == 0)
+        return res
+    finally:
+        if tmp is not None:
+            tmp.cleanup()

@@ -49,11 +49,16 @@ static uint8_t clip_flags(const kf_raw_sample *r)
 static void take_sensor_sample(kf_app *app, const kf_raw_sample *r)
 {
     kf_sample s;
-    uint32_t now32 = app->clock_last32;
-    uint32_t age = now32 - r->time_us;
+    uint64_t now = kf_app_time(app);
+    uint32_t ahead = r->time_us - app->clock_last32;   /* modulo 2^32 */
     memset(&s, 0, sizeof s);
-    /* 32-bit sample time -> 64-bit device time (the sample is not older than 2^31 us) */
-    s.time_us = ((int32_t)age >= 0 && (uint64_t)age <= app->clock_now) ? app->clock_now - age : app->clock_now;
+    /* 32-bit sample time -> 64-bit device time: within 2^31 us of now, before or after */
+    if ((int32_t)ahead >= 0) {
+        s.time_us = now + ahead;
+    } else {
+        uint32_t age = app->clock_last32 - r->time_us;
+        s.time_us = (uint64_t)age <= now ? now - age : 0u;
+    }
     memcpy(s.acc, r->acc, sizeof s.acc);
     memcpy(s.gyr, r->gyr, sizeof s.gyr);
     memcpy(s.mag, r->mag, sizeof s.mag);

@@ -54,7 +54,8 @@ static void update_calibrated_flag(kf_app *app)
     }
 }
 
-/* (Re)start the selected filter from its parameters; clears tare and status. */
+/* (Re)start the selected filter from its parameters; clears tare and status.  The next
+ * sample gets the nominal time step (as after a reset), whatever time preceded it. */
 void kf_config_reset_filter(kf_app *app)
 {
     float vec[KF_GEN_FILTER_PARAM_MAX + 1];
@@ -64,6 +65,7 @@ void kf_config_reset_filter(kf_app *app)
     app->out.q[0] = 1.0f;
     app->initialised = 0u;
     app->tared = 0u;
+    app->have_prev = 0u;
     if (f == NULL) {
         return;
     }

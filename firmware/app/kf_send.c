@@ -24,10 +24,15 @@ int kf_send_param_value(kf_app *app, int32_t index)
 {
     mavlink_message_t msg;
     const kf_param_desc *d = &kf_param_table[index];
+    char name[16];                                       /* the packer copies 16 bytes */
     float wire;
+    memset(name, 0, sizeof name);
+    for (uint32_t i = 0; i < sizeof name && d->name[i] != '\0'; i++) {
+        name[i] = d->name[i];
+    }
     memcpy(&wire, &app->values[index].u, sizeof wire);   /* bytewise: exact for integers */
     mavlink_msg_param_value_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg,
-                                        d->name, wire, d->type, (uint16_t)KF_PARAM_COUNT,
+                                        name, wire, d->type, (uint16_t)KF_PARAM_COUNT,
                                         (uint16_t)index);
     return kf_send(app, &msg);
 }
