@@ -294,4 +294,11 @@ def render_py(e: Expr, vector: bool = False, consts: dict | None = None) -> str:
 
 def render_py_assign(s: Assign, vector: bool = False, consts: dict | None = None,
                      indent: str = "") -> str:
-    return f"{indent}{s.name} = {render_py(s.expr, vector, consts)}"
+    e = s.expr
+    if not vector and isinstance(e, Call) and e.fn == "kf_sat":
+        # kf_sat inline (a call per saturation is the model's main cost); same semantics
+        v, lo, hi = (render_py(x, False, consts) for x in e.args)
+        return (f"{indent}{s.name} = {v}\n"
+                f"{indent}{s.name} = {lo} if {s.name} < {lo} else ({hi} if {s.name} > {hi} "
+                f"else {s.name})")
+    return f"{indent}{s.name} = {render_py(e, vector, consts)}"

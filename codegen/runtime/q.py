@@ -117,21 +117,17 @@ kf_rsqrt_dyn64 = kf_rsqrt_dyn
 
 def kf_rnorm_dyn(a, b, c, d, f, eps_m, eps_e):
     """kf_rnorm_dyn"""
-    x = [abs(a), abs(b), abs(c), abs(d)]
-    big = max(x)
+    a, b, c, d = abs(a), abs(b), abs(c), abs(d)
+    big = max(a, b, c, d)
     if big == 0:
         return (eps_m, eps_e)
-    if big >= (1 << 30):
-        x = [(v + 1) >> 1 for v in x]
+    if big >= 1073741824:            # 2^30: halve, rounded
+        a, b, c, d = (a + 1) >> 1, (b + 1) >> 1, (c + 1) >> 1, (d + 1) >> 1
         s = -1
-    else:
-        s = max(0, 29 - big.bit_length() + 1)
-        while (big << s) >= (1 << 30):
-            s -= 1
-        while (big << s) < (1 << 29):
-            s += 1
-        x = [v << s for v in x]
-    m, e = kf_rsqrt_dyn(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3], 2 * (f + s))
+    else:                            # the smallest s with big * 2^s >= 2^29 (the C loop)
+        s = 30 - big.bit_length()
+        a, b, c, d = a << s, b << s, c << s, d << s
+    m, e = kf_rsqrt_dyn(a * a + b * b + c * c + d * d, 2 * (f + s))
     if e < eps_e or (e == eps_e and m > eps_m):
         return (eps_m, eps_e)
     return (m, e)

@@ -51,14 +51,14 @@ def _bounds(a, b):
     return (a, b) if a <= b else (b, a)
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(v=st.integers(-(2 ** 63) + 1, 2 ** 63 - 1), lo=I32, hi=I32)
 def test_sat(c, v, lo, hi):
     lo, hi = _bounds(lo, hi)
     assert c[1].w_sat(v, lo, hi) == rt.kf_sat(v, lo, hi)
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(v=I62, k=st.integers(0, 70), lo=I32, hi=I32)
 def test_lsh_sat(c, v, k, lo, hi):
     lo, hi = _bounds(lo, hi)
@@ -66,7 +66,7 @@ def test_lsh_sat(c, v, k, lo, hi):
     assert rt.kf_lsh_sat(v, k, lo, hi) == max(lo, min(hi, v * 2 ** k))   # definition
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(n=I62, d=st.one_of(st.integers(-(2 ** 62), 2 ** 62), st.integers(-3, 3)), lo=I32, hi=I32)
 def test_div_rnd(c, n, d, lo, hi):
     lo, hi = _bounds(lo, hi)
@@ -79,7 +79,7 @@ def test_div_rnd(c, n, d, lo, hi):
         assert got == max(lo, min(hi, r))
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(n=st.integers(-5, 2 ** 63 - 1))
 def test_isqrt_rnd(c, n):
     got = c[1].w_isqrt_rnd(n)
@@ -88,7 +88,7 @@ def test_isqrt_rnd(c, n):
         assert (got - 0.5) ** 2 <= n <= (got + 0.5) ** 2 or abs(got - math.sqrt(n)) <= 0.5
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(y=st.integers(-10, 2 ** 62 - 1), fy=st.integers(-40, 90))
 def test_rsqrt_dyn(c, y, fy):
     ffi, lib = c
@@ -101,7 +101,7 @@ def test_rsqrt_dyn(c, y, fy):
     assert abs(m[0] * 2.0 ** -e[0] / exact - 1) < 2e-9
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(a=I32, m=st.integers(2 ** 30, 2 ** 31 - 1), e=st.integers(-40, 120),
        kb=st.integers(-60, 60), lo=I32, hi=I32)
 def test_mul_dyn(c, a, m, e, kb, lo, hi):
@@ -109,7 +109,7 @@ def test_mul_dyn(c, a, m, e, kb, lo, hi):
     assert c[1].w_mul_dyn(a, m, e, kb, lo, hi) == rt.kf_mul_dyn(a, (m, e), kb, lo, hi)
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(v=st.lists(st.one_of(I32, st.integers(-3, 3)), min_size=4, max_size=4),
        f=st.integers(-20, 60))
 def test_rnorm_dyn(c, v, f):
@@ -124,7 +124,7 @@ def test_rnorm_dyn(c, v, f):
         assert abs(m[0] * 2.0 ** -e[0] / exact - 1) < 1e-8
 
 
-@settings(max_examples=400, deadline=None)
+@settings(max_examples=150, deadline=None)
 @given(x=st.floats(width=32, allow_nan=True, allow_infinity=True), f=st.integers(-30, 60))
 def test_q_from_f32_matches_host_conversion(c, x, f):
     lo, hi = -(2 ** 31 - 1), 2 ** 31 - 1
