@@ -239,3 +239,11 @@ def test_non_finite_and_out_of_range_samples_are_rejected(clean_motion, events):
 def angle_between(a, b):
     d = abs(float(np.dot(a, b)) / (np.linalg.norm(a) * np.linalg.norm(b)))
     return math.degrees(2.0 * math.acos(min(1.0, d)))
+
+
+def test_cli_mode_parameter_maps_to_6d_and_9d():
+    rec = sim.simulate("slow_rotation", seed=6)
+    six = host_runner.run_filter(NAME, "f32", rec, host_runner.parse_params(["mode=6d"]))
+    nine = host_runner.run_filter(NAME, "f32", rec, host_runner.parse_params(["mode=9D"]))
+    assert np.array_equal(six.q, six.outputs["q6"]) and np.array_equal(nine.q, nine.outputs["q9"])
+    assert set(six.status) >= {"rest", "mag_disturbed", "rejected"}
