@@ -37,12 +37,12 @@ def _env_inputs(est, inputs, prm, k):
     return env
 
 
-def emulate(est, inputs: dict, params: dict, mode: str = "float64", fracs=None,
-            margin: float = 2.0):
+def emulate(est, inputs: dict, params: dict, mode: str = "float64", fracs=None, g=None):
     """Run the optimised graph over the samples with every real value rounded: mode
     'float64' (no rounding; also records max |value| per node), 'float32', or 'fixed'
-    (fracs: node id -> fractional bits; saturating int32).  Returns (outputs, node_max)."""
-    g = optimize(trace(est))
+    (fracs: node id -> fractional bits; saturating int32).  g: the optimised graph (traced
+    here when None).  Returns (outputs, node_max, g)."""
+    g = g if g is not None else optimize(trace(est))
     prm = est.resolve_params(params)
     n = len(inputs["dt"])
     state = {("state", v.name, i): val for v in est.state
@@ -102,14 +102,14 @@ def oracle_fracs(g, node_max: dict, margin: float = 2.0) -> dict:
 def transfer(fracs_from: dict, g, est, trial, params) -> dict:
     """Formats chosen on one trial applied to another (a faster gait): what a fixed set of
     measured bounds does when the motion changes."""
-    ref, _, _ = emulate(est, trial.inputs(), params, "float64")
-    q, _, _ = emulate(est, trial.inputs(), params, "fixed", fracs=fracs_from)
+    ref, _, _ = emulate(est, trial.inputs(), params, "float64", g=g)
+    q, _, _ = emulate(est, trial.inputs(), params, "fixed", fracs=fracs_from, g=g)
     e = np.abs(q["te"] - ref["te"])[1:]
     return {"max_torque_error_nm": float(np.nanmax(e)) if np.isfinite(e).any() else None,
             "resets": int(q["resets"][-1, 0])}
 
 
-def generator_attempt() -> str:
+def generator_attempt(g=None) -> str:
     """What the generator's fixed-point path says about the leg filter (its interval
     analysis), as one line."""
     from kinefuse.codegen.estimator import Interface
@@ -117,7 +117,8 @@ def generator_attempt() -> str:
     from kinefuse.codegen.fixed import FixedPlan
     est = LegEKF()
     try:
-        FixedPlan(optimize(trace(est)), Interface(est).leaf_ranges(), where=est.name)
+        FixedPlan(g if g is not None else optimize(trace(est)), Interface(est).leaf_ranges(),
+                  where=est.name)
     except ValueError as exc:          # RangeError
         return f"{type(exc).__name__}: {exc}"
     return "formats found"
@@ -135,12 +136,12 @@ def study(duration: float = 3.0, margins=(2.0, 16.0)) -> dict:
     est = LegEKF()
     inp, prm = tr.inputs(), cfg.params()
     ref, node_max, g = emulate(est, inp, prm, "float64")
-    f32, _, _ = emulate(est, inp, prm, "float32")
-    k = int(round(cfg.rate_hz))
+    f32, _, _ = emulate(est, inp, prm, "float32", g=g)
+    k = min(int(round(cfg.rate_hz)), len(tr.t) // 2)     # after the first second
     fast = T.leg_trial(T.LegConfig(duration=duration, stride_hz=1.4, seed=1))
     pvals = [node_max[r.node.id] for r in g.results if r.kind == "state" and r.name == "P"
              and r.node.id in node_max]
-    out = {"generator": generator_attempt(), "samples": len(tr.t),
+    out = {"generator": generator_attempt(g), "samples": len(tr.t),
            "float32_emulation_max_torque_error_nm": float(np.abs(f32["te"] - ref["te"])[1:].max()),
            "float64_torque_rmse_vs_truth_nm": [
                float(np.sqrt(np.mean((ref["te"][k:, i] - tr.te[k:, i]) ** 2))) for i in range(2)],
@@ -148,7 +149,7 @@ def study(duration: float = 3.0, margins=(2.0, 16.0)) -> dict:
            "oracle_fixed_point": []}
     for margin in margins:
         fr = oracle_fracs(g, node_max, margin)
-        q, _, _ = emulate(est, inp, prm, "fixed", fracs=fr)
+        q, _, _ = emulate(est, inp, prm, "fixed", fracs=fr, g=g)
         eq = np.abs(q["te"] - ref["te"])[1:]
         out["oracle_fixed_point"].append({
             "margin": margin, "fractional_bits_range": [min(fr.values()), max(fr.values())],

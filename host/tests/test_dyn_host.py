@@ -109,3 +109,21 @@ def test_fixed_point_emulator_reproduces_the_generated_float32_c():
     c = cg.run("leg", "f32", tr.inputs(), prm)
     for k in ("z", "zd", "te", "te_std"):
         assert np.array_equal(em[k].astype(np.float32), c[k].astype(np.float32)), k
+
+
+def test_leg_study_runs_end_to_end_on_a_short_trial():
+    r = B.leg_study(qemu=False, duration=1.5, fixed=False)
+    for k in ("hip_rmse_nm", "knee_rmse_nm", "lag_ms", "f32_vs_ref_max_nm"):
+        assert np.isfinite(r[k]), k
+    assert r["m4f_instructions_per_step"] is None
+    assert r["observability"]["gyroscopes_only"]["rank"] < 6
+    assert r["observability"]["all_sensors"]["observable"]
+    json.dumps(r)
+
+
+def test_fixed_point_study_runs_on_a_short_trial():
+    from kinefuse.host.dynamics.fixed_leg import study
+    r = study(0.3)
+    assert r["generator"].startswith("RangeError")
+    assert [o["margin"] for o in r["oracle_fixed_point"]] == [2.0, 16.0]
+    json.dumps(r)
