@@ -86,7 +86,7 @@ def variant_row(integrator: str, phi: str, sigma: str, sensitivity: str,
     row["build_s"] = time.perf_counter() - t0
     row["ops"] = sum(variants.lowered(est).g.op_counts().values())
     f32 = runner.run(trial.inputs(), prm)
-    wall = runner.time_run(trial.inputs(), prm, repeat=7)
+    wall = runner.time_run(trial.inputs(), prm, repeat=25)
     duration = trial.cfg.duration
     row["rt_factor_f32_c"] = duration / wall
     row["f32"] = pendulum_metrics(f32, trial)
