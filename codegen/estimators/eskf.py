@@ -4,37 +4,42 @@ Seed 002, Annex B (the indirect Kalman filter of MATLAB's imufilter/ahrsfilter):
 estimates the *error* of a nominal state, injects it after each update and resets it to zero.
 
 Nominal state: q (sensor -> East-North-Up), gyroscope bias b (rad/s, sensor frame), linear
-acceleration a (m/s^2, earth frame).  Error state (9): dtheta (rad, earth frame:
-R_true = exp([dtheta]x) R), db (rad/s), da (m/s^2).
+acceleration a (m/s^2, sensor frame, a Gauss-Markov process).  Error state (9): dtheta (rad,
+earth frame: R_true = exp([dtheta]x) R), db (rad/s), da (m/s^2).
 
-* prediction: q <- q (x) exp((w - b) dt) (fourth-order step quaternion), b <- b,
-  a <- c a with c = exp(-dt / tau_lin) ~ 1 - dt/tau_lin + (dt/tau_lin)^2/2;
+* prediction: q <- q (x) exp((w - b) dt) (fourth-order step quaternion with the coning term),
+  b <- b, a <- c a with c = exp(-dt / tau_lin) ~ 1 - dt/tau_lin + (dt/tau_lin)^2/2;
   P <- F P F^T + Q with F = [[I, -R dt, 0], [0, I, 0], [0, 0, c I]],
-  Q = diag(gyr_noise^2 dt, bias_rw^2 dt, lin_sigma^2 (1 - c^2));
-* accelerometer: in the earth frame, y = R f - (a + g e_z) = [v]x dtheta + da + n with
-  v = a + g e_z and n isotropic (acc_noise): three sequential scalar updates (equivalent to the
-  vector update for a diagonal noise, and no matrix inverse);
-* magnetometer (9D, optional): the heading disagreement of the horizontal field,
-  y = atan-free sine of it, H = e_z for dtheta only (the field's dip never tilts the estimate),
-  rejected when the field magnitude leaves the learnt reference by mag_th or the innovation
-  exceeds mag_gate standard deviations (rejection bounded by mag_reject_time);
-* covariance: Joseph form P' = (I - K h) P (I - K h)^T + K r K^T, written out for a scalar
-  measurement as P - K u - u^T K^T + (S K) K^T with u = h P, S = h P h^T + r, valid for any gain;
-  only the upper triangle is computed and stored (exactly symmetric); diagonals are floored and
-  every block is clamped to its declared range (positive definite in float32 and fixed point:
-  the tests check the eigenvalues on every BROAD sample);
+  Q = diag(gyr_noise^2 dt, bias_rw^2 dt, lin_sigma^2 (1 - c^2)) (+ the optional rate error);
+* accelerometer: rotated into the earth frame, y = R f - (R a + g e_z) = [g e_z]x dtheta + R da
+  + n (a in the sensor frame, so heading does not enter); n has the density acc_noise (one
+  sample: acc_noise^2 / dt), which with gyr_noise sets the tilt time constant
+  acc_noise / (g gyr_noise) (5.8 s by default); three sequential scalar updates (equivalent to
+  the vector update for a diagonal noise: no matrix inverse), each gated at acc_gate sigma;
+* magnetometer (9D, optional): the sine of the heading disagreement of the horizontal field,
+  H = e_z (dtheta_z only: the field's dip never tilts the estimate), noise density mag_noise;
+  rejected when the field magnitude leaves the learnt reference by mag_th or the disagreement
+  exceeds mag_gate sigma; the rejection is bounded by mag_reject_time (no lock-out);
+* covariance: Joseph form (I - K h) P (I - K h)^T + K r K^T for the gain actually applied,
+  computed in normalised variables g = h P / sqrt(S) (see `scalar_update`): every quantity has
+  the scale of sqrt(P), whatever S; only the upper triangle is computed and stored (exactly
+  symmetric); after each step diagonals are floored and every entry is clamped to its block's
+  range.  Positive definiteness in float32 and fixed point is checked by the tests (eigenvalues
+  of the 9x9 matrix from the generated models' state);
 * reset: dx is injected (q <- (1, dtheta/2) (x) q, renormalised; b += db; a += da) and set to 0;
   the reset Jacobian I - [dtheta/2]x is taken as I (dtheta is small: second order).
 
 Fixed point: the covariance is stored in six blocks with their own ranges, so that each gets a
-Q format matched to its physical scale (declared in `P_BLOCKS`):
-  P_tt  rad^2          [-0.1, 0.1]      (attitude sigma up to 18 deg)       -> Q-3.34
-  P_bb  (rad/s)^2      [-1.2e-3, 1.2e-3] (bias sigma up to 2 deg/s)         -> Q-9.40
-  P_aa  (m/s^2)^2      [-25, 25]        (linear acceleration up to 5 m/s^2) -> Q5.26
+Q format matched to its physical scale (`P_BLOCKS`; the generator derives the format):
+  P_tt  rad^2          [-0.1, 0.1]        (attitude sigma up to 18 deg)        -> Q-3.34
+  P_bb  (rad/s)^2      [-1.2e-3, 1.2e-3]  (bias sigma up to 2 deg/s)           -> Q-9.40
+  P_aa  (m/s^2)^2      [-25, 25]          (linear acceleration up to 5 m/s^2)  -> Q5.26
   cross blocks bounded by Cauchy-Schwarz from the diagonal ranges.
-A finer format for P_tt than Q1.30 is what keeps the per-sample process noise (about 1e-9 rad^2)
-tens of LSB above the resolution; a saturated value (heading without magnetometer) is reported
-at the ceiling.
+Why: one format for all 45 entries would have to cover 25 (m/s^2)^2 and resolve 1e-9 rad^2
+(the attitude process noise of one sample): impossible in 32 bits.  A finer P_tt than Q1.30 keeps
+that noise tens of LSB above the resolution; the per-term bounds sqrt(P_ii P_jj) of the update
+give every product a format of its own scale.  A value beyond a range saturates (the heading
+variance without a magnetometer is reported at the 18 deg ceiling).
 """
 from __future__ import annotations
 
