@@ -106,8 +106,9 @@ def _defines(system: str, tx_bytes: int, with_git: bool, filters=None) -> dict[s
     for n in wired_filters():
         if n not in keep:
             d[f"KF_WITHOUT_{n.upper()}"] = "1"
-    if with_git:
-        d["KF_GIT_HASH"] = f"0x{git_hash():08X}u"
+    h = git_hash() if with_git else 0
+    if h:
+        d["KF_GIT_HASH"] = f"0x{h:08X}u"
     return d
 
 

@@ -1,0 +1,217 @@
+"""``kinefuse flash``: program a unit with the kinefuse application through pyOCD or dfu-util.
+
+    kinefuse flash --mcu stm32f411re                       # build for m4f, flash the HEX with pyOCD
+    kinefuse flash --target m0 --mcu nrf51 --probe 0240000   # fixed-point build, one probe of several
+    kinefuse flash --tool dfu-util --address 0x08000000      # BIN through the USB DFU bootloader
+    kinefuse flash --image fw.hex --mcu stm32f411re --dry-run   # print the command only
+
+The image is the application built for ``--target`` (``m4f``: float32 filters, ``m0``:
+fixed-point filters; ``--filters`` builds a subset) unless ``--image`` names one.  pyOCD gets
+the HEX (addresses included, or the ELF), dfu-util the raw BIN at ``--address`` (default: the
+image's load address).  pyOCD needs the MCU's target type (``--mcu``; ``pyocd list --targets``):
+the generic Cortex-M target cannot program flash.  Note: the images built here are linked for
+the QEMU MPS2 board port (flash at 0x0); a real board needs its own port.
+"""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+from kinefuse.host.errors import KinefuseError
+
+TOOLS = ("pyocd", "dfu-util")
+INSTALL = {"pyocd": "pip install pyocd", "dfu-util": "apt-get install dfu-util"}
+# tool output -> one-line explanation (first match wins)
+KNOWN_ERRORS = (
+    (r"No connected debug probe matches unique ID '([^']*)'",
+     "no connected debug probe has the unique ID {0} (pyocd list --probes shows the connected ones)"),
+    (r"No (?:connected|available) debug probes?",
+     "no debug probe connected (pyOCD found none: connect the probe and the unit's SWD cable)"),
+    (r"Target type '?([\w.-]+)'? not recognized|not a recognized target type|Unknown target type",
+     "pyOCD does not know the MCU type given with --mcu (see `pyocd list --targets`)"),
+    (r"No DFU capable USB device available",
+     "no DFU device found (put the unit in its USB bootloader, check the cable and udev permissions)"),
+    (r"More than one DFU capable USB device found",
+     "several DFU devices found: choose one with --dfu-device VID:PID or --serial"),
+    (r"Cannot open DFU device|LIBUSB_ERROR_ACCESS",
+     "the DFU device cannot be opened (permissions: add a udev rule or run as a user in plugdev)"),
+)
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("flash", help="program a unit (pyOCD or dfu-util)",
+                              description=__doc__.split("\n\n")[0].split(": ", 1)[-1])
+    p.add_argument("--target", choices=("m4f", "m0"), default="m4f",
+                   help="build to flash when no --image: m4f (float32 filters) or m0 (fixed point); default m4f")
+    p.add_argument("--image", metavar="FILE", help="flash this .hex/.elf/.bin instead of building")
+    p.add_argument("--filters", metavar="A,B", help="build only these wired filters (smaller image)")
+    p.add_argument("--tool", choices=TOOLS, default="pyocd", help="flashing tool (default pyocd)")
+    p.add_argument("--mcu", metavar="TYPE", help="pyOCD target type of the unit's MCU (e.g. stm32f411re)")
+    p.add_argument("--probe", metavar="UID", help="pyOCD: debug probe unique ID (default: the only one)")
+    p.add_argument("--erase", choices=("auto", "chip", "sector"), help="pyOCD erase mode")
+    p.add_argument("--address", metavar="ADDR", help="dfu-util (or a .bin with pyOCD): load address, "
+                                                     "e.g. 0x08000000 (default: from the image)")
+    p.add_argument("--alt", type=int, default=0, metavar="N", help="dfu-util: alternate setting (default 0)")
+    p.add_argument("--dfu-device", metavar="VID:PID", help="dfu-util: USB vendor:product id")
+    p.add_argument("--serial", metavar="SERIAL", help="dfu-util: USB serial number of the device")
+    p.add_argument("--timeout", type=float, default=180.0, metavar="S", help="give up after S seconds (default 180)")
+    p.add_argument("--dry-run", action="store_true", help="print the command line, do not run it")
+    p.add_argument("--json", action="store_true", help="print one JSON object")
+    p.set_defaults(func=run)
+
+
+# ------------------------------------------------------------------------------------ image
+
+def _parse_address(text: str | None) -> int | None:
+    if text is None:
+        return None
+    try:
+        v = int(text, 0)
+    except ValueError:
+        raise KinefuseError(f"bad --address {text!r}: expected a number such as 0x08000000") from None
+    if not 0 <= v < 2 ** 32:
+        raise KinefuseError(f"--address {text} is outside the 32-bit address space")
+    return v
+
+
+def hex_load_address(path: Path) -> int:
+    """Lowest address of the data records of an Intel HEX file."""
+    base, low = 0, None
+    for n, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+        line = line.strip()
+        if not line:
+            continue
+        if not line.startswith(":") or len(line) < 11:
+            raise KinefuseError(f"{path}: line {n} is not an Intel HEX record")
+        count, addr, kind = int(line[1:3], 16), int(line[3:7], 16), int(line[7:9], 16)
+        if kind == 0 and count:
+            a = base + addr
+            low = a if low is None else min(low, a)
+        elif kind == 2:
+            base = int(line[9:13], 16) << 4
+        elif kind == 4:
+            base = int(line[9:13], 16) << 16
+    if low is None:
+        raise KinefuseError(f"{path} holds no data")
+    return low
+
+
+def _image(args) -> dict:
+    """The files to flash: {'hex', 'bin', 'elf', 'address', 'source'} (missing ones None)."""
+    if args.image:
+        p = Path(args.image)
+        if not p.is_file():
+            raise KinefuseError(f"image {p} not found")
+        suffix = p.suffix.lower()
+        if suffix not in (".hex", ".ihex", ".elf", ".axf", ".bin"):
+            raise KinefuseError(f"image {p}: expected .hex, .elf or .bin")
+        img = {"hex": None, "bin": None, "elf": None, "source": str(p)}
+        img[{".ihex": "hex", ".axf": "elf"}.get(suffix, suffix[1:])] = p
+        for k in ("hex", "bin", "elf"):       # siblings of a build (fw.elf, fw.hex, fw.bin)
+            if img[k] is None and p.with_suffix(f".{k}").is_file():
+                img[k] = p.with_suffix(f".{k}")
+        img["address"] = hex_load_address(img["hex"]) if img["hex"] else None
+        return img
+    from kinefuse.firmware.build import build_target
+    subset = [f.strip() for f in args.filters.split(",") if f.strip()] if args.filters else None
+    res = build_target(args.target, with_git=True, filters=subset)
+    return {"hex": res.hex, "bin": res.bin, "elf": res.elf, "address": hex_load_address(res.hex),
+            "source": f"build {args.target}" + (f" ({','.join(subset)})" if subset else ""),
+            "flash_bytes": res.size.flash, "ram_bytes": res.size.ram}
+
+
+# ---------------------------------------------------------------------------------- command
+
+def command_line(args, img: dict) -> list[str]:
+    """The exact command to run for this image and these options."""
+    address = _parse_address(args.address)
+    if args.tool == "pyocd":
+        if not args.mcu:
+            raise KinefuseError("name the unit's MCU with --mcu (its pyOCD target type, e.g. stm32f411re; "
+                                "`pyocd list --targets`)")
+        if not re.fullmatch(r"[A-Za-z0-9_.\-]+", args.mcu):
+            raise KinefuseError(f"bad --mcu {args.mcu!r}")
+        cmd = ["pyocd", "flash", "--no-wait", "-t", args.mcu]
+        if args.probe:
+            cmd += ["-u", args.probe]
+        if args.erase:
+            cmd += ["-e", args.erase]
+        if img["hex"] is not None:
+            return cmd + ["--format", "hex", str(img["hex"])]
+        if img["elf"] is not None:
+            return cmd + ["--format", "elf", str(img["elf"])]
+        if address is None:
+            raise KinefuseError("a .bin image needs --address (where it goes in flash)")
+        return cmd + ["--format", "bin", "-a", f"0x{address:08X}", str(img["bin"])]
+    # dfu-util: a raw binary at an address
+    if img["bin"] is None:
+        raise KinefuseError("dfu-util flashes a raw .bin: give --image FILE.bin (or a build, which has one)")
+    if address is None:
+        address = img.get("address")
+    if address is None:
+        raise KinefuseError("dfu-util needs the load address: --address 0x08000000 (or a .hex next to the .bin)")
+    if not 0 <= args.alt <= 255:
+        raise KinefuseError("--alt must be 0..255")
+    cmd = ["dfu-util", "-a", str(args.alt)]
+    if args.dfu_device:
+        if not re.fullmatch(r"[0-9a-fA-F]{4}:[0-9a-fA-F]{4}", args.dfu_device):
+            raise KinefuseError(f"bad --dfu-device {args.dfu_device!r}: expected VID:PID such as 0483:df11")
+        cmd += ["-d", args.dfu_device]
+    if args.serial:
+        cmd += ["-S", args.serial]
+    return cmd + ["-s", f"0x{address:08X}:leave", "-D", str(img["bin"])]
+
+
+def explain_failure(tool: str, output: str, code: int) -> str:
+    """One line for a failed run of the flashing tool."""
+    for pattern, text in KNOWN_ERRORS:
+        m = re.search(pattern, output)
+        if m:
+            return text.format(*m.groups())
+    lines = [ln.strip() for ln in output.splitlines() if ln.strip()]
+    errs = [ln for ln in lines if re.search(r"\berror\b|\bfail", ln, re.I)]
+    detail = (errs or lines or [f"exit status {code}"])[-1]
+    detail = re.sub(r"^\d+\s+[EWC]\s+", "", detail)     # pyOCD's log prefix
+    return f"{tool} failed: {detail[:200]}"
+
+
+def run(args) -> int:
+    from kinefuse.host.link.cli_util import console, print_json
+    con = console(args.json)
+    if args.timeout <= 0:
+        raise KinefuseError("--timeout must be positive")
+    if args.tool == "pyocd" and not args.mcu:
+        command_line(args, {"hex": None, "bin": None, "elf": None})   # the one-line error, before building
+    with con.status("building the application..." if not args.image else "checking the image..."):
+        img = _image(args)
+    cmd = command_line(args, img)
+    result = {"tool": args.tool, "command": cmd, "image": img["source"], "file": cmd[-1]}
+    for k in ("flash_bytes", "ram_bytes"):
+        if k in img:
+            result[k] = img[k]
+    if args.dry_run:
+        result["dry_run"] = True
+        if args.json:
+            print_json(result)
+        else:
+            con.print(" ".join(cmd), highlight=False, soft_wrap=True)
+        return 0
+    exe = shutil.which(cmd[0])
+    if exe is None:
+        raise KinefuseError(f"{cmd[0]} not found: {INSTALL[cmd[0]]}")
+    try:
+        with con.status(f"flashing with {args.tool}..."):
+            proc = subprocess.run([exe] + cmd[1:], capture_output=True, text=True, timeout=args.timeout)
+    except subprocess.TimeoutExpired:
+        raise KinefuseError(f"{args.tool} did not finish within {args.timeout:g} s (probe or bootloader stuck?)") from None
+    if proc.returncode != 0:
+        raise KinefuseError(explain_failure(args.tool, (proc.stdout or "") + "\n" + (proc.stderr or ""),
+                                            proc.returncode))
+    result["flashed"] = True
+    if args.json:
+        print_json(result)
+    else:
+        con.print(f"flashed {result['file']} with {args.tool}")
+    return 0
