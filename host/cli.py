@@ -31,6 +31,7 @@ COMMAND_MODULES = [
     "kinefuse.host.commands.params_cmd",
     "kinefuse.host.commands.ports_cmd",
     "kinefuse.host.commands.sil_cmd",
+    "kinefuse.host.commands.flash_cmd",
 ]
 # Modules providing `kinefuse bench <name>` sub-commands.
 BENCH_MODULES = [
