@@ -20,15 +20,20 @@ the magnetometer in any unit (uT in BROAD): only its direction and relative magn
 * magnetic disturbance: the field magnitude and dip (through a short noise low-pass) are compared
   with a learnt reference; a disagreement implausible for the heading variance is also rejected.
   A new field that stays consistent for mag_new_time while the sensor rotates becomes the
-  reference; rejection never lasts longer than mag_reject_time (then the current field is
-  adopted);
+  reference; no rejection (field tests or gate) lasts longer than mag_reject_time: then the
+  current field is adopted and an implausible heading is re-initialised from the reading.  The
+  heading correction is an exact rotation for any disagreement (half-way quaternion), so any
+  start converges;
 * gyroscope bias: at rest (gyroscope and accelerometer still for rest_time) a Kalman update
   towards the low-pass gyroscope, whatever the orientation; in motion the inclination correction
   and (9D) the accepted heading correction feed an integral term whose gain follows the bias
   variance, so every component converges once the orientation varies.
 
-One float32 (or fixed-point) update, no double-precision state.  Outputs q (9D or 6D by mode),
-q6 and q9 from the same run, and the status rest, mag_disturbed, rejected, bias.
+One float32 (or fixed-point) update, no double-precision state, no division by a sample's
+value that could be zero.  Outputs q (9D or 6D by mode), q6 and q9 from the same run, and the
+status rest, mag_disturbed, rejected, bias.  Parameters have physical units and one default set
+(VQF's published time constants and thresholds where the concept is the same).  Magnetometer
+work, the first-sample alignment and the two bias paths are conditional regions (cost only).
 """
 from __future__ import annotations
 
