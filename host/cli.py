@@ -46,6 +46,7 @@ BENCH_MODULES = [
     "kinefuse.host.bench.seed001",
     "kinefuse.host.bench.seed004",
     "kinefuse.host.bench.cost",
+    "kinefuse.firmware.app_bench",
 ]
 
 
