@@ -223,11 +223,6 @@ void triad_q_update(triad_q_state *s, const kf_imu_input_q *in, triad_q_output *
     const int32_t t197 = ((int32_t)(((((int64_t)0) * t165) + 536870912) >> 30));  /* triad.py:29 Q1.30 */
     const int32_t t198 = ((int32_t)(((((int64_t)t163) * 0) + 536870912) >> 30));  /* triad.py:29 Q1.30 */
     const int32_t t199 = kf_sat((((int64_t)t197) - ((int64_t)t198)), 0, 0);  /* triad.py:29 Q1.30 */
-    const int32_t t203 = ((int32_t)(((((int64_t)t193) * t193) + 536870912) >> 30));  /* triad.py:31 Q1.30 */
-    const int32_t t204 = ((int32_t)(((((int64_t)t196) * t196) + 536870912) >> 30));  /* triad.py:31 Q1.30 */
-    const int32_t t205 = ((int32_t)(((int64_t)t203) + ((int64_t)t204)));  /* triad.py:31 Q1.30 */
-    const int32_t t206 = ((int32_t)(((((int64_t)t199) * t199) + 536870912) >> 30));  /* triad.py:31 Q1.30 */
-    const int32_t t207 = ((int32_t)(((int64_t)t205) + ((int64_t)t206)));  /* triad.py:31 Q1.30 */
     const kf_dyn t208 = kf_rnorm_dyn(t193, t196, t199, 0, 30, 2048000000, 11);  /* triad.py:31 dynamic */
     const int32_t t209 = kf_mul_dyn(t193, t208, 0, -1073741824, 1073741824);  /* triad.py:31 Q1.30 */
     const int32_t t211 = kf_mul_dyn(t196, t208, 0, 0, 0);  /* triad.py:31 Q1.30 */
@@ -410,8 +405,8 @@ void triad_q_update(triad_q_state *s, const kf_imu_input_q *in, triad_q_output *
     const int32_t t396 = ((int32_t)(((((int64_t)t395) * t392) + 1073741824) >> 31));  /* triad.py:87 */
     const int32_t t397 = ((int32_t)((((((int64_t)t394) * 64) + ((int64_t)t396)) + 32) >> 6));  /* triad.py:87 Q1.30 */
     const int t398 = ((((int64_t)t372) * 2) < ((int64_t)1073741824));  /* triad.py:87 */
-    const int t399 = (((int64_t)t372) < ((int64_t)1610612736));  /* triad.py:87 */
-    const int t400 = (((int64_t)t372) < (((int64_t)1342177280) * 2));  /* triad.py:87 */
+    const int t399 = 1;  /* triad.py:87 */
+    const int t400 = 1;  /* triad.py:87 */
     const int32_t t401 = ((int32_t)(-((int64_t)t384)));  /* triad.py:87 Q0.31 */
     const int32_t t402 = ((int32_t)(-((int64_t)t397)));  /* triad.py:87 Q1.30 */
     const int32_t t403_0 = ((int32_t)((((int64_t)t401) + 1) >> 1));

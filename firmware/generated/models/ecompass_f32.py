@@ -332,6 +332,7 @@ def _run(inputs, params, state, n):
     A_q3 = O_q3.append
     O_rejected0 = []
     A_rejected0 = O_rejected0.append
+    V_degenerate0 = _bcast(t277, n)
     for k in range(n):
         t261 = L_t261[k]
         t264 = L_t264[k]
@@ -353,7 +354,7 @@ def _run(inputs, params, state, n):
         x_q0, x_q1, x_q2, x_q3, x_valid, x_rejected = t271, t272, t273, t274, t276, t275
     outputs = {}
     outputs['q'] = [O_q0, O_q1, O_q2, O_q3]
-    outputs['degenerate'] = [_bcast(t277, n)]
+    outputs['degenerate'] = [V_degenerate0]
     outputs['rejected'] = [O_rejected0]
     new_state = {}
     new_state['q'] = [x_q0, x_q1, x_q2, x_q3]

@@ -467,6 +467,7 @@ def _run(inputs, params, state, n):
     A_q3 = O_q3.append
     O_rejected0 = []
     A_rejected0 = O_rejected0.append
+    V_degenerate0 = _bcast(t420, n)
     for k in range(n):
         t353 = L_t353[k]
         t355 = L_t355[k]
@@ -488,7 +489,7 @@ def _run(inputs, params, state, n):
         x_q0, x_q1, x_q2, x_q3, x_valid, x_rejected = t414, t415, t416, t417, t419, t418
     outputs = {}
     outputs['q'] = [O_q0, O_q1, O_q2, O_q3]
-    outputs['degenerate'] = [_bcast(t420, n)]
+    outputs['degenerate'] = [V_degenerate0]
     outputs['rejected'] = [O_rejected0]
     new_state = {}
     new_state['q'] = [x_q0, x_q1, x_q2, x_q3]
