@@ -92,7 +92,7 @@ int kf_link_next(kf_link *l, mavlink_message_t *msg)
         msg->seq = b[4];
         msg->sysid = b[5];
         msg->compid = b[6];
-        msg->msgid = msgid;
+        msg->msgid = msgid & 0xFFFFFFu;   /* 24 bits by construction */
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), &b[1u + KF_HDR], plen);   /* rest stays zero */
         msg->checksum = crc;
         msg->ck[0] = (uint8_t)(crc & 0xFFu);

@@ -1,0 +1,70 @@
+"""Build hygiene of the application: generated bindings up to date, parameter names valid and
+unique, strict C99 with every warning an error, no heap, and the Cortex-M sizes."""
+from __future__ import annotations
+
+import shutil
+import subprocess
+
+import pytest
+
+from kinefuse.firmware import apptables
+from kinefuse.firmware import build as fb
+
+
+def test_generated_bindings_are_up_to_date():
+    stale = apptables.check()
+    assert stale == [], f"run `python -m kinefuse.firmware.build tables` ({stale})"
+
+
+def test_parameter_names():
+    import re
+    rows = apptables.parameter_table()
+    app = re.findall(r'KF_APP_ROW\("(\w+)"', (fb.APP_DIR / "kf_params.c").read_text())
+    names = app + [r["name"] for r in rows]
+    assert len(names) == len(set(names))
+    assert all(n.startswith("KF_") and len(n) <= 16 and re.fullmatch(r"[A-Z0-9_]+", n) for n in names)
+    # storage keys (FNV-1a of the name) must be unique too
+    def fnv(s):
+        h = 2166136261
+        for c in s.encode():
+            h = ((h ^ c) * 16777619) & 0xFFFFFFFF
+        return h
+    assert len({fnv(n) for n in names}) == len(names)
+    # every wired filter has both number systems generated
+    for e in apptables.read_list():
+        for system in ("f32", "q"):
+            assert (fb.GENERATED_DIR / f"{e.name}_{system}.c").is_file()
+
+
+def test_abbreviation_is_stable_and_bounded():
+    assert apptables.abbreviate("beta", 10) == "BETA"
+    assert apptables.abbreviate("bias_forget_time", 10) == "BIAS_FORGT"     # a readable override
+    # the automatic rule: trim the longest word (the last of equals) until it fits
+    assert apptables.abbreviate("a_very_long_parameter_name", 10) == "A_VE_L_P_N"
+    assert apptables.abbreviate("slerp_threshold_x", 12) == "SLERP_THRE_X"
+
+
+@pytest.mark.skipif(shutil.which("gcc") is None, reason="gcc not installed")
+@pytest.mark.parametrize("q", [0, 1])
+def test_strict_c99_without_warnings(q):
+    srcs = [str(p) for p in sorted(fb.APP_DIR.glob("*.c"))] + [str(p) for p in sorted(fb.HOST_PORT_DIR.glob("*.c"))]
+    cmd = ["gcc", "-std=c99", "-pedantic", "-Wall", "-Wextra", "-Wshadow", "-Wconversion", "-Wno-sign-conversion",
+           "-Werror", "-fsyntax-only", f"-DKF_NUMERIC_Q={q}", f"-I{fb.APP_DIR}", f"-I{fb.GENERATED_DIR}",
+           f"-I{fb.HOST_PORT_DIR}", "-isystem", str(fb.MAVLINK_DIR), *srcs]
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+
+
+@pytest.mark.qemu
+@pytest.mark.skipif(shutil.which("arm-none-eabi-gcc") is None, reason="arm-none-eabi-gcc not installed")
+@pytest.mark.parametrize("target", ["m4f", "m0"])
+def test_no_heap_and_size(target):
+    res = fb.build_target(target, filters=["madgwick", "flagship"])
+    syms = {name for name, *_ in res.symbols()}
+    nm = subprocess.run([shutil.which("arm-none-eabi-nm"), str(res.elf)], capture_output=True, text=True).stdout
+    linked = {line.split()[-1] for line in nm.splitlines() if line.strip()}
+    for f in ("malloc", "free", "calloc", "realloc", "_sbrk", "_malloc_r"):
+        assert f not in linked and f not in syms, f"{f} is linked into the {target} application"
+    # static RAM budget of a small wearable MCU (stack excluded)
+    assert res.size.ram < 16 * 1024, res.size
+    assert res.size.flash > 10_000
