@@ -66,12 +66,19 @@ def synth(q0, omega: np.ndarray, dt, field=None, mag_valid=True, g: float = G):
     dt = np.broadcast_to(np.asarray(dt, float), (n,)).copy()
     q = np.zeros((n, 4))
     cur = np.asarray(q0, float) / np.linalg.norm(q0)
-    steps = qexp(omega * dt[:, None])
-    for k in range(n):
-        if k > 0:
-            cur = qmul(cur, steps[k])
-            cur = cur / np.linalg.norm(cur)
-        q[k] = cur
+    steps = qexp(omega * dt[:, None]).tolist()
+    moving = np.any(omega != 0.0, axis=1).tolist()
+    w, x, y, z = cur.tolist()
+    rows = [] if any(moving[1:]) else [(w, x, y, z)] * n
+    for k in range(n if not rows else 0):          # plain floats: ~50x faster than numpy on 4-vectors
+        if k > 0 and moving[k]:
+            bw, bx, by, bz = steps[k]
+            w, x, y, z = (w * bw - x * bx - y * by - z * bz, w * bx + x * bw + y * bz - z * by,
+                          w * by - x * bz + y * bw + z * bx, w * bz + x * by - y * bx + z * bw)
+            s = (w * w + x * x + y * y + z * z) ** -0.5
+            w, x, y, z = w * s, x * s, y * s, z * s
+        rows.append((w, x, y, z))
+    q[:] = rows
     acc = rotate_to_sensor(q, [0.0, 0.0, g])
     f = field_enu() if field is None else np.asarray(field, float)
     mag = rotate_to_sensor(q, f)

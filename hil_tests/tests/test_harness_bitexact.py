@@ -1,0 +1,82 @@
+"""Every registered IMU filter, every loop of its number systems, identical in every bit.
+
+f32: f32 model == host C == generated C on QEMU Cortex-M4F.  q: q model == host C == QEMU M4F
+== QEMU M0.  CI runs a short case built from the simulator's scenario set (rest, constant
+rate, random rotation, translation, magnetic disturbance, gyro bias, jitter/drops, gyro
+saturation; a few seconds each) plus a short BROAD excerpt; ``kinefuse sil report`` runs the full
+set and full trials.  A mismatch names the first differing sample and its inputs.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from kinefuse.hil_tests.harness import compare, loops, scenarios
+from kinefuse.hil_tests.qemu import qemu_unavailable
+
+FILTERS = loops.imu_filters()
+CASES = [(n, s) for n in FILTERS for s in loops.systems(n)]
+needs_qemu = pytest.mark.skipif(qemu_unavailable() is not None, reason=str(qemu_unavailable()))
+
+
+def _concat(cases):
+    """One input series from several cases (each filter re-initialises from the first sample
+    only, so later cases continue from the previous state: jumps are part of the test)."""
+    return {k: np.concatenate([c.inputs[k] for c in cases]) for k in cases[0].inputs}
+
+
+@pytest.fixture(scope="module")
+def ci_inputs():
+    sims = scenarios.ci_cases(seconds=3.0)
+    broad = scenarios.broad_case(scenarios.default_broad_trial(), 2000, 2600)
+    return _concat(sims + [broad])
+
+
+def test_ci_case_exercises_the_filters(ci_inputs):
+    """The case has teeth: motion, rest, invalid magnetometer samples, saturation, jitter."""
+    gyr = np.linalg.norm(ci_inputs["gyr"], axis=1)
+    assert gyr.max() > 5.0 and (gyr < 0.05).sum() > 100
+    assert (~ci_inputs["mag_valid"]).sum() > 100 and np.ptp(ci_inputs["dt"]) > 0.001
+    assert len(ci_inputs["dt"]) > 2500
+
+
+@pytest.mark.parametrize("name,system", CASES)
+def test_model_and_host_c_identical(name, system, ci_inputs):
+    lps = loops.bitexact_loops(name, system, qemu=False)
+    outs = {lp: loops.run_loop(lp, name, ci_inputs) for lp in lps}
+    ms = compare.compare_all(outs, ci_inputs)
+    assert not ms, "\n".join(m.message() for m in ms)
+
+
+@pytest.mark.qemu
+@needs_qemu
+@pytest.mark.parametrize("name,system", CASES)
+def test_cortex_m_identical_to_model(name, system, ci_inputs):
+    lps = [f"{system}-model"] + [lp for lp in loops.BITEXACT[system] if lp.startswith("qemu-")]
+    outs = {lp: loops.run_loop(lp, name, ci_inputs) for lp in lps}
+    ms = compare.compare_all(outs, ci_inputs)
+    assert not ms, "\n".join(m.message() for m in ms)
+
+
+def test_comparison_reports_the_first_flipped_bit(ci_inputs):
+    """One flipped bit in one output of one sample is found, with that sample's inputs."""
+    out = loops.run_loop("f32-model", "madgwick", ci_inputs)
+    bad = {k: v.copy() for k, v in out.items()}
+    bad["q"].view(np.uint32)[1234, 2] ^= 1
+    m = compare.compare("f32-model", out, "altered", bad, ci_inputs)
+    assert m is not None and m.sample == 1234 and m.differing_samples == 1 and m.fields == ["q"]
+    assert m.inputs["gyr"] == ci_inputs["gyr"][1234].tolist()
+    assert "sample 1234" in m.message()
+    q = loops.run_loop("q-model", "madgwick", ci_inputs)
+    badq = {k: v.copy() for k, v in q.items()}
+    badq["rejected"][7, 0] += 1
+    assert compare.compare("a", q, "b", badq).sample == 7
+
+
+def test_minus_zero_and_nan_payloads():
+    """+0 and -0 differ; NaNs with different payloads are equal (x86 vs ARM default NaN)."""
+    a = {"x": np.array([[0.0, np.float32("nan")]], np.float32)}
+    b = {"x": np.array([[-0.0, np.float32("nan")]], np.float32)}
+    assert compare.compare("a", a, "b", b) is not None
+    nan2 = np.array([0x7FC00000, 0xFFC00001], np.uint32).view(np.float32)
+    assert compare.compare("a", {"x": nan2[:1, None]}, "b", {"x": nan2[1:, None]}) is None
