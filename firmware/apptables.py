@@ -41,11 +41,14 @@ SHORT_NAMES = {
     "bias_forget_time": "BIAS_FORGT", "tau_mag_noise": "TAU_MAG_N", "mag_sigma_gate": "MAG_SIG_GT",
     "tau_mag_ref": "TAU_MAG_RF", "mag_new_time": "MAG_NEW_T", "mag_new_min_rate": "MAG_NEW_MR",
     "mag_reject_time": "MAG_REJ_T", "mag_min_undisturbed": "MAG_MIN_UD",
+    "gyr_rate_err": "RATE_ERR", "init_sigma_att": "ATT_SIG0",
 }
 # calibration parameter prefixes: sensor -> MAVLink name part
 CALIB_SENSORS = {"acc": "ACC", "gyr": "GYR", "mag": "MAG"}
 # optional filter outputs the application reports as KF_ORIENTATION status bits
 OPTIONAL_OUTPUTS = ("rest", "mag_disturbed")
+# optional attitude error covariance (rad^2, earth frame, xx xy xz yy yz zz): KF_ORIENTATION.cov
+COV_OUTPUT = "cov_att"
 
 _ENTRY = re.compile(r"^\s*KF_FILTER_ENTRY\(\s*(\w+)\s*,\s*(\d+)\s*,\s*(\w+)\s*\)", re.M)
 
@@ -134,6 +137,8 @@ class FilterInfo:
     out_q_frac: int         # fractional bits of output q (q model)
     optional: tuple[str, ...]
     has_rejected: bool
+    cov_frac: int | None     # q model: fractional bits of cov_att; None: no covariance output
+    has_cov: bool
 
 
 def _param_names(prefix: str, params) -> list[str]:
@@ -172,11 +177,13 @@ def collect(entries: list[Entry]) -> tuple[list[FilterInfo], dict]:
         elif fmts != imu_formats:
             raise KinefuseError(f"{e.name}: IMU input formats differ from the other filters'")
         optional = tuple(o for o in OPTIONAL_OUTPUTS if o in outs and outs[o][1:] == (1, "bool"))
+        has_cov = COV_OUTPUT in outs and outs[COV_OUTPUT][1:] == (6, "real")
         filters.append(FilterInfo(
             e, list(est.params), _param_names(f"KF_{e.tag}_", est.params),
             {p.name: tuple(mq.FORMATS[f"param.{p.name}"]) for p in est.params},
             mq.FORMATS["output.q"][0], optional,
-            "rejected" in outs and outs["rejected"][1:] == (1, "int")))
+            "rejected" in outs and outs["rejected"][1:] == (1, "int"),
+            mq.FORMATS[f"output.{COV_OUTPUT}"][0] if has_cov else None, has_cov))
     # calibration: its outputs must be in exactly the formats of the filters' input record
     cf, cq = _model(CALIB, "f32"), _model(CALIB, "q")
     for fld in ("gyr", "acc", "mag", "dt"):
@@ -305,6 +312,14 @@ def render_source(filters: list[FilterInfo], calib: dict) -> str:
             L.append(f"    o->rejected = {'out.rejected' if f.has_rejected else '0'};")
             for opt in OPTIONAL_OUTPUTS:
                 L.append(f"    o->{opt} = {'out.' + opt if opt in f.optional else '0u'};")
+            if f.has_cov:
+                L.append("    for (int i = 0; i < 6; i++) {")
+                if sysname == "f32":
+                    L.append(f"        o->cov[i] = out.{COV_OUTPUT}[i];")
+                else:
+                    L.append(f"        o->cov[i] = (float)out.{COV_OUTPUT}[i] * {_hex(2.0 ** -f.cov_frac)}f;")
+                L.append("    }")
+            L.append(f"    o->has_cov = {'1u' if f.has_cov else '0u'};")
             L.append("}")
             L.append("#endif")
             L.append("")

@@ -220,6 +220,7 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
     frames = hil_frames(time_us, acc, gyr, mag_uT, mag_updated, key=key)
     n = len(frames)
     q = np.full((n, 4), np.nan, np.float32)
+    cov = np.zeros((n, 6), np.float32)
     counters = np.full(n, -1, np.int64)
     t_echo = np.zeros(n, np.int64)
     status = np.zeros(n, np.int64)
@@ -253,9 +254,10 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
                     got_raw += 1
                 else:
                     q[i] = np.array([m.q_w, m.q_x, m.q_y, m.q_z], np.float32)
+                    cov[i] = np.asarray(m.cov, np.float32)
                     status[i] = m.status
                     got_ori += 1
-    return {"q": q, "counter": counters, "time_us": t_echo, "status": status,
+    return {"q": q, "cov": cov, "counter": counters, "time_us": t_echo, "status": status,
             "acc": raw[:, 0:3], "gyr": raw[:, 3:6], "mag": raw[:, 6:9], "flags": flags}
 
 
@@ -341,14 +343,20 @@ def _filter_model(name: str, system: str, inputs: dict, n: int, params) -> dict:
     enc_p = {k: fr.encode_values("param", k, t, [fp[k]])[0] for k, _, t in fr.fields["param"]}
     enc_in = {k: np.asarray(inputs[k]).reshape(n, -1) for k, _, _ in fr.fields["input"]}
     out = fr.run_encoded(Encoded(enc_in, enc_p, n))
-    if system == "f32":
-        q = out["q"].astype(np.float32)
-        q_raw = None
-    else:
-        frac = fr.formats["output.q"][0]
-        q_raw = out["q"].astype(np.int64)
-        q = (q_raw.astype(np.float32) * np.float32(2.0 ** -frac)).astype(np.float32)
-    return {"q": q, "q_raw": q_raw, "rejected": out.get("rejected")}
+    res = {"rejected": out.get("rejected"), "q_raw": None}
+    for key, field in (("q", "q"), ("cov", "cov_att")):
+        if field not in out:
+            continue
+        if system == "f32":
+            res[key] = out[field].astype(np.float32)
+        else:
+            raw = out[field].astype(np.int64)
+            res[key] = (raw.astype(np.float32) * np.float32(2.0 ** -fr.formats[f"output.{field}"][0])).astype(np.float32)
+            if key == "q":
+                res["q_raw"] = raw
+    if "cov" not in res:                       # no covariance output: KF_ORIENTATION.cov all zero
+        res["cov"] = np.zeros((n, 6), np.float32)
+    return res
 
 
 # ------------------------------------------------------------------------ end-to-end stream

@@ -25,6 +25,8 @@ typedef struct {
     int32_t rejected;    /* the filter's running count of rejected samples (since its init) */
     uint8_t rest;        /* 1 while the filter reports rest (0 if it has no such output) */
     uint8_t mag_disturbed;  /* 1 while it rejects the magnetometer (0 if no such output) */
+    uint8_t has_cov;     /* 1 when the filter outputs cov (else cov is not written) */
+    float cov[6];        /* attitude error covariance, rad^2, earth frame: xx xy xz yy yz zz */
 } kf_filter_out;
 
 typedef struct {

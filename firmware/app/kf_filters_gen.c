@@ -51,6 +51,7 @@ static void complementary_update(void *state, const kf_imu_input *in, kf_filter_
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -83,6 +84,7 @@ static void madgwick_update(void *state, const kf_imu_input *in, kf_filter_out *
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -115,6 +117,7 @@ static void mahony_update(void *state, const kf_imu_input *in, kf_filter_out *o)
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -169,6 +172,56 @@ static void flagship_update(void *state, const kf_imu_input *in, kf_filter_out *
     o->rejected = out.rejected;
     o->rest = out.rest;
     o->mag_disturbed = out.mag_disturbed;
+    o->has_cov = 0u;
+}
+#endif
+
+#ifndef KF_WITHOUT_ESKF
+/* eskf: 16 parameters (KF_EK_MODE, KF_EK_GYR_NOISE, KF_EK_RATE_ERR, KF_EK_BIAS_RW, KF_EK_BIAS_SIG0, KF_EK_ACC_NOISE, KF_EK_LIN_SIGMA, KF_EK_TAU_LIN, KF_EK_ACC_GATE, KF_EK_MAG_NOISE, KF_EK_MAG_SIG_GT, KF_EK_MAG_TH, KF_EK_MAG_GATE, KF_EK_TAU_MAG_RF, KF_EK_MAG_REJ_T, KF_EK_ATT_SIG0) */
+static void eskf_build(const float *v, void *params)
+{
+    eskf_q_params *p = (eskf_q_params *)params;
+    eskf_q_default_params(p);
+    p->mode = q_param(v[0], 30, 0, 1073741824);
+    p->gyr_noise = q_param(v[1], 33, 149923, 1499226412);
+    p->gyr_rate_err = q_param(v[2], 33, 0, 1717986918);
+    p->bias_rw = q_param(v[3], 36, 0, 1199381129);
+    p->bias_sigma_init = q_param(v[4], 35, 5996906, 1199381129);
+    p->acc_noise = q_param(v[5], 27, 1342177, 1342177280);
+    p->lin_sigma = q_param(v[6], 28, 2684355, 1342177280);
+    p->tau_lin = q_param(v[7], 27, 671089, 1342177280);
+    p->acc_gate = q_param(v[8], 24, 16777216, 1677721600);
+    p->mag_noise = q_param(v[9], 30, 9370165, 1686629713);
+    p->mag_sigma_gate = q_param(v[10], 30, 1874033, 1686629713);
+    p->mag_th = q_param(v[11], 30, 10737418, 1073741824);
+    p->mag_gate = q_param(v[12], 24, 16777216, 1677721600);
+    p->tau_mag_ref = q_param(v[13], 21, 2097152, 1258291200);
+    p->mag_reject_time = q_param(v[14], 19, 524288, 1887436800);
+    p->init_sigma_att = q_param(v[15], 32, 7496132, 1349303770);
+}
+static int eskf_init(void *state, const void *params)
+{
+    return eskf_q_init((eskf_q_state *)state, (const eskf_q_params *)params);
+}
+static void eskf_set(void *state, const void *params)
+{
+    ((eskf_q_state *)state)->params = *(const eskf_q_params *)params;
+}
+static void eskf_update(void *state, const kf_imu_input *in, kf_filter_out *o)
+{
+    eskf_q_output out;
+    eskf_q_update((eskf_q_state *)state, in, &out);
+    for (int i = 0; i < 4; i++) {
+        o->q[i] = (float)out.q[i] * 0x1p-30f;  /* exact scaling */
+        o->q_raw[i] = out.q[i];
+    }
+    o->rejected = out.rejected;
+    o->rest = 0u;
+    o->mag_disturbed = out.mag_disturbed;
+    for (int i = 0; i < 6; i++) {
+        o->cov[i] = (float)out.cov_att[i] * 0x1p-34f;
+    }
+    o->has_cov = 1u;
 }
 #endif
 
@@ -199,6 +252,7 @@ static void ecompass_update(void *state, const kf_imu_input *in, kf_filter_out *
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -231,6 +285,7 @@ static void triad_update(void *state, const kf_imu_input *in, kf_filter_out *o)
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -267,6 +322,7 @@ static void vac_update(void *state, const kf_imu_input *in, kf_filter_out *o)
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -301,6 +357,7 @@ static void vak_update(void *state, const kf_imu_input *in, kf_filter_out *o)
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -333,6 +390,7 @@ static void guo_update(void *state, const kf_imu_input *in, kf_filter_out *o)
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -357,30 +415,35 @@ const kf_filter_ops kf_gen_filters[KF_GEN_FILTER_COUNT] = {
 #else
     {"flagship", 5u, 9u, 25u, NULL, NULL, NULL, NULL},
 #endif
-#ifndef KF_WITHOUT_ECOMPASS
-    {"ecompass", 8u, 34u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
+#ifndef KF_WITHOUT_ESKF
+    {"eskf", 6u, 34u, 16u, eskf_build, eskf_init, eskf_set, eskf_update},
 #else
-    {"ecompass", 8u, 34u, 1u, NULL, NULL, NULL, NULL},
+    {"eskf", 6u, 34u, 16u, NULL, NULL, NULL, NULL},
+#endif
+#ifndef KF_WITHOUT_ECOMPASS
+    {"ecompass", 8u, 50u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
+#else
+    {"ecompass", 8u, 50u, 1u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_TRIAD
-    {"triad", 9u, 35u, 3u, triad_build, triad_init, triad_set, triad_update},
+    {"triad", 9u, 51u, 3u, triad_build, triad_init, triad_set, triad_update},
 #else
-    {"triad", 9u, 35u, 3u, NULL, NULL, NULL, NULL},
+    {"triad", 9u, 51u, 3u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAC
-    {"vac", 10u, 38u, 7u, vac_build, vac_init, vac_set, vac_update},
+    {"vac", 10u, 54u, 7u, vac_build, vac_init, vac_set, vac_update},
 #else
-    {"vac", 10u, 38u, 7u, NULL, NULL, NULL, NULL},
+    {"vac", 10u, 54u, 7u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAK
-    {"vak", 11u, 45u, 5u, vak_build, vak_init, vak_set, vak_update},
+    {"vak", 11u, 61u, 5u, vak_build, vak_init, vak_set, vak_update},
 #else
-    {"vak", 11u, 45u, 5u, NULL, NULL, NULL, NULL},
+    {"vak", 11u, 61u, 5u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_GUO
-    {"guo", 12u, 50u, 3u, guo_build, guo_init, guo_set, guo_update},
+    {"guo", 12u, 66u, 3u, guo_build, guo_init, guo_set, guo_update},
 #else
-    {"guo", 12u, 50u, 3u, NULL, NULL, NULL, NULL},
+    {"guo", 12u, 66u, 3u, NULL, NULL, NULL, NULL},
 #endif
 };
 
@@ -495,6 +558,7 @@ static void complementary_update(void *state, const kf_imu_input *in, kf_filter_
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -527,6 +591,7 @@ static void madgwick_update(void *state, const kf_imu_input *in, kf_filter_out *
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -559,6 +624,7 @@ static void mahony_update(void *state, const kf_imu_input *in, kf_filter_out *o)
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -613,6 +679,56 @@ static void flagship_update(void *state, const kf_imu_input *in, kf_filter_out *
     o->rejected = out.rejected;
     o->rest = out.rest;
     o->mag_disturbed = out.mag_disturbed;
+    o->has_cov = 0u;
+}
+#endif
+
+#ifndef KF_WITHOUT_ESKF
+/* eskf: 16 parameters (KF_EK_MODE, KF_EK_GYR_NOISE, KF_EK_RATE_ERR, KF_EK_BIAS_RW, KF_EK_BIAS_SIG0, KF_EK_ACC_NOISE, KF_EK_LIN_SIGMA, KF_EK_TAU_LIN, KF_EK_ACC_GATE, KF_EK_MAG_NOISE, KF_EK_MAG_SIG_GT, KF_EK_MAG_TH, KF_EK_MAG_GATE, KF_EK_TAU_MAG_RF, KF_EK_MAG_REJ_T, KF_EK_ATT_SIG0) */
+static void eskf_build(const float *v, void *params)
+{
+    eskf_f32_params *p = (eskf_f32_params *)params;
+    eskf_f32_default_params(p);
+    p->mode = v[0];
+    p->gyr_noise = v[1];
+    p->gyr_rate_err = v[2];
+    p->bias_rw = v[3];
+    p->bias_sigma_init = v[4];
+    p->acc_noise = v[5];
+    p->lin_sigma = v[6];
+    p->tau_lin = v[7];
+    p->acc_gate = v[8];
+    p->mag_noise = v[9];
+    p->mag_sigma_gate = v[10];
+    p->mag_th = v[11];
+    p->mag_gate = v[12];
+    p->tau_mag_ref = v[13];
+    p->mag_reject_time = v[14];
+    p->init_sigma_att = v[15];
+}
+static int eskf_init(void *state, const void *params)
+{
+    return eskf_f32_init((eskf_f32_state *)state, (const eskf_f32_params *)params);
+}
+static void eskf_set(void *state, const void *params)
+{
+    ((eskf_f32_state *)state)->params = *(const eskf_f32_params *)params;
+}
+static void eskf_update(void *state, const kf_imu_input *in, kf_filter_out *o)
+{
+    eskf_f32_output out;
+    eskf_f32_update((eskf_f32_state *)state, in, &out);
+    for (int i = 0; i < 4; i++) {
+        o->q[i] = out.q[i];
+        o->q_raw[i] = 0;
+    }
+    o->rejected = out.rejected;
+    o->rest = 0u;
+    o->mag_disturbed = out.mag_disturbed;
+    for (int i = 0; i < 6; i++) {
+        o->cov[i] = out.cov_att[i];
+    }
+    o->has_cov = 1u;
 }
 #endif
 
@@ -643,6 +759,7 @@ static void ecompass_update(void *state, const kf_imu_input *in, kf_filter_out *
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -675,6 +792,7 @@ static void triad_update(void *state, const kf_imu_input *in, kf_filter_out *o)
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -711,6 +829,7 @@ static void vac_update(void *state, const kf_imu_input *in, kf_filter_out *o)
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -745,6 +864,7 @@ static void vak_update(void *state, const kf_imu_input *in, kf_filter_out *o)
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -777,6 +897,7 @@ static void guo_update(void *state, const kf_imu_input *in, kf_filter_out *o)
     o->rejected = out.rejected;
     o->rest = 0u;
     o->mag_disturbed = 0u;
+    o->has_cov = 0u;
 }
 #endif
 
@@ -801,30 +922,35 @@ const kf_filter_ops kf_gen_filters[KF_GEN_FILTER_COUNT] = {
 #else
     {"flagship", 5u, 9u, 25u, NULL, NULL, NULL, NULL},
 #endif
-#ifndef KF_WITHOUT_ECOMPASS
-    {"ecompass", 8u, 34u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
+#ifndef KF_WITHOUT_ESKF
+    {"eskf", 6u, 34u, 16u, eskf_build, eskf_init, eskf_set, eskf_update},
 #else
-    {"ecompass", 8u, 34u, 1u, NULL, NULL, NULL, NULL},
+    {"eskf", 6u, 34u, 16u, NULL, NULL, NULL, NULL},
+#endif
+#ifndef KF_WITHOUT_ECOMPASS
+    {"ecompass", 8u, 50u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
+#else
+    {"ecompass", 8u, 50u, 1u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_TRIAD
-    {"triad", 9u, 35u, 3u, triad_build, triad_init, triad_set, triad_update},
+    {"triad", 9u, 51u, 3u, triad_build, triad_init, triad_set, triad_update},
 #else
-    {"triad", 9u, 35u, 3u, NULL, NULL, NULL, NULL},
+    {"triad", 9u, 51u, 3u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAC
-    {"vac", 10u, 38u, 7u, vac_build, vac_init, vac_set, vac_update},
+    {"vac", 10u, 54u, 7u, vac_build, vac_init, vac_set, vac_update},
 #else
-    {"vac", 10u, 38u, 7u, NULL, NULL, NULL, NULL},
+    {"vac", 10u, 54u, 7u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAK
-    {"vak", 11u, 45u, 5u, vak_build, vak_init, vak_set, vak_update},
+    {"vak", 11u, 61u, 5u, vak_build, vak_init, vak_set, vak_update},
 #else
-    {"vak", 11u, 45u, 5u, NULL, NULL, NULL, NULL},
+    {"vak", 11u, 61u, 5u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_GUO
-    {"guo", 12u, 50u, 3u, guo_build, guo_init, guo_set, guo_update},
+    {"guo", 12u, 66u, 3u, guo_build, guo_init, guo_set, guo_update},
 #else
-    {"guo", 12u, 50u, 3u, NULL, NULL, NULL, NULL},
+    {"guo", 12u, 66u, 3u, NULL, NULL, NULL, NULL},
 #endif
 };
 

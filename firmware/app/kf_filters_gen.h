@@ -10,9 +10,9 @@
 
 #include <stdint.h>
 
-#define KF_GEN_FILTER_COUNT 9
+#define KF_GEN_FILTER_COUNT 10
 #define KF_GEN_CALIB_PARAM_COUNT 39
-#define KF_GEN_FILTER_PARAM_COUNT 53
+#define KF_GEN_FILTER_PARAM_COUNT 69
 #define KF_GEN_FILTER_PARAM_MAX 25
 
 /* A build may leave filters out with -DKF_WITHOUT_<NAME> (e.g. KF_WITHOUT_GUO): their rows
@@ -41,6 +41,9 @@
 #endif
 #ifndef KF_WITHOUT_FLAGSHIP
 #include "flagship_q.h"
+#endif
+#ifndef KF_WITHOUT_ESKF
+#include "eskf_q.h"
 #endif
 #ifndef KF_WITHOUT_ECOMPASS
 #include "ecompass_q.h"
@@ -75,6 +78,9 @@ typedef union {
 #ifndef KF_WITHOUT_FLAGSHIP
     flagship_q_state flagship;
 #endif
+#ifndef KF_WITHOUT_ESKF
+    eskf_q_state eskf;
+#endif
 #ifndef KF_WITHOUT_ECOMPASS
     ecompass_q_state ecompass;
 #endif
@@ -104,6 +110,9 @@ typedef union {
 #endif
 #ifndef KF_WITHOUT_FLAGSHIP
     flagship_q_params flagship;
+#endif
+#ifndef KF_WITHOUT_ESKF
+    eskf_q_params eskf;
 #endif
 #ifndef KF_WITHOUT_ECOMPASS
     ecompass_q_params ecompass;
@@ -135,6 +144,9 @@ typedef union {
 #endif
 #ifndef KF_WITHOUT_FLAGSHIP
 #include "flagship_f32.h"
+#endif
+#ifndef KF_WITHOUT_ESKF
+#include "eskf_f32.h"
 #endif
 #ifndef KF_WITHOUT_ECOMPASS
 #include "ecompass_f32.h"
@@ -169,6 +181,9 @@ typedef union {
 #ifndef KF_WITHOUT_FLAGSHIP
     flagship_f32_state flagship;
 #endif
+#ifndef KF_WITHOUT_ESKF
+    eskf_f32_state eskf;
+#endif
 #ifndef KF_WITHOUT_ECOMPASS
     ecompass_f32_state ecompass;
 #endif
@@ -198,6 +213,9 @@ typedef union {
 #endif
 #ifndef KF_WITHOUT_FLAGSHIP
     flagship_f32_params flagship;
+#endif
+#ifndef KF_WITHOUT_ESKF
+    eskf_f32_params eskf;
 #endif
 #ifndef KF_WITHOUT_ECOMPASS
     ecompass_f32_params ecompass;

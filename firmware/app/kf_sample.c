@@ -74,13 +74,39 @@ static void send_raw(kf_app *app, const kf_sample *s, uint32_t counter, uint8_t 
     }
 }
 
+/* the attitude error covariance in the (tared) earth frame: C' = Rz C Rz^T for the tare's
+ * rotation about z; all zero (= not provided, no bytes on the wire) without one */
+static void output_cov(const kf_app *app, float cov[6])
+{
+    const float *c = app->out.cov;
+    if (!app->out.has_cov) {
+        memset(cov, 0, 6 * sizeof cov[0]);
+        return;
+    }
+    if (!app->tared) {
+        memcpy(cov, c, 6 * sizeof cov[0]);
+        return;
+    }
+    float w = app->tare[0], z = app->tare[3];
+    float co = w * w - z * z;            /* cos and sin of the tare angle */
+    float si = 2.0f * w * z;
+    float xx = c[0], xy = c[1], xz = c[2], yy = c[3], yz = c[4], zz = c[5];
+    cov[0] = co * co * xx - 2.0f * co * si * xy + si * si * yy;
+    cov[1] = co * si * (xx - yy) + (co * co - si * si) * xy;
+    cov[2] = co * xz - si * yz;
+    cov[3] = si * si * xx + 2.0f * co * si * xy + co * co * yy;
+    cov[4] = si * xz + co * yz;
+    cov[5] = zz;
+}
+
 static void send_orientation(kf_app *app, uint64_t t, uint32_t counter)
 {
-    static const float no_cov[6] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
     mavlink_message_t msg;
     float q[4];
+    float cov[6];
     uint16_t st = 0u;
     output_quat(app, q);
+    output_cov(app, cov);
     st |= app->initialised ? KF_ORIENTATION_STATUS_INITIALISED : 0u;
     st |= app->out.rest ? KF_ORIENTATION_STATUS_AT_REST : 0u;
     st |= app->out.mag_disturbed ? KF_ORIENTATION_STATUS_MAG_DISTURBED : 0u;
@@ -91,7 +117,7 @@ static void send_orientation(kf_app *app, uint64_t t, uint32_t counter)
     mavlink_msg_kf_orientation_pack_status(
         kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg, t, counter, q[0], q[1], q[2], q[3],
         app->cnt.rejected_base + (uint32_t)app->out.rejected, st, KF_EARTH_FRAME_ENU,
-        kf_gen_filters[app->filter].id, kf_sysid(app), no_cov);
+        kf_gen_filters[app->filter].id, kf_sysid(app), cov);
     if (kf_send(app, &msg)) {
         app->rates.ori++;
         app->clipped = 0u;

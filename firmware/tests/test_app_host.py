@@ -18,7 +18,7 @@ from kinefuse.host.link.params import ParamClient, ParamError
 
 pytestmark = pytest.mark.skipif(shutil.which("gcc") is None, reason="gcc not installed")
 
-FILTER_IDS = {"complementary": 2, "madgwick": 3, "mahony": 4, "flagship": 5, "ecompass": 8,
+FILTER_IDS = {"complementary": 2, "madgwick": 3, "mahony": 4, "flagship": 5, "eskf": 6, "ecompass": 8,
               "triad": 9, "vac": 10, "vak": 11, "guo": 12}
 
 
@@ -67,7 +67,7 @@ def test_hil_orientation_is_bit_identical_to_the_models_q(hil_unit_q, broad_inpu
 
 
 @pytest.mark.parametrize("system, name", [("f32", "flagship"), ("f32", "madgwick"), ("q", "flagship"),
-                                          ("q", "vak")])
+                                          ("q", "vak"), ("f32", "eskf"), ("q", "eskf")])
 def test_hil_direct_mode_is_bit_identical(hil_unit_f32, hil_unit_q, broad_inputs, system, name):
     _hil_case(hil_unit_f32 if system == "f32" else hil_unit_q, system, name, broad_inputs, mode=1)
 
@@ -87,6 +87,10 @@ def _hil_case(unit, system, name, d, mode):
     assert np.array_equal(np.concatenate([got["acc"], got["gyr"], got["mag"]], 1), ref["counts"])
     same = np.all(got["q"].view(np.uint32) == ref["q"].view(np.uint32), axis=1)
     assert same.sum() == n, f"{n - same.sum()} of {n} samples differ, first at {np.argmin(same)}"
+    # the attitude covariance (KF_ORIENTATION extension) where the filter has one, else absent
+    assert np.array_equal(got["cov"].view(np.uint32), ref["cov"].view(np.uint32))
+    if name == "eskf":
+        assert np.all(got["cov"][:, 0] > 0)
     # and the unit did turn (a constant output would prove little)
     assert abs(float(np.dot(got["q"][0], got["q"][-1]))) < np.cos(np.radians(10) / 2)
 
@@ -234,3 +238,42 @@ def test_sanitizers_on_hostile_input():
 def struct_float(bits: int) -> float:
     import struct
     return struct.unpack("<f", struct.pack("<I", bits))[0]
+
+
+def test_heading_tare_rotates_quaternion_and_covariance(hil_unit_f32, broad_inputs):
+    """After MAV_CMD_KF_HEADING_TARE(h) the earth frame is turned about its vertical: the
+    sensor x axis has heading h and the ESKF covariance is rotated with the frame."""
+    d = broad_inputs
+    s = hil_unit_f32.session()
+    try:
+        _configure(s, KF_FILTER=FILTER_IDS["eskf"], KF_RATE_HZ=286, KF_HIL_MODE=0)
+        n = 300
+        hil_run(s, d["t"][:n], d["acc"][:n], d["gyr"][:n], d["mag"][:n], d["upd"][:n])
+        s.send("COMMAND_LONG", target_system=1, target_component=200, command=52501, param1=1.0)
+        ack = s.wait_for(lambda f: f.msgid == 77 and f.msg.command == 52501, timeout=3)
+        assert ack is not None and ack.msg.result == 0
+        got = hil_run(s, d["t"][n:n + 1], d["acc"][n:n + 1], d["gyr"][n:n + 1], d["mag"][n:n + 1], d["upd"][n:n + 1])
+    finally:
+        s.close()
+    ref = unit_model("eskf", "f32", d["t"][:n + 1], d["acc"][:n + 1], d["gyr"][:n + 1], d["mag"][:n + 1],
+                     d["upd"][:n + 1], rate_hz=286)
+    q_cmd = ref["q"][n - 1].astype(float)                      # the orientation when the command came
+    psi = 1.0 - np.arctan2(2 * (q_cmd[1] * q_cmd[2] + q_cmd[0] * q_cmd[3]), 1 - 2 * (q_cmd[2] ** 2 + q_cmd[3] ** 2))
+    c, s_ = np.cos(psi), np.sin(psi)
+    R = np.array([[c, -s_, 0], [s_, c, 0], [0, 0, 1]])
+    tare = np.array([np.cos(psi / 2), 0, 0, np.sin(psi / 2)])
+    w1, x1, y1, z1 = tare
+    w2, x2, y2, z2 = ref["q"][n].astype(float)
+    q_exp = np.array([w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2, w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+                      w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2, w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2])
+    qg = got["q"][0].astype(float)
+    assert np.allclose(qg * np.sign(qg[0]), q_exp * np.sign(q_exp[0]), atol=2e-6)
+    assert got["status"][0] & 64                                # HEADING_TARED
+    C = np.zeros((3, 3))
+    iu = np.triu_indices(3)
+    C[iu] = ref["cov"][n]
+    C = C + C.T - np.diag(np.diag(C))
+    exp = (R @ C @ R.T)[iu]
+    assert np.allclose(got["cov"][0], exp, rtol=1e-5, atol=1e-12)
+    # the rotation did change it: the xz, yz terms turn with the frame
+    assert not np.allclose(exp[[2, 4]], ref["cov"][n][[2, 4]], rtol=0.05, atol=0)
