@@ -50,9 +50,14 @@ def hil_unit_q():
 
 
 def _configure(session, **values):
+    """Set parameters, then restart the filter (setting KF_FILTER to its current value does
+    not restart it): every case starts from a fresh filter and the nominal first time step."""
     pc = ParamClient(session, 1)
     for k, v in values.items():
         pc.set(k, v)
+    session.send("COMMAND_LONG", target_system=1, target_component=200, command=52502)
+    ack = session.wait_for(lambda f: f.msgid == 77 and f.msg.command == 52502, timeout=3)
+    assert ack is not None and ack.msg.result == 0
     return pc
 
 
