@@ -140,7 +140,9 @@ def f32_hex(value: float) -> str:
         return ("-" if v < 0 else "") + "(1.0f / 0.0f)"
     if v == 0.0:
         return "-0.0f" if str(v).startswith("-") else "0.0f"
-    return v.hex() + "f"
+    mant, exp = v.hex().split("p")
+    mant = mant.rstrip("0").rstrip(".")       # 0x1.8000000000000 -> 0x1.8, 0x1.0000000000000 -> 0x1
+    return f"{mant}p{exp}f"
 
 
 def c_int(v: int) -> str:

@@ -23,21 +23,21 @@
 
 void complementary_f32_default_params(complementary_f32_params *p)
 {
-    p->tau_acc = 0x1.4000000000000p+2f;
-    p->tau_mag = 0x1.4000000000000p+3f;
+    p->tau_acc = 0x1.4p+2f;
+    p->tau_mag = 0x1.4p+3f;
     p->acc_gate = 0.0f;
 }
 
 int complementary_f32_init(complementary_f32_state *s, const complementary_f32_params *p)
 {
     int status = 0;
-    if (!((p->acc_gate >= 0.0f) && (p->acc_gate <= 0x1.9000000000000p+6f))) {
+    if (!((p->acc_gate >= 0.0f) && (p->acc_gate <= 0x1.9p+6f))) {
         status = -3;
     }
-    if (!((p->tau_mag >= 0x1.47ae140000000p-7f) && (p->tau_mag <= 0x1.f400000000000p+9f))) {
+    if (!((p->tau_mag >= 0x1.47ae14p-7f) && (p->tau_mag <= 0x1.f4p+9f))) {
         status = -2;
     }
-    if (!((p->tau_acc >= 0x1.47ae140000000p-7f) && (p->tau_acc <= 0x1.9000000000000p+6f))) {
+    if (!((p->tau_acc >= 0x1.47ae14p-7f) && (p->tau_acc <= 0x1.9p+6f))) {
         status = -1;
     }
     if (status != 0) {
@@ -45,7 +45,7 @@ int complementary_f32_init(complementary_f32_state *s, const complementary_f32_p
     } else {
         s->params = *p;
     }
-    s->q[0] = 0x1.0000000000000p+0f;
+    s->q[0] = 0x1p+0f;
     s->q[1] = 0.0f;
     s->q[2] = 0.0f;
     s->q[3] = 0.0f;
@@ -77,34 +77,34 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const int x_initialised = (s->initialised != 0u);
     const int32_t x_rejected = s->rejected;
     const float t21 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* common.py:62 */
-    const float t23 = ((t21 < 0x1.0000000000000p+0f) ? t21 : 0x1.0000000000000p+0f);  /* common.py:62 */
+    const float t23 = ((t21 < 0x1p+0f) ? t21 : 0x1p+0f);  /* common.py:62 */
     const float t24 = fabsf(u_gyr0);  /* common.py:50 */
-    const int t26 = (t24 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t26 = (t24 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t27 = fabsf(u_gyr1);  /* common.py:50 */
-    const int t28 = (t27 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t28 = (t27 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t29 = fabsf(u_gyr2);  /* common.py:50 */
-    const int t30 = (t29 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t30 = (t29 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t31 = (t26 && t28);  /* common.py:50 */
     const int t32 = (t31 && t30);  /* common.py:50 */
     const float t33 = fabsf(u_acc0);  /* common.py:50 */
-    const int t35 = (t33 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t35 = (t33 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t36 = fabsf(u_acc1);  /* common.py:50 */
-    const int t37 = (t36 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t37 = (t36 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t38 = fabsf(u_acc2);  /* common.py:50 */
-    const int t39 = (t38 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t39 = (t38 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t40 = (t35 && t37);  /* common.py:50 */
     const int t41 = (t40 && t39);  /* common.py:50 */
     const int t42 = (0.0f < u_dt);  /* common.py:64 */
-    const int t43 = (u_dt <= 0x1.0000000000000p+0f);  /* common.py:64 */
+    const int t43 = (u_dt <= 0x1p+0f);  /* common.py:64 */
     const int t44 = (t32 && t41);  /* common.py:63 */
     const int t45 = (t44 && t42);  /* common.py:63 */
     const int t46 = (t45 && t43);  /* common.py:63 */
     const float t47 = fabsf(u_mag0);  /* common.py:50 */
-    const int t49 = (t47 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t49 = (t47 <= 0x1.324p+12f);  /* common.py:50 */
     const float t50 = fabsf(u_mag1);  /* common.py:50 */
-    const int t51 = (t50 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t51 = (t50 <= 0x1.324p+12f);  /* common.py:50 */
     const float t52 = fabsf(u_mag2);  /* common.py:50 */
-    const int t53 = (t52 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t53 = (t52 <= 0x1.324p+12f);  /* common.py:50 */
     const int t54 = (t49 && t51);  /* common.py:50 */
     const int t55 = (t54 && t53);  /* common.py:50 */
     const int t56 = (t46 && u_mag_valid);  /* common.py:67 */
@@ -142,10 +142,10 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t88 = (t86 - t87);  /* common.py:172 */
     const float t89 = (x_q3 * 0.0f);  /* common.py:172 */
     const float t90 = (t88 + t89);  /* common.py:172 */
-    const float t92 = (t69 * 0x1.0000000000000p-1f);  /* common.py:172 */
-    const float t93 = (t76 * 0x1.0000000000000p-1f);  /* common.py:172 */
-    const float t94 = (t83 * 0x1.0000000000000p-1f);  /* common.py:172 */
-    const float t95 = (t90 * 0x1.0000000000000p-1f);  /* common.py:172 */
+    const float t92 = (t69 * 0x1p-1f);  /* common.py:172 */
+    const float t93 = (t76 * 0x1p-1f);  /* common.py:172 */
+    const float t94 = (t83 * 0x1p-1f);  /* common.py:172 */
+    const float t95 = (t90 * 0x1p-1f);  /* common.py:172 */
     const float t96 = (t92 * t23);  /* common.py:173 */
     const float t97 = (t93 * t23);  /* common.py:173 */
     const float t98 = (t94 * t23);  /* common.py:173 */
@@ -161,9 +161,9 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t108 = (t106 + t107);  /* common.py:173 */
     const float t109 = (t103 * t103);  /* common.py:173 */
     const float t110 = (t108 + t109);  /* common.py:173 */
-    const float t111_m = ((0x1.0c6f7a0000000p-20f < t110) ? t110 : 0x1.0c6f7a0000000p-20f);  /* common.py:173 */
+    const float t111_m = ((0x1.0c6f7ap-20f < t110) ? t110 : 0x1.0c6f7ap-20f);  /* common.py:173 */
     const float t111_s = sqrtf(t111_m);
-    const float t111 = (0x1.0000000000000p+0f / t111_s);
+    const float t111 = (0x1p+0f / t111_s);
     const float t112 = (t100 * t111);  /* common.py:173 */
     const float t114 = (t101 * t111);  /* common.py:173 */
     const float t116 = (t102 * t111);  /* common.py:173 */
@@ -173,22 +173,22 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t122 = (t120 + t121);  /* complementary.py:45 */
     const float t123 = (u_acc2 * u_acc2);  /* complementary.py:45 */
     const float t124 = (t122 + t123);  /* complementary.py:45 */
-    const float t125_m = ((0x1.0c6f7a0000000p-20f < t124) ? t124 : 0x1.0c6f7a0000000p-20f);  /* complementary.py:45 */
+    const float t125_m = ((0x1.0c6f7ap-20f < t124) ? t124 : 0x1.0c6f7ap-20f);  /* complementary.py:45 */
     const float t125_s = sqrtf(t125_m);
-    const float t125 = (0x1.0000000000000p+0f / t125_s);
+    const float t125 = (0x1p+0f / t125_s);
     const float t126 = (u_acc0 * t125);  /* complementary.py:45 */
     const float t128 = (u_acc1 * t125);  /* complementary.py:45 */
     const float t130 = (u_acc2 * t125);  /* complementary.py:45 */
-    const float t133 = (0x1.39eb860000000p+3f - p_acc_gate);  /* complementary.py:47 */
+    const float t133 = (0x1.39eb86p+3f - p_acc_gate);  /* complementary.py:47 */
     const float t134 = (t133 * t133);  /* complementary.py:47 */
-    const float t135 = (0x1.39eb860000000p+3f + p_acc_gate);  /* complementary.py:48 */
+    const float t135 = (0x1.39eb86p+3f + p_acc_gate);  /* complementary.py:48 */
     const float t136 = (t135 * t135);  /* complementary.py:48 */
-    const int t137 = (p_acc_gate < 0x1.39eb860000000p+3f);  /* complementary.py:49 */
+    const int t137 = (p_acc_gate < 0x1.39eb86p+3f);  /* complementary.py:49 */
     const float t138 = (t137 ? t134 : 0.0f);  /* complementary.py:49 */
     const int t139 = (t138 < t124);  /* complementary.py:49 */
     const int t140 = (t124 < t136);  /* complementary.py:49 */
     const int t141 = (t139 && t140);  /* complementary.py:49 */
-    const int t142 = (0x1.0000000000000p+0f <= t124);  /* complementary.py:50 */
+    const int t142 = (0x1p+0f <= t124);  /* complementary.py:50 */
     const int t143 = (p_acc_gate <= 0.0f);  /* complementary.py:50 */
     const int t144 = (t143 || t141);  /* complementary.py:50 */
     const int t145 = (t142 && t144);  /* complementary.py:50 */
@@ -197,15 +197,15 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t148 = (t116 * t130);  /* common.py:148 */
     const float t149 = (t118 * t128);  /* common.py:148 */
     const float t150 = (t148 - t149);  /* common.py:148 */
-    const float t152 = (0x1.0000000000000p+1f * t150);  /* common.py:148 */
+    const float t152 = (0x1p+1f * t150);  /* common.py:148 */
     const float t153 = (t118 * t126);  /* common.py:148 */
     const float t154 = (t114 * t130);  /* common.py:148 */
     const float t155 = (t153 - t154);  /* common.py:148 */
-    const float t156 = (0x1.0000000000000p+1f * t155);  /* common.py:148 */
+    const float t156 = (0x1p+1f * t155);  /* common.py:148 */
     const float t157 = (t114 * t128);  /* common.py:148 */
     const float t158 = (t116 * t126);  /* common.py:148 */
     const float t159 = (t157 - t158);  /* common.py:148 */
-    const float t160 = (0x1.0000000000000p+1f * t159);  /* common.py:148 */
+    const float t160 = (0x1p+1f * t159);  /* common.py:148 */
     const float t161 = (t112 * t152);  /* common.py:148 */
     const float t162 = (t126 + t161);  /* common.py:148 */
     const float t163 = (t116 * t160);  /* common.py:148 */
@@ -224,7 +224,7 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t176 = (t116 * t152);  /* common.py:148 */
     const float t177 = (t175 - t176);  /* common.py:148 */
     const float t178 = (t174 + t177);  /* common.py:148 */
-    const float t182 = (0x1.0000000000000p+0f + t178);  /* common.py:150 */
+    const float t182 = (0x1p+0f + t178);  /* common.py:150 */
     const float t183 = (-t166);  /* common.py:150 */
     const float t184 = (t182 * t182);  /* common.py:150 */
     const float t185 = (t172 * t172);  /* common.py:150 */
@@ -232,13 +232,13 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t187 = (t183 * t183);  /* common.py:150 */
     const float t188 = (t186 + t187);  /* common.py:150 */
     const float t189 = (t188 + 0.0f);  /* common.py:150 */
-    const float t190_m = ((0x1.1979980000000p-40f < t189) ? t189 : 0x1.1979980000000p-40f);  /* common.py:150 */
+    const float t190_m = ((0x1.197998p-40f < t189) ? t189 : 0x1.197998p-40f);  /* common.py:150 */
     const float t190_s = sqrtf(t190_m);
-    const float t190 = (0x1.0000000000000p+0f / t190_s);
+    const float t190 = (0x1p+0f / t190_s);
     const float t191 = (t182 * t190);  /* common.py:150 */
     const float t193 = (t172 * t190);  /* common.py:150 */
     const float t195 = (t183 * t190);  /* common.py:150 */
-    const float t197 = (0x1.0000000000000p+0f - t147);  /* common.py:151 */
+    const float t197 = (0x1p+0f - t147);  /* common.py:151 */
     const float t198 = (t147 * t191);  /* common.py:151 */
     const float t199 = (t197 + t198);  /* common.py:151 */
     const float t200 = (t147 * t193);  /* common.py:151 */
@@ -249,9 +249,9 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t205 = (t201 * t201);  /* common.py:151 */
     const float t206 = (t204 + t205);  /* common.py:151 */
     const float t207 = (t206 + 0.0f);  /* common.py:151 */
-    const float t208_m = ((0x1.1979980000000p-40f < t207) ? t207 : 0x1.1979980000000p-40f);  /* common.py:151 */
+    const float t208_m = ((0x1.197998p-40f < t207) ? t207 : 0x1.197998p-40f);  /* common.py:151 */
     const float t208_s = sqrtf(t208_m);
-    const float t208 = (0x1.0000000000000p+0f / t208_s);
+    const float t208 = (0x1p+0f / t208_s);
     const float t209 = (t199 * t208);  /* common.py:151 */
     const float t211 = (t200 * t208);  /* common.py:151 */
     const float t213 = (t201 * t208);  /* common.py:151 */
@@ -299,9 +299,9 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
         const float t251 = (t249 + t250);  /* complementary.py:55 */
         const float t252 = (u_mag2 * u_mag2);  /* complementary.py:55 */
         t253 = (t251 + t252);  /* complementary.py:55 */
-        const float t254_m = ((0x1.0c6f7a0000000p-20f < t253) ? t253 : 0x1.0c6f7a0000000p-20f);  /* complementary.py:55 */
+        const float t254_m = ((0x1.0c6f7ap-20f < t253) ? t253 : 0x1.0c6f7ap-20f);  /* complementary.py:55 */
         const float t254_s = sqrtf(t254_m);
-        const float t254 = (0x1.0000000000000p+0f / t254_s);
+        const float t254 = (0x1p+0f / t254_s);
         const float t255 = (u_mag0 * t254);  /* complementary.py:55 */
         const float t257 = (u_mag1 * t254);  /* complementary.py:55 */
         const float t259 = (u_mag2 * t254);  /* complementary.py:55 */
@@ -310,15 +310,15 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
         const float t263 = (t247 * t259);  /* common.py:162 */
         const float t264 = (t248 * t257);  /* common.py:162 */
         const float t265 = (t263 - t264);  /* common.py:162 */
-        const float t266 = (0x1.0000000000000p+1f * t265);  /* common.py:162 */
+        const float t266 = (0x1p+1f * t265);  /* common.py:162 */
         const float t267 = (t248 * t255);  /* common.py:162 */
         const float t268 = (t246 * t259);  /* common.py:162 */
         const float t269 = (t267 - t268);  /* common.py:162 */
-        const float t270 = (0x1.0000000000000p+1f * t269);  /* common.py:162 */
+        const float t270 = (0x1p+1f * t269);  /* common.py:162 */
         const float t271 = (t246 * t257);  /* common.py:162 */
         const float t272 = (t247 * t255);  /* common.py:162 */
         const float t273 = (t271 - t272);  /* common.py:162 */
-        const float t274 = (0x1.0000000000000p+1f * t273);  /* common.py:162 */
+        const float t274 = (0x1p+1f * t273);  /* common.py:162 */
         const float t275 = (t245 * t266);  /* common.py:162 */
         const float t276 = (t255 + t275);  /* common.py:162 */
         const float t277 = (t247 * t274);  /* common.py:162 */
@@ -341,12 +341,12 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
         const float t296 = (t295 + 0.0f);  /* common.py:165 */
         const float t297 = (t296 + 0.0f);  /* common.py:165 */
         const float t298 = (t297 + t289);  /* common.py:165 */
-        const float t299_m = ((0x1.1979980000000p-40f < t298) ? t298 : 0x1.1979980000000p-40f);  /* common.py:165 */
+        const float t299_m = ((0x1.197998p-40f < t298) ? t298 : 0x1.197998p-40f);  /* common.py:165 */
         const float t299_s = sqrtf(t299_m);
-        const float t299 = (0x1.0000000000000p+0f / t299_s);
+        const float t299 = (0x1p+0f / t299_s);
         const float t300 = (t294 * t299);  /* common.py:165 */
         const float t302 = (t280 * t299);  /* common.py:165 */
-        const float t304 = (0x1.0000000000000p+0f - t262);  /* common.py:166 */
+        const float t304 = (0x1p+0f - t262);  /* common.py:166 */
         const float t305 = (t262 * t300);  /* common.py:166 */
         const float t306 = (t304 + t305);  /* common.py:166 */
         const float t307 = (t262 * t302);  /* common.py:166 */
@@ -355,9 +355,9 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
         const float t310 = (t309 + 0.0f);  /* common.py:166 */
         const float t311 = (t307 * t307);  /* common.py:166 */
         const float t312 = (t310 + t311);  /* common.py:166 */
-        const float t313_m = ((0x1.1979980000000p-40f < t312) ? t312 : 0x1.1979980000000p-40f);  /* common.py:166 */
+        const float t313_m = ((0x1.197998p-40f < t312) ? t312 : 0x1.197998p-40f);  /* common.py:166 */
         const float t313_s = sqrtf(t313_m);
-        const float t313 = (0x1.0000000000000p+0f / t313_s);
+        const float t313 = (0x1p+0f / t313_s);
         const float t314 = (t306 * t313);  /* common.py:166 */
         const float t316 = (0.0f * t313);  /* common.py:166 */
         const float t318 = (t307 * t313);  /* common.py:166 */
@@ -386,7 +386,7 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
         const float t342 = (t318 * t245);  /* common.py:167 */
         t343 = (t341 + t342);  /* common.py:167 */
     }
-    const int t344 = (0x1.0000000000000p+0f <= t253);  /* complementary.py:58 */
+    const int t344 = (0x1p+0f <= t253);  /* complementary.py:58 */
     const int t345 = (t57 && t344);  /* complementary.py:58 */
     const float t346 = (t345 ? t326 : t245);  /* complementary.py:59 */
     const float t347 = (t345 ? t333 : t246);  /* complementary.py:59 */
@@ -401,7 +401,7 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     int t472 = 0;
     if (t351) {
         const float t352 = (t57 ? u_mag0 : 0.0f);  /* common.py:86 */
-        const float t353 = (t57 ? u_mag1 : 0x1.0000000000000p+0f);  /* common.py:86 */
+        const float t353 = (t57 ? u_mag1 : 0x1p+0f);  /* common.py:86 */
         const float t354 = (t57 ? u_mag2 : 0.0f);  /* common.py:86 */
         const float t355 = (t353 * t130);  /* common.py:87 */
         const float t356 = (t354 * t128);  /* common.py:87 */
@@ -422,15 +422,15 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
         const float t371 = (t369 + t370);  /* common.py:89 */
         const float t372 = (t354 * t354);  /* common.py:89 */
         const float t373 = (t371 + t372);  /* common.py:89 */
-        const float t375 = (0x1.a36e2e0000000p-14f * t373);  /* common.py:91 */
+        const float t375 = (0x1.a36e2ep-14f * t373);  /* common.py:91 */
         const int t376 = (t368 <= t375);  /* common.py:91 */
-        const float t377_m = ((0x1.1979980000000p-40f < t368) ? t368 : 0x1.1979980000000p-40f);  /* common.py:92 */
+        const float t377_m = ((0x1.197998p-40f < t368) ? t368 : 0x1.197998p-40f);  /* common.py:92 */
         const float t377_s = sqrtf(t377_m);
-        const float t377 = (0x1.0000000000000p+0f / t377_s);
+        const float t377 = (0x1p+0f / t377_s);
         const float t378 = (t357 * t377);  /* common.py:92 */
         const float t380 = (t360 * t377);  /* common.py:92 */
         const float t382 = (t363 * t377);  /* common.py:92 */
-        const float t384 = (t376 ? 0x1.0000000000000p+0f : t378);  /* common.py:93 */
+        const float t384 = (t376 ? 0x1p+0f : t378);  /* common.py:93 */
         const float t385 = (t376 ? 0.0f : t380);  /* common.py:93 */
         const float t386 = (t376 ? 0.0f : t382);  /* common.py:93 */
         const float t387 = (t128 * t386);  /* common.py:94 */
@@ -444,11 +444,11 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
         const float t395 = (t393 - t394);  /* common.py:94 */
         const float t396 = (t384 + t392);  /* common.py:106 */
         const float t397 = (t396 + t130);  /* common.py:106 */
-        const float t398 = (0x1.0000000000000p+0f + t397);  /* common.py:108 */
-        const float t399 = (0x1.0000000000000p+0f + t384);  /* common.py:109 */
+        const float t398 = (0x1p+0f + t397);  /* common.py:108 */
+        const float t399 = (0x1p+0f + t384);  /* common.py:109 */
         const float t400 = (t399 - t392);  /* common.py:109 */
         const float t401 = (t400 - t130);  /* common.py:109 */
-        const float t402 = (0x1.0000000000000p+0f - t384);  /* common.py:110 */
+        const float t402 = (0x1p+0f - t384);  /* common.py:110 */
         const float t403 = (t402 + t392);  /* common.py:110 */
         const float t404 = (t403 - t130);  /* common.py:110 */
         const float t405 = (t402 - t392);  /* common.py:111 */
@@ -473,12 +473,12 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
         const float t424 = (t420 ? t404 : t406);  /* common.py:116 */
         const float t425 = (t416 ? t401 : t424);  /* common.py:116 */
         const float t426 = (t411 ? t398 : t425);  /* common.py:116 */
-        const float t428 = ((0x1.0000000000000p-2f < t426) ? t426 : 0x1.0000000000000p-2f);  /* common.py:118 */
+        const float t428 = ((0x1p-2f < t426) ? t426 : 0x1p-2f);  /* common.py:118 */
         const float t429_s = sqrtf(t428);  /* common.py:118 */
-        const float t429 = (0x1.0000000000000p+0f / t429_s);
-        const float t430 = (0x1.0000000000000p-1f * t426);  /* common.py:119 */
+        const float t429 = (0x1p+0f / t429_s);
+        const float t430 = (0x1p-1f * t426);  /* common.py:119 */
         const float t431 = (t430 * t429);  /* common.py:119 */
-        const float t432 = (0x1.0000000000000p-1f * t429);  /* common.py:120 */
+        const float t432 = (0x1p-1f * t429);  /* common.py:120 */
         const float t433 = (t128 - t395);  /* common.py:121 */
         const float t434 = (t433 * t432);  /* common.py:121 */
         const float t435 = (t386 - t126);  /* common.py:122 */

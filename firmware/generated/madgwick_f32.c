@@ -23,21 +23,21 @@
 
 void madgwick_f32_default_params(madgwick_f32_params *p)
 {
-    p->beta = 0x1.4fdf3c0000000p-5f;
-    p->beta_start = 0x1.4fdf3c0000000p-5f;
+    p->beta = 0x1.4fdf3cp-5f;
+    p->beta_start = 0x1.4fdf3cp-5f;
     p->start_time = 0.0f;
 }
 
 int madgwick_f32_init(madgwick_f32_state *s, const madgwick_f32_params *p)
 {
     int status = 0;
-    if (!((p->start_time >= 0.0f) && (p->start_time <= 0x1.e000000000000p+5f))) {
+    if (!((p->start_time >= 0.0f) && (p->start_time <= 0x1.ep+5f))) {
         status = -3;
     }
-    if (!((p->beta_start >= 0.0f) && (p->beta_start <= 0x1.4000000000000p+4f))) {
+    if (!((p->beta_start >= 0.0f) && (p->beta_start <= 0x1.4p+4f))) {
         status = -2;
     }
-    if (!((p->beta >= 0.0f) && (p->beta <= 0x1.4000000000000p+2f))) {
+    if (!((p->beta >= 0.0f) && (p->beta <= 0x1.4p+2f))) {
         status = -1;
     }
     if (status != 0) {
@@ -45,7 +45,7 @@ int madgwick_f32_init(madgwick_f32_state *s, const madgwick_f32_params *p)
     } else {
         s->params = *p;
     }
-    s->q[0] = 0x1.0000000000000p+0f;
+    s->q[0] = 0x1p+0f;
     s->q[1] = 0.0f;
     s->q[2] = 0.0f;
     s->q[3] = 0.0f;
@@ -79,34 +79,34 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const float x_t_run = s->t_run;
     const int32_t x_rejected = s->rejected;
     const float t22 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* common.py:62 */
-    const float t24 = ((t22 < 0x1.0000000000000p+0f) ? t22 : 0x1.0000000000000p+0f);  /* common.py:62 */
+    const float t24 = ((t22 < 0x1p+0f) ? t22 : 0x1p+0f);  /* common.py:62 */
     const float t25 = fabsf(u_gyr0);  /* common.py:50 */
-    const int t27 = (t25 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t27 = (t25 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t28 = fabsf(u_gyr1);  /* common.py:50 */
-    const int t29 = (t28 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t29 = (t28 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t30 = fabsf(u_gyr2);  /* common.py:50 */
-    const int t31 = (t30 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t31 = (t30 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t32 = (t27 && t29);  /* common.py:50 */
     const int t33 = (t32 && t31);  /* common.py:50 */
     const float t34 = fabsf(u_acc0);  /* common.py:50 */
-    const int t36 = (t34 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t36 = (t34 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t37 = fabsf(u_acc1);  /* common.py:50 */
-    const int t38 = (t37 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t38 = (t37 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t39 = fabsf(u_acc2);  /* common.py:50 */
-    const int t40 = (t39 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t40 = (t39 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t41 = (t36 && t38);  /* common.py:50 */
     const int t42 = (t41 && t40);  /* common.py:50 */
     const int t43 = (0.0f < u_dt);  /* common.py:64 */
-    const int t44 = (u_dt <= 0x1.0000000000000p+0f);  /* common.py:64 */
+    const int t44 = (u_dt <= 0x1p+0f);  /* common.py:64 */
     const int t45 = (t33 && t42);  /* common.py:63 */
     const int t46 = (t45 && t43);  /* common.py:63 */
     const int t47 = (t46 && t44);  /* common.py:63 */
     const float t48 = fabsf(u_mag0);  /* common.py:50 */
-    const int t50 = (t48 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t50 = (t48 <= 0x1.324p+12f);  /* common.py:50 */
     const float t51 = fabsf(u_mag1);  /* common.py:50 */
-    const int t52 = (t51 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t52 = (t51 <= 0x1.324p+12f);  /* common.py:50 */
     const float t53 = fabsf(u_mag2);  /* common.py:50 */
-    const int t54 = (t53 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t54 = (t53 <= 0x1.324p+12f);  /* common.py:50 */
     const int t55 = (t50 && t52);  /* common.py:50 */
     const int t56 = (t55 && t54);  /* common.py:50 */
     const int t57 = (t47 && u_mag_valid);  /* common.py:67 */
@@ -121,50 +121,50 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const float t66 = (t64 + t65);  /* madgwick.py:65 */
     const float t67 = (u_acc2 * u_acc2);  /* madgwick.py:65 */
     const float t68 = (t66 + t67);  /* madgwick.py:65 */
-    const float t69_m = ((0x1.0c6f7a0000000p-20f < t68) ? t68 : 0x1.0c6f7a0000000p-20f);  /* madgwick.py:65 */
+    const float t69_m = ((0x1.0c6f7ap-20f < t68) ? t68 : 0x1.0c6f7ap-20f);  /* madgwick.py:65 */
     const float t69_s = sqrtf(t69_m);
-    const float t69 = (0x1.0000000000000p+0f / t69_s);
+    const float t69 = (0x1p+0f / t69_s);
     const float t70 = (u_acc0 * t69);  /* madgwick.py:65 */
     const float t72 = (u_acc1 * t69);  /* madgwick.py:65 */
     const float t74 = (u_acc2 * t69);  /* madgwick.py:65 */
     const float t76 = (x_q1 * x_q3);  /* madgwick.py:66 */
     const float t77 = (x_q0 * x_q2);  /* madgwick.py:66 */
     const float t78 = (t76 - t77);  /* madgwick.py:66 */
-    const float t80 = (0x1.0000000000000p+1f * t78);  /* madgwick.py:66 */
+    const float t80 = (0x1p+1f * t78);  /* madgwick.py:66 */
     const float t81 = (t80 - t70);  /* madgwick.py:66 */
     const float t82 = (x_q0 * x_q1);  /* madgwick.py:67 */
     const float t83 = (x_q2 * x_q3);  /* madgwick.py:67 */
     const float t84 = (t82 + t83);  /* madgwick.py:67 */
-    const float t85 = (0x1.0000000000000p+1f * t84);  /* madgwick.py:67 */
+    const float t85 = (0x1p+1f * t84);  /* madgwick.py:67 */
     const float t86 = (t85 - t72);  /* madgwick.py:67 */
     const float t87 = (x_q1 * x_q1);  /* madgwick.py:68 */
-    const float t89 = (0x1.0000000000000p-1f - t87);  /* madgwick.py:68 */
+    const float t89 = (0x1p-1f - t87);  /* madgwick.py:68 */
     const float t90 = (x_q2 * x_q2);  /* madgwick.py:68 */
     const float t91 = (t89 - t90);  /* madgwick.py:68 */
-    const float t92 = (0x1.0000000000000p+1f * t91);  /* madgwick.py:68 */
+    const float t92 = (0x1p+1f * t91);  /* madgwick.py:68 */
     const float t93 = (t92 - t74);  /* madgwick.py:68 */
-    const float t95 = (-0x1.0000000000000p+1f * x_q2);  /* madgwick.py:69 */
+    const float t95 = (-0x1p+1f * x_q2);  /* madgwick.py:69 */
     const float t96 = (t95 * t81);  /* madgwick.py:69 */
-    const float t97 = (0x1.0000000000000p+1f * x_q1);  /* madgwick.py:69 */
+    const float t97 = (0x1p+1f * x_q1);  /* madgwick.py:69 */
     const float t98 = (t97 * t86);  /* madgwick.py:69 */
     const float t99 = (t96 + t98);  /* madgwick.py:69 */
-    const float t100 = (0x1.0000000000000p+1f * x_q3);  /* madgwick.py:70 */
+    const float t100 = (0x1p+1f * x_q3);  /* madgwick.py:70 */
     const float t101 = (t100 * t81);  /* madgwick.py:70 */
-    const float t102 = (0x1.0000000000000p+1f * x_q0);  /* madgwick.py:70 */
+    const float t102 = (0x1p+1f * x_q0);  /* madgwick.py:70 */
     const float t103 = (t102 * t86);  /* madgwick.py:70 */
     const float t104 = (t101 + t103);  /* madgwick.py:70 */
-    const float t106 = (0x1.0000000000000p+2f * x_q1);  /* madgwick.py:70 */
+    const float t106 = (0x1p+2f * x_q1);  /* madgwick.py:70 */
     const float t107 = (t106 * t93);  /* madgwick.py:70 */
     const float t108 = (t104 - t107);  /* madgwick.py:70 */
-    const float t109 = (-0x1.0000000000000p+1f * x_q0);  /* madgwick.py:71 */
+    const float t109 = (-0x1p+1f * x_q0);  /* madgwick.py:71 */
     const float t110 = (t109 * t81);  /* madgwick.py:71 */
     const float t111 = (t100 * t86);  /* madgwick.py:71 */
     const float t112 = (t110 + t111);  /* madgwick.py:71 */
-    const float t113 = (0x1.0000000000000p+2f * x_q2);  /* madgwick.py:71 */
+    const float t113 = (0x1p+2f * x_q2);  /* madgwick.py:71 */
     const float t114 = (t113 * t93);  /* madgwick.py:71 */
     const float t115 = (t112 - t114);  /* madgwick.py:71 */
     const float t116 = (t97 * t81);  /* madgwick.py:72 */
-    const float t117 = (0x1.0000000000000p+1f * x_q2);  /* madgwick.py:72 */
+    const float t117 = (0x1p+1f * x_q2);  /* madgwick.py:72 */
     const float t118 = (t117 * t86);  /* madgwick.py:72 */
     const float t119 = (t116 + t118);  /* madgwick.py:72 */
     float t124 = 0.0f;
@@ -178,24 +178,24 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
         const float t122 = (t120 + t121);  /* madgwick.py:77 */
         const float t123 = (u_mag2 * u_mag2);  /* madgwick.py:77 */
         t124 = (t122 + t123);  /* madgwick.py:77 */
-        const float t125_m = ((0x1.0c6f7a0000000p-20f < t124) ? t124 : 0x1.0c6f7a0000000p-20f);  /* madgwick.py:77 */
+        const float t125_m = ((0x1.0c6f7ap-20f < t124) ? t124 : 0x1.0c6f7ap-20f);  /* madgwick.py:77 */
         const float t125_s = sqrtf(t125_m);
-        const float t125 = (0x1.0000000000000p+0f / t125_s);
+        const float t125 = (0x1p+0f / t125_s);
         const float t126 = (u_mag0 * t125);  /* madgwick.py:77 */
         const float t128 = (u_mag1 * t125);  /* madgwick.py:77 */
         const float t130 = (u_mag2 * t125);  /* madgwick.py:77 */
         const float t132 = (x_q2 * t130);  /* madgwick.py:78 */
         const float t133 = (x_q3 * t128);  /* madgwick.py:78 */
         const float t134 = (t132 - t133);  /* madgwick.py:78 */
-        const float t135 = (0x1.0000000000000p+1f * t134);  /* madgwick.py:78 */
+        const float t135 = (0x1p+1f * t134);  /* madgwick.py:78 */
         const float t136 = (x_q3 * t126);  /* madgwick.py:78 */
         const float t137 = (x_q1 * t130);  /* madgwick.py:78 */
         const float t138 = (t136 - t137);  /* madgwick.py:78 */
-        const float t139 = (0x1.0000000000000p+1f * t138);  /* madgwick.py:78 */
+        const float t139 = (0x1p+1f * t138);  /* madgwick.py:78 */
         const float t140 = (x_q1 * t128);  /* madgwick.py:78 */
         const float t141 = (x_q2 * t126);  /* madgwick.py:78 */
         const float t142 = (t140 - t141);  /* madgwick.py:78 */
-        const float t143 = (0x1.0000000000000p+1f * t142);  /* madgwick.py:78 */
+        const float t143 = (0x1p+1f * t142);  /* madgwick.py:78 */
         const float t144 = (x_q0 * t135);  /* madgwick.py:78 */
         const float t145 = (t126 + t144);  /* madgwick.py:78 */
         const float t146 = (x_q2 * t143);  /* madgwick.py:78 */
@@ -219,12 +219,12 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
         const float t164 = (t162 + t163);  /* madgwick.py:79 */
         const float t165 = ((0.0f < t164) ? t164 : 0.0f);  /* madgwick.py:79 */
         const float t166 = sqrtf(t165);  /* madgwick.py:79 */
-        const float t167 = (0x1.0000000000000p+1f * t166);  /* madgwick.py:81 */
-        const float t168 = (0x1.0000000000000p-1f - t90);  /* madgwick.py:81 */
+        const float t167 = (0x1p+1f * t166);  /* madgwick.py:81 */
+        const float t168 = (0x1p-1f - t90);  /* madgwick.py:81 */
         const float t169 = (x_q3 * x_q3);  /* madgwick.py:81 */
         const float t170 = (t168 - t169);  /* madgwick.py:81 */
         const float t171 = (t167 * t170);  /* madgwick.py:81 */
-        const float t172 = (0x1.0000000000000p+1f * t161);  /* madgwick.py:81 */
+        const float t172 = (0x1p+1f * t161);  /* madgwick.py:81 */
         const float t173 = (t172 * t78);  /* madgwick.py:81 */
         const float t174 = (t171 + t173);  /* madgwick.py:81 */
         const float t175 = (t174 - t126);  /* madgwick.py:81 */
@@ -240,10 +240,10 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
         const float t185 = (t172 * t91);  /* madgwick.py:83 */
         const float t186 = (t184 + t185);  /* madgwick.py:83 */
         const float t187 = (t186 - t130);  /* madgwick.py:83 */
-        const float t188 = (-0x1.0000000000000p+1f * t161);  /* madgwick.py:84 */
+        const float t188 = (-0x1p+1f * t161);  /* madgwick.py:84 */
         const float t189 = (t188 * x_q2);  /* madgwick.py:84 */
         const float t190 = (t189 * t175);  /* madgwick.py:84 */
-        const float t191 = (-0x1.0000000000000p+1f * t166);  /* madgwick.py:84 */
+        const float t191 = (-0x1p+1f * t166);  /* madgwick.py:84 */
         const float t192 = (t191 * x_q3);  /* madgwick.py:84 */
         const float t193 = (t172 * x_q1);  /* madgwick.py:84 */
         const float t194 = (t192 + t193);  /* madgwick.py:84 */
@@ -259,12 +259,12 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
         const float t204 = (t203 * t182);  /* madgwick.py:86 */
         const float t205 = (t201 + t204);  /* madgwick.py:86 */
         const float t206 = (t167 * x_q3);  /* madgwick.py:87 */
-        const float t207 = (0x1.0000000000000p+2f * t161);  /* madgwick.py:87 */
+        const float t207 = (0x1p+2f * t161);  /* madgwick.py:87 */
         const float t208 = (t207 * x_q1);  /* madgwick.py:87 */
         const float t209 = (t206 - t208);  /* madgwick.py:87 */
         const float t210 = (t209 * t187);  /* madgwick.py:87 */
         t211 = (t205 + t210);  /* madgwick.py:86 */
-        const float t213 = (-0x1.0000000000000p+2f * t166);  /* madgwick.py:88 */
+        const float t213 = (-0x1p+2f * t166);  /* madgwick.py:88 */
         const float t214 = (t213 * x_q2);  /* madgwick.py:88 */
         const float t215 = (t214 - t202);  /* madgwick.py:88 */
         const float t216 = (t215 * t175);  /* madgwick.py:88 */
@@ -288,8 +288,8 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
         const float t234 = (t217 * t187);  /* madgwick.py:91 */
         t235 = (t233 + t234);  /* madgwick.py:90 */
     }
-    const int t236 = (0x1.0000000000000p+0f <= t68);  /* madgwick.py:93 */
-    const int t237 = (0x1.0000000000000p+0f <= t124);  /* madgwick.py:94 */
+    const int t236 = (0x1p+0f <= t68);  /* madgwick.py:93 */
+    const int t237 = (0x1p+0f <= t124);  /* madgwick.py:94 */
     const int t238 = (t58 && t237);  /* madgwick.py:94 */
     const float t239 = (t236 ? t99 : 0.0f);  /* madgwick.py:96 */
     const float t240 = (t236 ? t108 : 0.0f);  /* madgwick.py:96 */
@@ -310,9 +310,9 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const float t255 = (t253 + t254);  /* madgwick.py:97 */
     const float t256 = (t250 * t250);  /* madgwick.py:97 */
     const float t257 = (t255 + t256);  /* madgwick.py:97 */
-    const float t258_m = ((0x1.1979980000000p-40f < t257) ? t257 : 0x1.1979980000000p-40f);  /* madgwick.py:97 */
+    const float t258_m = ((0x1.197998p-40f < t257) ? t257 : 0x1.197998p-40f);  /* madgwick.py:97 */
     const float t258_s = sqrtf(t258_m);
-    const float t258 = (0x1.0000000000000p+0f / t258_s);
+    const float t258 = (0x1p+0f / t258_s);
     const float t259 = (t247 * t258);  /* madgwick.py:97 */
     const float t261 = (t248 * t258);  /* madgwick.py:97 */
     const float t263 = (t249 * t258);  /* madgwick.py:97 */
@@ -347,10 +347,10 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const float t294 = (t292 - t293);  /* madgwick.py:101 */
     const float t295 = (x_q3 * 0.0f);  /* madgwick.py:101 */
     const float t296 = (t294 + t295);  /* madgwick.py:101 */
-    const float t297 = (t275 * 0x1.0000000000000p-1f);  /* madgwick.py:101 */
-    const float t298 = (t282 * 0x1.0000000000000p-1f);  /* madgwick.py:101 */
-    const float t299 = (t289 * 0x1.0000000000000p-1f);  /* madgwick.py:101 */
-    const float t300 = (t296 * 0x1.0000000000000p-1f);  /* madgwick.py:101 */
+    const float t297 = (t275 * 0x1p-1f);  /* madgwick.py:101 */
+    const float t298 = (t282 * 0x1p-1f);  /* madgwick.py:101 */
+    const float t299 = (t289 * 0x1p-1f);  /* madgwick.py:101 */
+    const float t300 = (t296 * 0x1p-1f);  /* madgwick.py:101 */
     const float t301 = (t259 * t268);  /* madgwick.py:101 */
     const float t302 = (t261 * t268);  /* madgwick.py:101 */
     const float t303 = (t263 * t268);  /* madgwick.py:101 */
@@ -374,9 +374,9 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const float t321 = (t319 + t320);  /* madgwick.py:102 */
     const float t322 = (t316 * t316);  /* madgwick.py:102 */
     const float t323 = (t321 + t322);  /* madgwick.py:102 */
-    const float t324_m = ((0x1.0c6f7a0000000p-20f < t323) ? t323 : 0x1.0c6f7a0000000p-20f);  /* madgwick.py:102 */
+    const float t324_m = ((0x1.0c6f7ap-20f < t323) ? t323 : 0x1.0c6f7ap-20f);  /* madgwick.py:102 */
     const float t324_s = sqrtf(t324_m);
-    const float t324 = (0x1.0000000000000p+0f / t324_s);
+    const float t324 = (0x1p+0f / t324_s);
     const float t325 = (t313 * t324);  /* madgwick.py:102 */
     const float t327 = (t314 * t324);  /* madgwick.py:102 */
     const float t329 = (t315 * t324);  /* madgwick.py:102 */
@@ -390,7 +390,7 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     int t455 = 0;
     if (t334) {
         const float t335 = (t58 ? u_mag0 : 0.0f);  /* common.py:86 */
-        const float t336 = (t58 ? u_mag1 : 0x1.0000000000000p+0f);  /* common.py:86 */
+        const float t336 = (t58 ? u_mag1 : 0x1p+0f);  /* common.py:86 */
         const float t337 = (t58 ? u_mag2 : 0.0f);  /* common.py:86 */
         const float t338 = (t336 * t74);  /* common.py:87 */
         const float t339 = (t337 * t72);  /* common.py:87 */
@@ -411,15 +411,15 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
         const float t354 = (t352 + t353);  /* common.py:89 */
         const float t355 = (t337 * t337);  /* common.py:89 */
         const float t356 = (t354 + t355);  /* common.py:89 */
-        const float t358 = (0x1.a36e2e0000000p-14f * t356);  /* common.py:91 */
+        const float t358 = (0x1.a36e2ep-14f * t356);  /* common.py:91 */
         const int t359 = (t351 <= t358);  /* common.py:91 */
-        const float t360_m = ((0x1.1979980000000p-40f < t351) ? t351 : 0x1.1979980000000p-40f);  /* common.py:92 */
+        const float t360_m = ((0x1.197998p-40f < t351) ? t351 : 0x1.197998p-40f);  /* common.py:92 */
         const float t360_s = sqrtf(t360_m);
-        const float t360 = (0x1.0000000000000p+0f / t360_s);
+        const float t360 = (0x1p+0f / t360_s);
         const float t361 = (t340 * t360);  /* common.py:92 */
         const float t363 = (t343 * t360);  /* common.py:92 */
         const float t365 = (t346 * t360);  /* common.py:92 */
-        const float t367 = (t359 ? 0x1.0000000000000p+0f : t361);  /* common.py:93 */
+        const float t367 = (t359 ? 0x1p+0f : t361);  /* common.py:93 */
         const float t368 = (t359 ? 0.0f : t363);  /* common.py:93 */
         const float t369 = (t359 ? 0.0f : t365);  /* common.py:93 */
         const float t370 = (t72 * t369);  /* common.py:94 */
@@ -433,11 +433,11 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
         const float t378 = (t376 - t377);  /* common.py:94 */
         const float t379 = (t367 + t375);  /* common.py:106 */
         const float t380 = (t379 + t74);  /* common.py:106 */
-        const float t381 = (0x1.0000000000000p+0f + t380);  /* common.py:108 */
-        const float t382 = (0x1.0000000000000p+0f + t367);  /* common.py:109 */
+        const float t381 = (0x1p+0f + t380);  /* common.py:108 */
+        const float t382 = (0x1p+0f + t367);  /* common.py:109 */
         const float t383 = (t382 - t375);  /* common.py:109 */
         const float t384 = (t383 - t74);  /* common.py:109 */
-        const float t385 = (0x1.0000000000000p+0f - t367);  /* common.py:110 */
+        const float t385 = (0x1p+0f - t367);  /* common.py:110 */
         const float t386 = (t385 + t375);  /* common.py:110 */
         const float t387 = (t386 - t74);  /* common.py:110 */
         const float t388 = (t385 - t375);  /* common.py:111 */
@@ -462,12 +462,12 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
         const float t407 = (t403 ? t387 : t389);  /* common.py:116 */
         const float t408 = (t399 ? t384 : t407);  /* common.py:116 */
         const float t409 = (t394 ? t381 : t408);  /* common.py:116 */
-        const float t411 = ((0x1.0000000000000p-2f < t409) ? t409 : 0x1.0000000000000p-2f);  /* common.py:118 */
+        const float t411 = ((0x1p-2f < t409) ? t409 : 0x1p-2f);  /* common.py:118 */
         const float t412_s = sqrtf(t411);  /* common.py:118 */
-        const float t412 = (0x1.0000000000000p+0f / t412_s);
-        const float t413 = (0x1.0000000000000p-1f * t409);  /* common.py:119 */
+        const float t412 = (0x1p+0f / t412_s);
+        const float t413 = (0x1p-1f * t409);  /* common.py:119 */
         const float t414 = (t413 * t412);  /* common.py:119 */
-        const float t415 = (0x1.0000000000000p-1f * t412);  /* common.py:120 */
+        const float t415 = (0x1p-1f * t412);  /* common.py:120 */
         const float t416 = (t72 - t378);  /* common.py:121 */
         const float t417 = (t416 * t415);  /* common.py:121 */
         const float t418 = (t369 - t70);  /* common.py:122 */
@@ -508,13 +508,13 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const int t456 = (t334 && t455);  /* madgwick.py:108 */
     const int t457 = (t47 && x_initialised);  /* madgwick.py:109 */
     const float t458 = (t446 + t452);  /* madgwick.py:131 */
-    const float t460 = (0x1.6a09e60000000p-1f * t458);  /* madgwick.py:131 */
+    const float t460 = (0x1.6a09e6p-1f * t458);  /* madgwick.py:131 */
     const float t462 = (t448 + t450);  /* madgwick.py:131 */
-    const float t463 = (0x1.6a09e60000000p-1f * t462);  /* madgwick.py:131 */
+    const float t463 = (0x1.6a09e6p-1f * t462);  /* madgwick.py:131 */
     const float t465 = (t450 - t448);  /* madgwick.py:132 */
-    const float t466 = (0x1.6a09e60000000p-1f * t465);  /* madgwick.py:132 */
+    const float t466 = (0x1.6a09e6p-1f * t465);  /* madgwick.py:132 */
     const float t468 = (t452 - t446);  /* madgwick.py:132 */
-    const float t469 = (0x1.6a09e60000000p-1f * t468);  /* madgwick.py:132 */
+    const float t469 = (0x1.6a09e6p-1f * t468);  /* madgwick.py:132 */
     const float t471 = (t457 ? t325 : x_q0);  /* madgwick.py:110 */
     const float t472 = (t457 ? t327 : x_q1);  /* madgwick.py:110 */
     const float t473 = (t457 ? t329 : x_q2);  /* madgwick.py:110 */
@@ -525,18 +525,18 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const float t478 = (t456 ? t469 : t474);  /* madgwick.py:110 */
     const float t479 = (x_t_run + t24);  /* madgwick.py:111 */
     const float t480 = ((0.0f < t479) ? t479 : 0.0f);  /* madgwick.py:111 */
-    const float t482 = ((t480 < 0x1.e000000000000p+5f) ? t480 : 0x1.e000000000000p+5f);  /* madgwick.py:111 */
+    const float t482 = ((t480 < 0x1.ep+5f) ? t480 : 0x1.ep+5f);  /* madgwick.py:111 */
     const float t483 = (t457 ? t482 : x_t_run);  /* madgwick.py:111 */
     const int32_t t484 = kf_inc_if(x_rejected, t63);  /* madgwick.py:112 */
     const int t485 = (x_initialised || t456);  /* madgwick.py:113 */
     const float t486 = (t475 - t478);  /* madgwick.py:124 */
-    const float t487 = (0x1.6a09e60000000p-1f * t486);  /* madgwick.py:124 */
+    const float t487 = (0x1.6a09e6p-1f * t486);  /* madgwick.py:124 */
     const float t489 = (t476 - t477);  /* madgwick.py:124 */
-    const float t490 = (0x1.6a09e60000000p-1f * t489);  /* madgwick.py:124 */
+    const float t490 = (0x1.6a09e6p-1f * t489);  /* madgwick.py:124 */
     const float t492 = (t476 + t477);  /* madgwick.py:125 */
-    const float t493 = (0x1.6a09e60000000p-1f * t492);  /* madgwick.py:125 */
+    const float t493 = (0x1.6a09e6p-1f * t492);  /* madgwick.py:125 */
     const float t495 = (t475 + t478);  /* madgwick.py:125 */
-    const float t496 = (0x1.6a09e60000000p-1f * t495);  /* madgwick.py:125 */
+    const float t496 = (0x1.6a09e6p-1f * t495);  /* madgwick.py:125 */
     s->q[0] = t475;
     s->q[1] = t476;
     s->q[2] = t477;

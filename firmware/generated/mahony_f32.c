@@ -23,21 +23,21 @@
 
 void mahony_f32_default_params(mahony_f32_params *p)
 {
-    p->kp = 0x1.99999a0000000p-3f;
-    p->ki = 0x1.47ae140000000p-7f;
-    p->acc_gate = 0x1.0000000000000p+1f;
+    p->kp = 0x1.99999ap-3f;
+    p->ki = 0x1.47ae14p-7f;
+    p->acc_gate = 0x1p+1f;
 }
 
 int mahony_f32_init(mahony_f32_state *s, const mahony_f32_params *p)
 {
     int status = 0;
-    if (!((p->acc_gate >= 0.0f) && (p->acc_gate <= 0x1.9000000000000p+6f))) {
+    if (!((p->acc_gate >= 0.0f) && (p->acc_gate <= 0x1.9p+6f))) {
         status = -3;
     }
-    if (!((p->ki >= 0.0f) && (p->ki <= 0x1.4000000000000p+2f))) {
+    if (!((p->ki >= 0.0f) && (p->ki <= 0x1.4p+2f))) {
         status = -2;
     }
-    if (!((p->kp >= 0.0f) && (p->kp <= 0x1.4000000000000p+4f))) {
+    if (!((p->kp >= 0.0f) && (p->kp <= 0x1.4p+4f))) {
         status = -1;
     }
     if (status != 0) {
@@ -45,7 +45,7 @@ int mahony_f32_init(mahony_f32_state *s, const mahony_f32_params *p)
     } else {
         s->params = *p;
     }
-    s->q[0] = 0x1.0000000000000p+0f;
+    s->q[0] = 0x1p+0f;
     s->q[1] = 0.0f;
     s->q[2] = 0.0f;
     s->q[3] = 0.0f;
@@ -83,34 +83,34 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const int x_initialised = (s->initialised != 0u);
     const int32_t x_rejected = s->rejected;
     const float t24 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* common.py:62 */
-    const float t26 = ((t24 < 0x1.0000000000000p+0f) ? t24 : 0x1.0000000000000p+0f);  /* common.py:62 */
+    const float t26 = ((t24 < 0x1p+0f) ? t24 : 0x1p+0f);  /* common.py:62 */
     const float t27 = fabsf(u_gyr0);  /* common.py:50 */
-    const int t29 = (t27 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t29 = (t27 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t30 = fabsf(u_gyr1);  /* common.py:50 */
-    const int t31 = (t30 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t31 = (t30 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t32 = fabsf(u_gyr2);  /* common.py:50 */
-    const int t33 = (t32 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t33 = (t32 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t34 = (t29 && t31);  /* common.py:50 */
     const int t35 = (t34 && t33);  /* common.py:50 */
     const float t36 = fabsf(u_acc0);  /* common.py:50 */
-    const int t38 = (t36 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t38 = (t36 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t39 = fabsf(u_acc1);  /* common.py:50 */
-    const int t40 = (t39 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t40 = (t39 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t41 = fabsf(u_acc2);  /* common.py:50 */
-    const int t42 = (t41 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t42 = (t41 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t43 = (t38 && t40);  /* common.py:50 */
     const int t44 = (t43 && t42);  /* common.py:50 */
     const int t45 = (0.0f < u_dt);  /* common.py:64 */
-    const int t46 = (u_dt <= 0x1.0000000000000p+0f);  /* common.py:64 */
+    const int t46 = (u_dt <= 0x1p+0f);  /* common.py:64 */
     const int t47 = (t35 && t44);  /* common.py:63 */
     const int t48 = (t47 && t45);  /* common.py:63 */
     const int t49 = (t48 && t46);  /* common.py:63 */
     const float t50 = fabsf(u_mag0);  /* common.py:50 */
-    const int t52 = (t50 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t52 = (t50 <= 0x1.324p+12f);  /* common.py:50 */
     const float t53 = fabsf(u_mag1);  /* common.py:50 */
-    const int t54 = (t53 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t54 = (t53 <= 0x1.324p+12f);  /* common.py:50 */
     const float t55 = fabsf(u_mag2);  /* common.py:50 */
-    const int t56 = (t55 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t56 = (t55 <= 0x1.324p+12f);  /* common.py:50 */
     const int t57 = (t52 && t54);  /* common.py:50 */
     const int t58 = (t57 && t56);  /* common.py:50 */
     const int t59 = (t49 && u_mag_valid);  /* common.py:67 */
@@ -125,20 +125,20 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const float t68 = (t66 + t67);  /* mahony.py:53 */
     const float t69 = (u_acc2 * u_acc2);  /* mahony.py:53 */
     const float t70 = (t68 + t69);  /* mahony.py:53 */
-    const float t71_m = ((0x1.0c6f7a0000000p-20f < t70) ? t70 : 0x1.0c6f7a0000000p-20f);  /* mahony.py:53 */
+    const float t71_m = ((0x1.0c6f7ap-20f < t70) ? t70 : 0x1.0c6f7ap-20f);  /* mahony.py:53 */
     const float t71_s = sqrtf(t71_m);
-    const float t71 = (0x1.0000000000000p+0f / t71_s);
+    const float t71 = (0x1p+0f / t71_s);
     const float t72 = (u_acc0 * t71);  /* mahony.py:53 */
     const float t74 = (u_acc1 * t71);  /* mahony.py:53 */
     const float t76 = (u_acc2 * t71);  /* mahony.py:53 */
     const float t78 = (x_q1 * x_q3);  /* mahony.py:54 */
     const float t79 = (x_q0 * x_q2);  /* mahony.py:54 */
     const float t80 = (t78 - t79);  /* mahony.py:54 */
-    const float t82 = (0x1.0000000000000p+1f * t80);  /* mahony.py:54 */
+    const float t82 = (0x1p+1f * t80);  /* mahony.py:54 */
     const float t83 = (x_q2 * x_q3);  /* mahony.py:54 */
     const float t84 = (x_q0 * x_q1);  /* mahony.py:54 */
     const float t85 = (t83 + t84);  /* mahony.py:54 */
-    const float t86 = (0x1.0000000000000p+1f * t85);  /* mahony.py:54 */
+    const float t86 = (0x1p+1f * t85);  /* mahony.py:54 */
     const float t87 = (x_q0 * x_q0);  /* mahony.py:54 */
     const float t88 = (x_q1 * x_q1);  /* mahony.py:54 */
     const float t89 = (t87 - t88);  /* mahony.py:54 */
@@ -146,16 +146,16 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const float t91 = (t89 - t90);  /* mahony.py:54 */
     const float t92 = (x_q3 * x_q3);  /* mahony.py:54 */
     const float t93 = (t91 + t92);  /* mahony.py:54 */
-    const float t98 = (0x1.39eb860000000p+3f - p_acc_gate);  /* mahony.py:56 */
+    const float t98 = (0x1.39eb86p+3f - p_acc_gate);  /* mahony.py:56 */
     const float t99 = (t98 * t98);  /* mahony.py:56 */
-    const float t100 = (0x1.39eb860000000p+3f + p_acc_gate);  /* mahony.py:57 */
+    const float t100 = (0x1.39eb86p+3f + p_acc_gate);  /* mahony.py:57 */
     const float t101 = (t100 * t100);  /* mahony.py:57 */
-    const int t102 = (p_acc_gate < 0x1.39eb860000000p+3f);  /* mahony.py:58 */
+    const int t102 = (p_acc_gate < 0x1.39eb86p+3f);  /* mahony.py:58 */
     const float t103 = (t102 ? t99 : 0.0f);  /* mahony.py:58 */
     const int t104 = (t103 < t70);  /* mahony.py:58 */
     const int t105 = (t70 < t101);  /* mahony.py:58 */
     const int t106 = (t104 && t105);  /* mahony.py:58 */
-    const int t107 = (0x1.0000000000000p+0f <= t70);  /* mahony.py:59 */
+    const int t107 = (0x1p+0f <= t70);  /* mahony.py:59 */
     const int t108 = (p_acc_gate <= 0.0f);  /* mahony.py:59 */
     const int t109 = (t108 || t106);  /* mahony.py:59 */
     const int t110 = (t107 && t109);  /* mahony.py:59 */
@@ -178,24 +178,24 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
         const float t122 = (t120 + t121);  /* mahony.py:64 */
         const float t123 = (u_mag2 * u_mag2);  /* mahony.py:64 */
         t124 = (t122 + t123);  /* mahony.py:64 */
-        const float t125_m = ((0x1.0c6f7a0000000p-20f < t124) ? t124 : 0x1.0c6f7a0000000p-20f);  /* mahony.py:64 */
+        const float t125_m = ((0x1.0c6f7ap-20f < t124) ? t124 : 0x1.0c6f7ap-20f);  /* mahony.py:64 */
         const float t125_s = sqrtf(t125_m);
-        const float t125 = (0x1.0000000000000p+0f / t125_s);
+        const float t125 = (0x1p+0f / t125_s);
         const float t126 = (u_mag0 * t125);  /* mahony.py:64 */
         const float t128 = (u_mag1 * t125);  /* mahony.py:64 */
         const float t130 = (u_mag2 * t125);  /* mahony.py:64 */
         const float t132 = (x_q2 * t130);  /* mahony.py:65 */
         const float t133 = (x_q3 * t128);  /* mahony.py:65 */
         const float t134 = (t132 - t133);  /* mahony.py:65 */
-        const float t135 = (0x1.0000000000000p+1f * t134);  /* mahony.py:65 */
+        const float t135 = (0x1p+1f * t134);  /* mahony.py:65 */
         const float t136 = (x_q3 * t126);  /* mahony.py:65 */
         const float t137 = (x_q1 * t130);  /* mahony.py:65 */
         const float t138 = (t136 - t137);  /* mahony.py:65 */
-        const float t139 = (0x1.0000000000000p+1f * t138);  /* mahony.py:65 */
+        const float t139 = (0x1p+1f * t138);  /* mahony.py:65 */
         const float t140 = (x_q1 * t128);  /* mahony.py:65 */
         const float t141 = (x_q2 * t126);  /* mahony.py:65 */
         const float t142 = (t140 - t141);  /* mahony.py:65 */
-        const float t143 = (0x1.0000000000000p+1f * t142);  /* mahony.py:65 */
+        const float t143 = (0x1p+1f * t142);  /* mahony.py:65 */
         const float t144 = (x_q0 * t135);  /* mahony.py:65 */
         const float t145 = (t126 + t144);  /* mahony.py:65 */
         const float t146 = (x_q2 * t143);  /* mahony.py:65 */
@@ -225,15 +225,15 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
         const float t173 = (t171 * t161);  /* mahony.py:68 */
         const float t174 = (t172 * t168);  /* mahony.py:68 */
         const float t175 = (t173 - t174);  /* mahony.py:68 */
-        const float t176 = (0x1.0000000000000p+1f * t175);  /* mahony.py:68 */
+        const float t176 = (0x1p+1f * t175);  /* mahony.py:68 */
         const float t177 = (t172 * 0.0f);  /* mahony.py:68 */
         const float t178 = (t170 * t161);  /* mahony.py:68 */
         const float t179 = (t177 - t178);  /* mahony.py:68 */
-        const float t180 = (0x1.0000000000000p+1f * t179);  /* mahony.py:68 */
+        const float t180 = (0x1p+1f * t179);  /* mahony.py:68 */
         const float t181 = (t170 * t168);  /* mahony.py:68 */
         const float t182 = (t171 * 0.0f);  /* mahony.py:68 */
         const float t183 = (t181 - t182);  /* mahony.py:68 */
-        const float t184 = (0x1.0000000000000p+1f * t183);  /* mahony.py:68 */
+        const float t184 = (0x1p+1f * t183);  /* mahony.py:68 */
         const float t185 = (x_q0 * t176);  /* mahony.py:68 */
         const float t186 = (0.0f + t185);  /* mahony.py:68 */
         const float t187 = (t171 * t184);  /* mahony.py:68 */
@@ -262,7 +262,7 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
         const float t213 = (t128 * t190);  /* mahony.py:70 */
         t214 = (t212 - t213);  /* mahony.py:70 */
     }
-    const int t215 = (0x1.0000000000000p+0f <= t124);  /* mahony.py:71 */
+    const int t215 = (0x1p+0f <= t124);  /* mahony.py:71 */
     const int t216 = (t60 && t215);  /* mahony.py:71 */
     const float t217 = (t110 ? t113 : 0.0f);  /* mahony.py:74 */
     const float t218 = (t110 ? t116 : 0.0f);  /* mahony.py:74 */
@@ -276,18 +276,18 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const float t226 = (p_ki * t223);  /* mahony.py:75 */
     const float t227 = (t226 * t26);  /* mahony.py:75 */
     const float t228 = (x_bias0 - t227);  /* mahony.py:75 */
-    const float t230 = ((-0x1.0000000000000p-1f < t228) ? t228 : -0x1.0000000000000p-1f);  /* mahony.py:75 */
-    const float t232 = ((t230 < 0x1.0000000000000p-1f) ? t230 : 0x1.0000000000000p-1f);  /* mahony.py:75 */
+    const float t230 = ((-0x1p-1f < t228) ? t228 : -0x1p-1f);  /* mahony.py:75 */
+    const float t232 = ((t230 < 0x1p-1f) ? t230 : 0x1p-1f);  /* mahony.py:75 */
     const float t233 = (p_ki * t224);  /* mahony.py:75 */
     const float t234 = (t233 * t26);  /* mahony.py:75 */
     const float t235 = (x_bias1 - t234);  /* mahony.py:75 */
-    const float t236 = ((-0x1.0000000000000p-1f < t235) ? t235 : -0x1.0000000000000p-1f);  /* mahony.py:75 */
-    const float t237 = ((t236 < 0x1.0000000000000p-1f) ? t236 : 0x1.0000000000000p-1f);  /* mahony.py:75 */
+    const float t236 = ((-0x1p-1f < t235) ? t235 : -0x1p-1f);  /* mahony.py:75 */
+    const float t237 = ((t236 < 0x1p-1f) ? t236 : 0x1p-1f);  /* mahony.py:75 */
     const float t238 = (p_ki * t225);  /* mahony.py:75 */
     const float t239 = (t238 * t26);  /* mahony.py:75 */
     const float t240 = (x_bias2 - t239);  /* mahony.py:75 */
-    const float t241 = ((-0x1.0000000000000p-1f < t240) ? t240 : -0x1.0000000000000p-1f);  /* mahony.py:75 */
-    const float t242 = ((t241 < 0x1.0000000000000p-1f) ? t241 : 0x1.0000000000000p-1f);  /* mahony.py:75 */
+    const float t241 = ((-0x1p-1f < t240) ? t240 : -0x1p-1f);  /* mahony.py:75 */
+    const float t242 = ((t241 < 0x1p-1f) ? t241 : 0x1p-1f);  /* mahony.py:75 */
     const float t243 = (u_gyr0 - t232);  /* mahony.py:76 */
     const float t244 = (u_gyr1 - t237);  /* mahony.py:76 */
     const float t245 = (u_gyr2 - t242);  /* mahony.py:76 */
@@ -325,10 +325,10 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const float t277 = (t275 - t276);  /* common.py:172 */
     const float t278 = (x_q3 * 0.0f);  /* common.py:172 */
     const float t279 = (t277 + t278);  /* common.py:172 */
-    const float t280 = (t258 * 0x1.0000000000000p-1f);  /* common.py:172 */
-    const float t281 = (t265 * 0x1.0000000000000p-1f);  /* common.py:172 */
-    const float t282 = (t272 * 0x1.0000000000000p-1f);  /* common.py:172 */
-    const float t283 = (t279 * 0x1.0000000000000p-1f);  /* common.py:172 */
+    const float t280 = (t258 * 0x1p-1f);  /* common.py:172 */
+    const float t281 = (t265 * 0x1p-1f);  /* common.py:172 */
+    const float t282 = (t272 * 0x1p-1f);  /* common.py:172 */
+    const float t283 = (t279 * 0x1p-1f);  /* common.py:172 */
     const float t284 = (t280 * t26);  /* common.py:173 */
     const float t285 = (t281 * t26);  /* common.py:173 */
     const float t286 = (t282 * t26);  /* common.py:173 */
@@ -344,9 +344,9 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const float t296 = (t294 + t295);  /* common.py:173 */
     const float t297 = (t291 * t291);  /* common.py:173 */
     const float t298 = (t296 + t297);  /* common.py:173 */
-    const float t299_m = ((0x1.0c6f7a0000000p-20f < t298) ? t298 : 0x1.0c6f7a0000000p-20f);  /* common.py:173 */
+    const float t299_m = ((0x1.0c6f7ap-20f < t298) ? t298 : 0x1.0c6f7ap-20f);  /* common.py:173 */
     const float t299_s = sqrtf(t299_m);
-    const float t299 = (0x1.0000000000000p+0f / t299_s);
+    const float t299 = (0x1p+0f / t299_s);
     const float t300 = (t288 * t299);  /* common.py:173 */
     const float t302 = (t289 * t299);  /* common.py:173 */
     const float t304 = (t290 * t299);  /* common.py:173 */
@@ -360,7 +360,7 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     int t430 = 0;
     if (t309) {
         const float t310 = (t60 ? u_mag0 : 0.0f);  /* common.py:86 */
-        const float t311 = (t60 ? u_mag1 : 0x1.0000000000000p+0f);  /* common.py:86 */
+        const float t311 = (t60 ? u_mag1 : 0x1p+0f);  /* common.py:86 */
         const float t312 = (t60 ? u_mag2 : 0.0f);  /* common.py:86 */
         const float t313 = (t311 * t76);  /* common.py:87 */
         const float t314 = (t312 * t74);  /* common.py:87 */
@@ -381,15 +381,15 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
         const float t329 = (t327 + t328);  /* common.py:89 */
         const float t330 = (t312 * t312);  /* common.py:89 */
         const float t331 = (t329 + t330);  /* common.py:89 */
-        const float t333 = (0x1.a36e2e0000000p-14f * t331);  /* common.py:91 */
+        const float t333 = (0x1.a36e2ep-14f * t331);  /* common.py:91 */
         const int t334 = (t326 <= t333);  /* common.py:91 */
-        const float t335_m = ((0x1.1979980000000p-40f < t326) ? t326 : 0x1.1979980000000p-40f);  /* common.py:92 */
+        const float t335_m = ((0x1.197998p-40f < t326) ? t326 : 0x1.197998p-40f);  /* common.py:92 */
         const float t335_s = sqrtf(t335_m);
-        const float t335 = (0x1.0000000000000p+0f / t335_s);
+        const float t335 = (0x1p+0f / t335_s);
         const float t336 = (t315 * t335);  /* common.py:92 */
         const float t338 = (t318 * t335);  /* common.py:92 */
         const float t340 = (t321 * t335);  /* common.py:92 */
-        const float t342 = (t334 ? 0x1.0000000000000p+0f : t336);  /* common.py:93 */
+        const float t342 = (t334 ? 0x1p+0f : t336);  /* common.py:93 */
         const float t343 = (t334 ? 0.0f : t338);  /* common.py:93 */
         const float t344 = (t334 ? 0.0f : t340);  /* common.py:93 */
         const float t345 = (t74 * t344);  /* common.py:94 */
@@ -403,11 +403,11 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
         const float t353 = (t351 - t352);  /* common.py:94 */
         const float t354 = (t342 + t350);  /* common.py:106 */
         const float t355 = (t354 + t76);  /* common.py:106 */
-        const float t356 = (0x1.0000000000000p+0f + t355);  /* common.py:108 */
-        const float t357 = (0x1.0000000000000p+0f + t342);  /* common.py:109 */
+        const float t356 = (0x1p+0f + t355);  /* common.py:108 */
+        const float t357 = (0x1p+0f + t342);  /* common.py:109 */
         const float t358 = (t357 - t350);  /* common.py:109 */
         const float t359 = (t358 - t76);  /* common.py:109 */
-        const float t360 = (0x1.0000000000000p+0f - t342);  /* common.py:110 */
+        const float t360 = (0x1p+0f - t342);  /* common.py:110 */
         const float t361 = (t360 + t350);  /* common.py:110 */
         const float t362 = (t361 - t76);  /* common.py:110 */
         const float t363 = (t360 - t350);  /* common.py:111 */
@@ -432,12 +432,12 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
         const float t382 = (t378 ? t362 : t364);  /* common.py:116 */
         const float t383 = (t374 ? t359 : t382);  /* common.py:116 */
         const float t384 = (t369 ? t356 : t383);  /* common.py:116 */
-        const float t386 = ((0x1.0000000000000p-2f < t384) ? t384 : 0x1.0000000000000p-2f);  /* common.py:118 */
+        const float t386 = ((0x1p-2f < t384) ? t384 : 0x1p-2f);  /* common.py:118 */
         const float t387_s = sqrtf(t386);  /* common.py:118 */
-        const float t387 = (0x1.0000000000000p+0f / t387_s);
-        const float t388 = (0x1.0000000000000p-1f * t384);  /* common.py:119 */
+        const float t387 = (0x1p+0f / t387_s);
+        const float t388 = (0x1p-1f * t384);  /* common.py:119 */
         const float t389 = (t388 * t387);  /* common.py:119 */
-        const float t390 = (0x1.0000000000000p-1f * t387);  /* common.py:120 */
+        const float t390 = (0x1p-1f * t387);  /* common.py:120 */
         const float t391 = (t74 - t353);  /* common.py:121 */
         const float t392 = (t391 * t390);  /* common.py:121 */
         const float t393 = (t344 - t72);  /* common.py:122 */
