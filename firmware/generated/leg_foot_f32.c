@@ -23,97 +23,97 @@
 
 void leg_foot_f32_default_params(leg_foot_f32_params *p)
 {
-    p->m1 = 0x1.e000000000000p+2f;
-    p->m2 = 0x1.24cccc0000000p+2f;
-    p->L1 = 0x1.b70a3e0000000p-2f;
-    p->c1 = 0x1.7c356a0000000p-3f;
-    p->c2 = 0x1.0b24ea0000000p-2f;
-    p->I1 = 0x1.2694b40000000p-3f;
-    p->I2 = 0x1.2c81b00000000p-3f;
-    p->g = 0x1.39eb860000000p+3f;
-    p->a1 = 0x1.99999a0000000p-3f;
-    p->b1 = 0x1.1eb8520000000p-4f;
-    p->a2 = 0x1.99999a0000000p-3f;
-    p->b2 = 0x1.99999a0000000p-5f;
-    p->sigma_gyr = 0x1.47ae140000000p-8f;
-    p->sigma_acc = 0x1.99999a0000000p-5f;
-    p->q_torque = 0x1.3880000000000p+14f;
-    p->p0_angle = 0x1.99999a0000000p-3f;
-    p->p0_rate = 0x1.99999a0000000p-4f;
-    p->p0_torque = 0x1.e000000000000p+4f;
-    p->sigma_foot = 0x1.0000000000000p+1f;
-    p->q_force = 0x1.e848000000000p+19f;
-    p->p0_force = 0x1.9000000000000p+6f;
-    p->L2 = 0x1.b8d4fe0000000p-2f;
+    p->m1 = 0x1.ep+2f;
+    p->m2 = 0x1.24ccccp+2f;
+    p->L1 = 0x1.b70a3ep-2f;
+    p->c1 = 0x1.7c356ap-3f;
+    p->c2 = 0x1.0b24eap-2f;
+    p->I1 = 0x1.2694b4p-3f;
+    p->I2 = 0x1.2c81bp-3f;
+    p->g = 0x1.39eb86p+3f;
+    p->a1 = 0x1.99999ap-3f;
+    p->b1 = 0x1.1eb852p-4f;
+    p->a2 = 0x1.99999ap-3f;
+    p->b2 = 0x1.99999ap-5f;
+    p->sigma_gyr = 0x1.47ae14p-8f;
+    p->sigma_acc = 0x1.99999ap-5f;
+    p->q_torque = 0x1.388p+14f;
+    p->p0_angle = 0x1.99999ap-3f;
+    p->p0_rate = 0x1.99999ap-4f;
+    p->p0_torque = 0x1.ep+4f;
+    p->sigma_foot = 0x1p+1f;
+    p->q_force = 0x1.e848p+19f;
+    p->p0_force = 0x1.9p+6f;
+    p->L2 = 0x1.b8d4fep-2f;
 }
 
 int leg_foot_f32_init(leg_foot_f32_state *s, const leg_foot_f32_params *p)
 {
     int status = 0;
-    if (!((p->L2 >= 0x1.99999a0000000p-4f) && (p->L2 <= 0x1.0000000000000p+0f))) {
+    if (!((p->L2 >= 0x1.99999ap-4f) && (p->L2 <= 0x1p+0f))) {
         status = -22;
     }
-    if (!((p->p0_force >= 0x1.0624de0000000p-10f) && (p->p0_force <= 0x1.3880000000000p+13f))) {
+    if (!((p->p0_force >= 0x1.0624dep-10f) && (p->p0_force <= 0x1.388p+13f))) {
         status = -21;
     }
-    if (!((p->q_force >= 0x1.0c6f7a0000000p-20f) && (p->q_force <= 0x1.2a05f20000000p+33f))) {
+    if (!((p->q_force >= 0x1.0c6f7ap-20f) && (p->q_force <= 0x1.2a05f2p+33f))) {
         status = -20;
     }
-    if (!((p->sigma_foot >= 0x1.0624de0000000p-10f) && (p->sigma_foot <= 0x1.f400000000000p+9f))) {
+    if (!((p->sigma_foot >= 0x1.0624dep-10f) && (p->sigma_foot <= 0x1.f4p+9f))) {
         status = -19;
     }
-    if (!((p->p0_torque >= 0x1.0624de0000000p-10f) && (p->p0_torque <= 0x1.3880000000000p+13f))) {
+    if (!((p->p0_torque >= 0x1.0624dep-10f) && (p->p0_torque <= 0x1.388p+13f))) {
         status = -18;
     }
-    if (!((p->p0_rate >= 0x1.4f8b580000000p-17f) && (p->p0_rate <= 0x1.9000000000000p+6f))) {
+    if (!((p->p0_rate >= 0x1.4f8b58p-17f) && (p->p0_rate <= 0x1.9p+6f))) {
         status = -17;
     }
-    if (!((p->p0_angle >= 0x1.4f8b580000000p-17f) && (p->p0_angle <= 0x1.4000000000000p+3f))) {
+    if (!((p->p0_angle >= 0x1.4f8b58p-17f) && (p->p0_angle <= 0x1.4p+3f))) {
         status = -16;
     }
-    if (!((p->q_torque >= 0x1.0c6f7a0000000p-20f) && (p->q_torque <= 0x1.dcd6500000000p+29f))) {
+    if (!((p->q_torque >= 0x1.0c6f7ap-20f) && (p->q_torque <= 0x1.dcd65p+29f))) {
         status = -15;
     }
-    if (!((p->sigma_acc >= 0x1.a36e2e0000000p-14f) && (p->sigma_acc <= 0x1.9000000000000p+5f))) {
+    if (!((p->sigma_acc >= 0x1.a36e2ep-14f) && (p->sigma_acc <= 0x1.9p+5f))) {
         status = -14;
     }
-    if (!((p->sigma_gyr >= 0x1.4f8b580000000p-17f) && (p->sigma_gyr <= 0x1.4000000000000p+3f))) {
+    if (!((p->sigma_gyr >= 0x1.4f8b58p-17f) && (p->sigma_gyr <= 0x1.4p+3f))) {
         status = -13;
     }
-    if (!((p->b2 >= -0x1.3333340000000p-2f) && (p->b2 <= 0x1.3333340000000p-2f))) {
+    if (!((p->b2 >= -0x1.333334p-2f) && (p->b2 <= 0x1.333334p-2f))) {
         status = -12;
     }
-    if (!((p->a2 >= 0.0f) && (p->a2 <= 0x1.0000000000000p+0f))) {
+    if (!((p->a2 >= 0.0f) && (p->a2 <= 0x1p+0f))) {
         status = -11;
     }
-    if (!((p->b1 >= -0x1.3333340000000p-2f) && (p->b1 <= 0x1.3333340000000p-2f))) {
+    if (!((p->b1 >= -0x1.333334p-2f) && (p->b1 <= 0x1.333334p-2f))) {
         status = -10;
     }
-    if (!((p->a1 >= 0.0f) && (p->a1 <= 0x1.0000000000000p+0f))) {
+    if (!((p->a1 >= 0.0f) && (p->a1 <= 0x1p+0f))) {
         status = -9;
     }
-    if (!((p->g >= 0.0f) && (p->g <= 0x1.4000000000000p+4f))) {
+    if (!((p->g >= 0.0f) && (p->g <= 0x1.4p+4f))) {
         status = -8;
     }
-    if (!((p->I2 >= 0x1.0624de0000000p-10f) && (p->I2 <= 0x1.4000000000000p+2f))) {
+    if (!((p->I2 >= 0x1.0624dep-10f) && (p->I2 <= 0x1.4p+2f))) {
         status = -7;
     }
-    if (!((p->I1 >= 0x1.0624de0000000p-10f) && (p->I1 <= 0x1.4000000000000p+2f))) {
+    if (!((p->I1 >= 0x1.0624dep-10f) && (p->I1 <= 0x1.4p+2f))) {
         status = -6;
     }
-    if (!((p->c2 >= 0x1.47ae140000000p-6f) && (p->c2 <= 0x1.0000000000000p+0f))) {
+    if (!((p->c2 >= 0x1.47ae14p-6f) && (p->c2 <= 0x1p+0f))) {
         status = -5;
     }
-    if (!((p->c1 >= 0x1.47ae140000000p-6f) && (p->c1 <= 0x1.0000000000000p+0f))) {
+    if (!((p->c1 >= 0x1.47ae14p-6f) && (p->c1 <= 0x1p+0f))) {
         status = -4;
     }
-    if (!((p->L1 >= 0x1.99999a0000000p-4f) && (p->L1 <= 0x1.0000000000000p+0f))) {
+    if (!((p->L1 >= 0x1.99999ap-4f) && (p->L1 <= 0x1p+0f))) {
         status = -3;
     }
-    if (!((p->m2 >= 0x1.99999a0000000p-3f) && (p->m2 <= 0x1.e000000000000p+4f))) {
+    if (!((p->m2 >= 0x1.99999ap-3f) && (p->m2 <= 0x1.ep+4f))) {
         status = -2;
     }
-    if (!((p->m1 >= 0x1.0000000000000p-1f) && (p->m1 <= 0x1.9000000000000p+5f))) {
+    if (!((p->m1 >= 0x1p-1f) && (p->m1 <= 0x1.9p+5f))) {
         status = -1;
     }
     if (status != 0) {
@@ -129,7 +129,7 @@ int leg_foot_f32_init(leg_foot_f32_state *s, const leg_foot_f32_params *p)
     s->te[1] = 0.0f;
     s->te[2] = 0.0f;
     s->te[3] = 0.0f;
-    s->P[0] = 0x1.47ae140000000p-5f;
+    s->P[0] = 0x1.47ae14p-5f;
     s->P[1] = 0.0f;
     s->P[2] = 0.0f;
     s->P[3] = 0.0f;
@@ -137,34 +137,34 @@ int leg_foot_f32_init(leg_foot_f32_state *s, const leg_foot_f32_params *p)
     s->P[5] = 0.0f;
     s->P[6] = 0.0f;
     s->P[7] = 0.0f;
-    s->P[8] = 0x1.47ae140000000p-5f;
+    s->P[8] = 0x1.47ae14p-5f;
     s->P[9] = 0.0f;
     s->P[10] = 0.0f;
     s->P[11] = 0.0f;
     s->P[12] = 0.0f;
     s->P[13] = 0.0f;
     s->P[14] = 0.0f;
-    s->P[15] = 0x1.47ae140000000p-7f;
+    s->P[15] = 0x1.47ae14p-7f;
     s->P[16] = 0.0f;
     s->P[17] = 0.0f;
     s->P[18] = 0.0f;
     s->P[19] = 0.0f;
     s->P[20] = 0.0f;
-    s->P[21] = 0x1.47ae140000000p-7f;
+    s->P[21] = 0x1.47ae14p-7f;
     s->P[22] = 0.0f;
     s->P[23] = 0.0f;
     s->P[24] = 0.0f;
     s->P[25] = 0.0f;
-    s->P[26] = 0x1.c200000000000p+9f;
+    s->P[26] = 0x1.c2p+9f;
     s->P[27] = 0.0f;
     s->P[28] = 0.0f;
     s->P[29] = 0.0f;
-    s->P[30] = 0x1.c200000000000p+9f;
+    s->P[30] = 0x1.c2p+9f;
     s->P[31] = 0.0f;
     s->P[32] = 0.0f;
-    s->P[33] = 0x1.3880000000000p+13f;
+    s->P[33] = 0x1.388p+13f;
     s->P[34] = 0.0f;
-    s->P[35] = 0x1.3880000000000p+13f;
+    s->P[35] = 0x1.388p+13f;
     s->initialised = 0;
     s->rejected = 0;
     s->skipped = 0;
@@ -259,24 +259,24 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
     const int32_t x_skipped = s->skipped;
     const int32_t x_resets = s->resets;
     const int t85 = (0.0f < u_dt);  /* leg.py:196 */
-    const int t87 = (u_dt <= 0x1.99999a0000000p-4f);  /* leg.py:196 */
+    const int t87 = (u_dt <= 0x1.99999ap-4f);  /* leg.py:196 */
     const int t88 = (t85 && t87);  /* leg.py:196 */
     const float t89 = fabsf(u_gyr0);  /* leg.py:199 */
-    const int t91 = (t89 <= 0x1.1740b00000000p+5f);  /* leg.py:199 */
+    const int t91 = (t89 <= 0x1.1740bp+5f);  /* leg.py:199 */
     const int t92 = (u_gyr_valid0 && t91);  /* leg.py:199 */
     const float t93 = fabsf(u_gyr1);  /* leg.py:199 */
-    const int t94 = (t93 <= 0x1.1740b00000000p+5f);  /* leg.py:199 */
+    const int t94 = (t93 <= 0x1.1740bp+5f);  /* leg.py:199 */
     const int t95 = (u_gyr_valid1 && t94);  /* leg.py:199 */
     const float t96 = fabsf(u_acc0);  /* leg.py:200 */
-    const int t98 = (t96 <= 0x1.39d0140000000p+7f);  /* leg.py:200 */
+    const int t98 = (t96 <= 0x1.39d014p+7f);  /* leg.py:200 */
     const float t99 = fabsf(u_acc1);  /* leg.py:201 */
-    const int t100 = (t99 <= 0x1.39d0140000000p+7f);  /* leg.py:201 */
+    const int t100 = (t99 <= 0x1.39d014p+7f);  /* leg.py:201 */
     const int t101 = (u_acc_valid0 && t98);  /* leg.py:200 */
     const int t102 = (t101 && t100);  /* leg.py:200 */
     const float t103 = fabsf(u_acc2);  /* leg.py:200 */
-    const int t104 = (t103 <= 0x1.39d0140000000p+7f);  /* leg.py:200 */
+    const int t104 = (t103 <= 0x1.39d014p+7f);  /* leg.py:200 */
     const float t105 = fabsf(u_acc3);  /* leg.py:201 */
-    const int t106 = (t105 <= 0x1.39d0140000000p+7f);  /* leg.py:201 */
+    const int t106 = (t105 <= 0x1.39d014p+7f);  /* leg.py:201 */
     const int t107 = (u_acc_valid1 && t104);  /* leg.py:200 */
     const int t108 = (t107 && t106);  /* leg.py:200 */
     const int t109 = (!t92);  /* leg.py:202 */
@@ -290,9 +290,9 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
     const float t117 = (p_sigma_gyr * p_sigma_gyr);  /* leg.py:207 */
     const float t118 = (p_sigma_acc * p_sigma_acc);  /* leg.py:207 */
     const float t119 = fabsf(u_foot0);  /* leg.py:209 */
-    const int t121 = (t119 <= 0x1.3880000000000p+12f);  /* leg.py:209 */
+    const int t121 = (t119 <= 0x1.388p+12f);  /* leg.py:209 */
     const float t122 = fabsf(u_foot1);  /* leg.py:209 */
-    const int t123 = (t122 <= 0x1.3880000000000p+12f);  /* leg.py:209 */
+    const int t123 = (t122 <= 0x1.388p+12f);  /* leg.py:209 */
     const int t124 = (u_foot_valid && t121);  /* leg.py:209 */
     const int t125 = (t124 && t123);  /* leg.py:209 */
     const int t126 = (!t125);  /* leg.py:210 */
@@ -356,51 +356,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
     float t4966 = 0.0f;
     float t4970 = 0.0f;
     if (t140) {
-        const float t142 = (x_z0 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t144 = (t142 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t145_a = ((-0x1.0000000000000p+30f < t144) ? t144 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t145_b = ((t145_a < 0x1.0000000000000p+30f) ? t145_a : 0x1.0000000000000p+30f);
+        const float t142 = (x_z0 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t144 = (t142 + 0x1p-1f);  /* ad.py:163 */
+        const float t145_a = ((-0x1p+30f < t144) ? t144 : -0x1p+30f);  /* ad.py:163 */
+        const float t145_b = ((t145_a < 0x1p+30f) ? t145_a : 0x1p+30f);
         const float t145_i = ((float)((int32_t)t145_b));
-        const float t145 = ((t145_b < t145_i) ? (t145_i - 0x1.0000000000000p+0f) : t145_i);
-        const float t147 = (t145 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t145 = ((t145_b < t145_i) ? (t145_i - 0x1p+0f) : t145_i);
+        const float t147 = (t145 * 0x1.92p+0f);  /* ad.py:163 */
         const float t148 = (x_z0 - t147);  /* ad.py:163 */
-        const float t150 = (t145 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t150 = (t145 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t151 = (t148 - t150);  /* ad.py:163 */
-        const float t154 = (t145 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t155_a = ((-0x1.0000000000000p+30f < t154) ? t154 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t155_b = ((t155_a < 0x1.0000000000000p+30f) ? t155_a : 0x1.0000000000000p+30f);
+        const float t154 = (t145 * 0x1p-2f);  /* ad.py:163 */
+        const float t155_a = ((-0x1p+30f < t154) ? t154 : -0x1p+30f);  /* ad.py:163 */
+        const float t155_b = ((t155_a < 0x1p+30f) ? t155_a : 0x1p+30f);
         const float t155_i = ((float)((int32_t)t155_b));
-        const float t155 = ((t155_b < t155_i) ? (t155_i - 0x1.0000000000000p+0f) : t155_i);
-        const float t157 = (0x1.0000000000000p+2f * t155);  /* ad.py:163 */
+        const float t155 = ((t155_b < t155_i) ? (t155_i - 0x1p+0f) : t155_i);
+        const float t157 = (0x1p+2f * t155);  /* ad.py:163 */
         const float t158 = (t145 - t157);  /* ad.py:163 */
         const float t159 = (t151 * t151);  /* ad.py:163 */
-        const float t161 = (-0x1.ae64560000000p-26f * t159);  /* ad.py:163 */
-        const float t163 = (t161 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t161 = (-0x1.ae6456p-26f * t159);  /* ad.py:163 */
+        const float t163 = (t161 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t164 = (t163 * t159);  /* ad.py:163 */
-        const float t166 = (t164 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t166 = (t164 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t167 = (t166 * t159);  /* ad.py:163 */
-        const float t169 = (t167 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t169 = (t167 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t170 = (t169 * t159);  /* ad.py:163 */
-        const float t172 = (t170 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t172 = (t170 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t173 = (t151 * t159);  /* ad.py:163 */
         const float t174 = (t173 * t172);  /* ad.py:163 */
         const float t175 = (t151 + t174);  /* ad.py:163 */
-        const float t177 = (0x1.1eed8e0000000p-29f * t159);  /* ad.py:163 */
-        const float t179 = (t177 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t177 = (0x1.1eed8ep-29f * t159);  /* ad.py:163 */
+        const float t179 = (t177 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t180 = (t179 * t159);  /* ad.py:163 */
-        const float t182 = (t180 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t182 = (t180 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t183 = (t182 * t159);  /* ad.py:163 */
-        const float t185 = (t183 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t185 = (t183 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t186 = (t185 * t159);  /* ad.py:163 */
-        const float t188 = (t186 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t189 = (0x1.0000000000000p-1f * t159);  /* ad.py:163 */
-        const float t191 = (0x1.0000000000000p+0f - t189);  /* ad.py:163 */
+        const float t188 = (t186 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t189 = (0x1p-1f * t159);  /* ad.py:163 */
+        const float t191 = (0x1p+0f - t189);  /* ad.py:163 */
         const float t192 = (t159 * t159);  /* ad.py:163 */
         const float t193 = (t192 * t188);  /* ad.py:163 */
         const float t194 = (t191 + t193);  /* ad.py:163 */
-        const int t195 = (t158 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t197 = (t158 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t199 = (t158 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t195 = (t158 < 0x1p-1f);  /* ad.py:163 */
+        const int t197 = (t158 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t199 = (t158 < 0x1.4p+1f);  /* ad.py:163 */
         const float t200 = (-t175);  /* ad.py:163 */
         const float t201 = (-t194);  /* ad.py:163 */
         const float t202 = (t199 ? t200 : t201);  /* ad.py:163 */
@@ -418,51 +418,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t216 = (t210 * x_zd0);  /* ad.py:104 */
         const float t217 = (-t210);  /* ad.py:40 */
         const float t218 = (-t216);  /* ad.py:40 */
-        const float t219 = (x_z1 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t220 = (t219 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t221_a = ((-0x1.0000000000000p+30f < t220) ? t220 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t221_b = ((t221_a < 0x1.0000000000000p+30f) ? t221_a : 0x1.0000000000000p+30f);
+        const float t219 = (x_z1 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t220 = (t219 + 0x1p-1f);  /* ad.py:163 */
+        const float t221_a = ((-0x1p+30f < t220) ? t220 : -0x1p+30f);  /* ad.py:163 */
+        const float t221_b = ((t221_a < 0x1p+30f) ? t221_a : 0x1p+30f);
         const float t221_i = ((float)((int32_t)t221_b));
-        const float t221 = ((t221_b < t221_i) ? (t221_i - 0x1.0000000000000p+0f) : t221_i);
-        const float t222 = (t221 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t221 = ((t221_b < t221_i) ? (t221_i - 0x1p+0f) : t221_i);
+        const float t222 = (t221 * 0x1.92p+0f);  /* ad.py:163 */
         const float t223 = (x_z1 - t222);  /* ad.py:163 */
-        const float t224 = (t221 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t224 = (t221 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t225 = (t223 - t224);  /* ad.py:163 */
-        const float t227 = (t221 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t228_a = ((-0x1.0000000000000p+30f < t227) ? t227 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t228_b = ((t228_a < 0x1.0000000000000p+30f) ? t228_a : 0x1.0000000000000p+30f);
+        const float t227 = (t221 * 0x1p-2f);  /* ad.py:163 */
+        const float t228_a = ((-0x1p+30f < t227) ? t227 : -0x1p+30f);  /* ad.py:163 */
+        const float t228_b = ((t228_a < 0x1p+30f) ? t228_a : 0x1p+30f);
         const float t228_i = ((float)((int32_t)t228_b));
-        const float t228 = ((t228_b < t228_i) ? (t228_i - 0x1.0000000000000p+0f) : t228_i);
-        const float t229 = (0x1.0000000000000p+2f * t228);  /* ad.py:163 */
+        const float t228 = ((t228_b < t228_i) ? (t228_i - 0x1p+0f) : t228_i);
+        const float t229 = (0x1p+2f * t228);  /* ad.py:163 */
         const float t230 = (t221 - t229);  /* ad.py:163 */
         const float t231 = (t225 * t225);  /* ad.py:163 */
-        const float t232 = (-0x1.ae64560000000p-26f * t231);  /* ad.py:163 */
-        const float t233 = (t232 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t232 = (-0x1.ae6456p-26f * t231);  /* ad.py:163 */
+        const float t233 = (t232 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t234 = (t233 * t231);  /* ad.py:163 */
-        const float t235 = (t234 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t235 = (t234 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t236 = (t235 * t231);  /* ad.py:163 */
-        const float t237 = (t236 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t237 = (t236 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t238 = (t237 * t231);  /* ad.py:163 */
-        const float t239 = (t238 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t239 = (t238 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t240 = (t225 * t231);  /* ad.py:163 */
         const float t241 = (t240 * t239);  /* ad.py:163 */
         const float t242 = (t225 + t241);  /* ad.py:163 */
-        const float t243 = (0x1.1eed8e0000000p-29f * t231);  /* ad.py:163 */
-        const float t244 = (t243 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t243 = (0x1.1eed8ep-29f * t231);  /* ad.py:163 */
+        const float t244 = (t243 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t245 = (t244 * t231);  /* ad.py:163 */
-        const float t246 = (t245 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t246 = (t245 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t247 = (t246 * t231);  /* ad.py:163 */
-        const float t248 = (t247 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t248 = (t247 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t249 = (t248 * t231);  /* ad.py:163 */
-        const float t250 = (t249 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t251 = (0x1.0000000000000p-1f * t231);  /* ad.py:163 */
-        const float t252 = (0x1.0000000000000p+0f - t251);  /* ad.py:163 */
+        const float t250 = (t249 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t251 = (0x1p-1f * t231);  /* ad.py:163 */
+        const float t252 = (0x1p+0f - t251);  /* ad.py:163 */
         const float t253 = (t231 * t231);  /* ad.py:163 */
         const float t254 = (t253 * t250);  /* ad.py:163 */
         const float t255 = (t252 + t254);  /* ad.py:163 */
-        const int t256 = (t230 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t257 = (t230 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t258 = (t230 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t256 = (t230 < 0x1p-1f);  /* ad.py:163 */
+        const int t257 = (t230 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t258 = (t230 < 0x1.4p+1f);  /* ad.py:163 */
         const float t259 = (-t242);  /* ad.py:163 */
         const float t260 = (-t255);  /* ad.py:163 */
         const float t261 = (t258 ? t259 : t260);  /* ad.py:163 */
@@ -545,7 +545,7 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t340 = (p_L2 * t266);  /* ad.py:116 */
         const float t341 = (p_L2 * t270);  /* ad.py:116 */
         const float t342 = (-t341);  /* ad.py:87 */
-        const float t344 = (-0x1.0000000000000p+0f * x_te1);  /* mbs.py:99 */
+        const float t344 = (-0x1p+0f * x_te1);  /* mbs.py:99 */
         const float t345 = (x_te0 + t344);  /* mbs.py:99 */
         const float t346 = (t278 * x_te2);  /* mbs.py:99 */
         const float t347 = (t345 + t346);  /* mbs.py:99 */
@@ -557,14 +557,14 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t353 = (t342 * x_te3);  /* mbs.py:99 */
         const float t354 = (t352 + t353);  /* mbs.py:99 */
         const float t355 = (t339 + t354);  /* mbs.py:99 */
-        const float t357 = ((0x1.12e0be0000000p-30f < t314) ? t314 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t358 = (0x1.0000000000000p+0f / t357);  /* mbs.py:158 */
+        const float t357 = ((0x1.12e0bep-30f < t314) ? t314 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t358 = (0x1p+0f / t357);  /* mbs.py:158 */
         const float t359 = (t317 * t358);  /* mbs.py:163 */
         const float t360 = (t359 * t359);  /* mbs.py:156 */
         const float t361 = (t360 * t314);  /* mbs.py:156 */
         const float t362 = (t321 - t361);  /* mbs.py:156 */
-        const float t363 = ((0x1.12e0be0000000p-30f < t362) ? t362 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t364 = (0x1.0000000000000p+0f / t363);  /* mbs.py:158 */
+        const float t363 = ((0x1.12e0bep-30f < t362) ? t362 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t364 = (0x1p+0f / t363);  /* mbs.py:158 */
         const float t365 = (t359 * t350);  /* mbs.py:172 */
         const float t366 = (t355 - t365);  /* mbs.py:172 */
         const float t367 = (t350 * t358);  /* mbs.py:173 */
@@ -575,9 +575,9 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t372 = (t371 * t364);  /* mbs.py:173 */
         const float t373 = (t359 * t372);  /* mbs.py:177 */
         const float t374 = (t358 - t373);  /* mbs.py:177 */
-        const float t375 = (t359 * -0x1.0000000000000p+0f);  /* mbs.py:172 */
-        const float t376 = (0x1.0000000000000p+0f - t375);  /* mbs.py:172 */
-        const float t377 = (-0x1.0000000000000p+0f * t358);  /* mbs.py:173 */
+        const float t375 = (t359 * -0x1p+0f);  /* mbs.py:172 */
+        const float t376 = (0x1p+0f - t375);  /* mbs.py:172 */
+        const float t377 = (-0x1p+0f * t358);  /* mbs.py:173 */
         const float t378 = (t376 * t364);  /* mbs.py:173 */
         const float t379 = (t359 * t378);  /* mbs.py:177 */
         const float t380 = (t377 - t379);  /* mbs.py:177 */
@@ -790,7 +790,7 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t587 = (p_q_torque * u_dt);  /* ekf.py:121 */
         const float t588 = (p_q_force * u_dt);  /* ekf.py:121 */
         const float t589 = (u_dt * u_dt);  /* ekf.py:224 */
-        const float t590 = (t589 * 0x1.0000000000000p-1f);  /* ekf.py:224 */
+        const float t590 = (t589 * 0x1p-1f);  /* ekf.py:224 */
         const float t591 = (t579 * t590);  /* ekf.py:121 */
         const float t592 = (t580 * t590);  /* ekf.py:121 */
         const float t593 = (t581 * t590);  /* ekf.py:121 */
@@ -821,7 +821,7 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t618 = (t586 * t390);  /* ekf.py:139 */
         const float t619 = (t617 + t618);  /* ekf.py:139 */
         const float t620 = (t589 * u_dt);  /* ekf.py:225 */
-        const float t622 = (t620 * 0x1.5555560000000p-2f);  /* ekf.py:225 */
+        const float t622 = (t620 * 0x1.555556p-2f);  /* ekf.py:225 */
         const float t623 = (t605 * t622);  /* ekf.py:121 */
         const float t624 = (t612 * t622);  /* ekf.py:121 */
         const float t625 = (t619 * t622);  /* ekf.py:121 */
@@ -841,8 +841,8 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t639 = (t378 * u_dt);  /* ekf.py:121 */
         const float t640 = (t384 * u_dt);  /* ekf.py:121 */
         const float t641 = (t390 * u_dt);  /* ekf.py:121 */
-        const float t642 = (0x1.0000000000000p+0f + t628);  /* ekf.py:117 */
-        const float t643 = (0x1.0000000000000p+0f + t637);  /* ekf.py:117 */
+        const float t642 = (0x1p+0f + t628);  /* ekf.py:117 */
+        const float t643 = (0x1p+0f + t637);  /* ekf.py:117 */
         const float t644 = (t572 * t560);  /* ekf.py:113 */
         const float t645 = (t578 * t558);  /* ekf.py:113 */
         const float t646 = (t644 + t645);  /* ekf.py:113 */
@@ -926,9 +926,9 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t724 = (t688 * t590);  /* ekf.py:121 */
         const float t725 = (t691 * t590);  /* ekf.py:121 */
         const float t726 = (t694 * t590);  /* ekf.py:121 */
-        const float t727 = (0x1.0000000000000p+0f + t695);  /* ekf.py:117 */
+        const float t727 = (0x1p+0f + t695);  /* ekf.py:117 */
         const float t728 = (u_dt + t697);  /* ekf.py:117 */
-        const float t729 = (0x1.0000000000000p+0f + t704);  /* ekf.py:117 */
+        const float t729 = (0x1p+0f + t704);  /* ekf.py:117 */
         const float t730 = (u_dt + t706);  /* ekf.py:117 */
         const float t731 = (t626 + t711);  /* ekf.py:117 */
         const float t732 = (t627 + t712);  /* ekf.py:117 */
@@ -1591,7 +1591,7 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t1389 = (x_P30 + t587);  /* ekf.py:117 */
         const float t1390 = (x_P33 + t588);  /* ekf.py:117 */
         const float t1391 = (x_P35 + t588);  /* ekf.py:117 */
-        const float t1392 = (u_dt * 0x1.0000000000000p-1f);  /* ekf.py:256 */
+        const float t1392 = (u_dt * 0x1p-1f);  /* ekf.py:256 */
         const float t1393 = (t1392 * x_zd0);  /* ekf.py:242 */
         const float t1394 = (x_z0 + t1393);  /* ekf.py:242 */
         const float t1395 = (t1392 * x_zd1);  /* ekf.py:242 */
@@ -1600,51 +1600,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t1398 = (x_zd0 + t1397);  /* ekf.py:242 */
         const float t1399 = (t1392 * t368);  /* ekf.py:242 */
         const float t1400 = (x_zd1 + t1399);  /* ekf.py:242 */
-        const float t1401 = (t1394 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t1402 = (t1401 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t1403_a = ((-0x1.0000000000000p+30f < t1402) ? t1402 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1403_b = ((t1403_a < 0x1.0000000000000p+30f) ? t1403_a : 0x1.0000000000000p+30f);
+        const float t1401 = (t1394 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t1402 = (t1401 + 0x1p-1f);  /* ad.py:163 */
+        const float t1403_a = ((-0x1p+30f < t1402) ? t1402 : -0x1p+30f);  /* ad.py:163 */
+        const float t1403_b = ((t1403_a < 0x1p+30f) ? t1403_a : 0x1p+30f);
         const float t1403_i = ((float)((int32_t)t1403_b));
-        const float t1403 = ((t1403_b < t1403_i) ? (t1403_i - 0x1.0000000000000p+0f) : t1403_i);
-        const float t1404 = (t1403 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t1403 = ((t1403_b < t1403_i) ? (t1403_i - 0x1p+0f) : t1403_i);
+        const float t1404 = (t1403 * 0x1.92p+0f);  /* ad.py:163 */
         const float t1405 = (t1394 - t1404);  /* ad.py:163 */
-        const float t1406 = (t1403 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t1406 = (t1403 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t1407 = (t1405 - t1406);  /* ad.py:163 */
-        const float t1409 = (t1403 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t1410_a = ((-0x1.0000000000000p+30f < t1409) ? t1409 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1410_b = ((t1410_a < 0x1.0000000000000p+30f) ? t1410_a : 0x1.0000000000000p+30f);
+        const float t1409 = (t1403 * 0x1p-2f);  /* ad.py:163 */
+        const float t1410_a = ((-0x1p+30f < t1409) ? t1409 : -0x1p+30f);  /* ad.py:163 */
+        const float t1410_b = ((t1410_a < 0x1p+30f) ? t1410_a : 0x1p+30f);
         const float t1410_i = ((float)((int32_t)t1410_b));
-        const float t1410 = ((t1410_b < t1410_i) ? (t1410_i - 0x1.0000000000000p+0f) : t1410_i);
-        const float t1411 = (0x1.0000000000000p+2f * t1410);  /* ad.py:163 */
+        const float t1410 = ((t1410_b < t1410_i) ? (t1410_i - 0x1p+0f) : t1410_i);
+        const float t1411 = (0x1p+2f * t1410);  /* ad.py:163 */
         const float t1412 = (t1403 - t1411);  /* ad.py:163 */
         const float t1413 = (t1407 * t1407);  /* ad.py:163 */
-        const float t1414 = (-0x1.ae64560000000p-26f * t1413);  /* ad.py:163 */
-        const float t1415 = (t1414 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t1414 = (-0x1.ae6456p-26f * t1413);  /* ad.py:163 */
+        const float t1415 = (t1414 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t1416 = (t1415 * t1413);  /* ad.py:163 */
-        const float t1417 = (t1416 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t1417 = (t1416 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t1418 = (t1417 * t1413);  /* ad.py:163 */
-        const float t1419 = (t1418 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t1419 = (t1418 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t1420 = (t1419 * t1413);  /* ad.py:163 */
-        const float t1421 = (t1420 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t1421 = (t1420 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t1422 = (t1407 * t1413);  /* ad.py:163 */
         const float t1423 = (t1422 * t1421);  /* ad.py:163 */
         const float t1424 = (t1407 + t1423);  /* ad.py:163 */
-        const float t1425 = (0x1.1eed8e0000000p-29f * t1413);  /* ad.py:163 */
-        const float t1426 = (t1425 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t1425 = (0x1.1eed8ep-29f * t1413);  /* ad.py:163 */
+        const float t1426 = (t1425 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t1427 = (t1426 * t1413);  /* ad.py:163 */
-        const float t1428 = (t1427 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t1428 = (t1427 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t1429 = (t1428 * t1413);  /* ad.py:163 */
-        const float t1430 = (t1429 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t1430 = (t1429 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t1431 = (t1430 * t1413);  /* ad.py:163 */
-        const float t1432 = (t1431 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t1433 = (0x1.0000000000000p-1f * t1413);  /* ad.py:163 */
-        const float t1434 = (0x1.0000000000000p+0f - t1433);  /* ad.py:163 */
+        const float t1432 = (t1431 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t1433 = (0x1p-1f * t1413);  /* ad.py:163 */
+        const float t1434 = (0x1p+0f - t1433);  /* ad.py:163 */
         const float t1435 = (t1413 * t1413);  /* ad.py:163 */
         const float t1436 = (t1435 * t1432);  /* ad.py:163 */
         const float t1437 = (t1434 + t1436);  /* ad.py:163 */
-        const int t1438 = (t1412 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t1439 = (t1412 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t1440 = (t1412 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t1438 = (t1412 < 0x1p-1f);  /* ad.py:163 */
+        const int t1439 = (t1412 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t1440 = (t1412 < 0x1.4p+1f);  /* ad.py:163 */
         const float t1441 = (-t1424);  /* ad.py:163 */
         const float t1442 = (-t1437);  /* ad.py:163 */
         const float t1443 = (t1440 ? t1441 : t1442);  /* ad.py:163 */
@@ -1660,51 +1660,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t1455 = (t1454 * t1398);  /* ad.py:104 */
         const float t1456 = (t1451 * t1398);  /* ad.py:104 */
         const float t1457 = (-t1456);  /* ad.py:40 */
-        const float t1458 = (t1396 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t1459 = (t1458 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t1460_a = ((-0x1.0000000000000p+30f < t1459) ? t1459 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1460_b = ((t1460_a < 0x1.0000000000000p+30f) ? t1460_a : 0x1.0000000000000p+30f);
+        const float t1458 = (t1396 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t1459 = (t1458 + 0x1p-1f);  /* ad.py:163 */
+        const float t1460_a = ((-0x1p+30f < t1459) ? t1459 : -0x1p+30f);  /* ad.py:163 */
+        const float t1460_b = ((t1460_a < 0x1p+30f) ? t1460_a : 0x1p+30f);
         const float t1460_i = ((float)((int32_t)t1460_b));
-        const float t1460 = ((t1460_b < t1460_i) ? (t1460_i - 0x1.0000000000000p+0f) : t1460_i);
-        const float t1461 = (t1460 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t1460 = ((t1460_b < t1460_i) ? (t1460_i - 0x1p+0f) : t1460_i);
+        const float t1461 = (t1460 * 0x1.92p+0f);  /* ad.py:163 */
         const float t1462 = (t1396 - t1461);  /* ad.py:163 */
-        const float t1463 = (t1460 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t1463 = (t1460 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t1464 = (t1462 - t1463);  /* ad.py:163 */
-        const float t1466 = (t1460 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t1467_a = ((-0x1.0000000000000p+30f < t1466) ? t1466 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1467_b = ((t1467_a < 0x1.0000000000000p+30f) ? t1467_a : 0x1.0000000000000p+30f);
+        const float t1466 = (t1460 * 0x1p-2f);  /* ad.py:163 */
+        const float t1467_a = ((-0x1p+30f < t1466) ? t1466 : -0x1p+30f);  /* ad.py:163 */
+        const float t1467_b = ((t1467_a < 0x1p+30f) ? t1467_a : 0x1p+30f);
         const float t1467_i = ((float)((int32_t)t1467_b));
-        const float t1467 = ((t1467_b < t1467_i) ? (t1467_i - 0x1.0000000000000p+0f) : t1467_i);
-        const float t1468 = (0x1.0000000000000p+2f * t1467);  /* ad.py:163 */
+        const float t1467 = ((t1467_b < t1467_i) ? (t1467_i - 0x1p+0f) : t1467_i);
+        const float t1468 = (0x1p+2f * t1467);  /* ad.py:163 */
         const float t1469 = (t1460 - t1468);  /* ad.py:163 */
         const float t1470 = (t1464 * t1464);  /* ad.py:163 */
-        const float t1471 = (-0x1.ae64560000000p-26f * t1470);  /* ad.py:163 */
-        const float t1472 = (t1471 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t1471 = (-0x1.ae6456p-26f * t1470);  /* ad.py:163 */
+        const float t1472 = (t1471 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t1473 = (t1472 * t1470);  /* ad.py:163 */
-        const float t1474 = (t1473 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t1474 = (t1473 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t1475 = (t1474 * t1470);  /* ad.py:163 */
-        const float t1476 = (t1475 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t1476 = (t1475 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t1477 = (t1476 * t1470);  /* ad.py:163 */
-        const float t1478 = (t1477 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t1478 = (t1477 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t1479 = (t1464 * t1470);  /* ad.py:163 */
         const float t1480 = (t1479 * t1478);  /* ad.py:163 */
         const float t1481 = (t1464 + t1480);  /* ad.py:163 */
-        const float t1482 = (0x1.1eed8e0000000p-29f * t1470);  /* ad.py:163 */
-        const float t1483 = (t1482 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t1482 = (0x1.1eed8ep-29f * t1470);  /* ad.py:163 */
+        const float t1483 = (t1482 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t1484 = (t1483 * t1470);  /* ad.py:163 */
-        const float t1485 = (t1484 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t1485 = (t1484 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t1486 = (t1485 * t1470);  /* ad.py:163 */
-        const float t1487 = (t1486 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t1487 = (t1486 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t1488 = (t1487 * t1470);  /* ad.py:163 */
-        const float t1489 = (t1488 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t1490 = (0x1.0000000000000p-1f * t1470);  /* ad.py:163 */
-        const float t1491 = (0x1.0000000000000p+0f - t1490);  /* ad.py:163 */
+        const float t1489 = (t1488 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t1490 = (0x1p-1f * t1470);  /* ad.py:163 */
+        const float t1491 = (0x1p+0f - t1490);  /* ad.py:163 */
         const float t1492 = (t1470 * t1470);  /* ad.py:163 */
         const float t1493 = (t1492 * t1489);  /* ad.py:163 */
         const float t1494 = (t1491 + t1493);  /* ad.py:163 */
-        const int t1495 = (t1469 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t1496 = (t1469 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t1497 = (t1469 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t1495 = (t1469 < 0x1p-1f);  /* ad.py:163 */
+        const int t1496 = (t1469 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t1497 = (t1469 < 0x1.4p+1f);  /* ad.py:163 */
         const float t1498 = (-t1481);  /* ad.py:163 */
         const float t1499 = (-t1494);  /* ad.py:163 */
         const float t1500 = (t1497 ? t1498 : t1499);  /* ad.py:163 */
@@ -1791,14 +1791,14 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t1583 = (t1575 * x_te3);  /* mbs.py:99 */
         const float t1584 = (t1582 + t1583);  /* mbs.py:99 */
         const float t1585 = (t1572 + t1584);  /* mbs.py:99 */
-        const float t1586 = ((0x1.12e0be0000000p-30f < t1547) ? t1547 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t1587 = (0x1.0000000000000p+0f / t1586);  /* mbs.py:158 */
+        const float t1586 = ((0x1.12e0bep-30f < t1547) ? t1547 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t1587 = (0x1p+0f / t1586);  /* mbs.py:158 */
         const float t1588 = (t1550 * t1587);  /* mbs.py:163 */
         const float t1589 = (t1588 * t1588);  /* mbs.py:156 */
         const float t1590 = (t1589 * t1547);  /* mbs.py:156 */
         const float t1591 = (t1554 - t1590);  /* mbs.py:156 */
-        const float t1592 = ((0x1.12e0be0000000p-30f < t1591) ? t1591 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t1593 = (0x1.0000000000000p+0f / t1592);  /* mbs.py:158 */
+        const float t1592 = ((0x1.12e0bep-30f < t1591) ? t1591 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t1593 = (0x1p+0f / t1592);  /* mbs.py:158 */
         const float t1594 = (t1588 * t1580);  /* mbs.py:172 */
         const float t1595 = (t1585 - t1594);  /* mbs.py:172 */
         const float t1596 = (t1580 * t1587);  /* mbs.py:173 */
@@ -1813,51 +1813,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t1605 = (x_zd0 + t1604);  /* ekf.py:242 */
         const float t1606 = (t1392 * t1597);  /* ekf.py:242 */
         const float t1607 = (x_zd1 + t1606);  /* ekf.py:242 */
-        const float t1608 = (t1601 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t1609 = (t1608 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t1610_a = ((-0x1.0000000000000p+30f < t1609) ? t1609 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1610_b = ((t1610_a < 0x1.0000000000000p+30f) ? t1610_a : 0x1.0000000000000p+30f);
+        const float t1608 = (t1601 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t1609 = (t1608 + 0x1p-1f);  /* ad.py:163 */
+        const float t1610_a = ((-0x1p+30f < t1609) ? t1609 : -0x1p+30f);  /* ad.py:163 */
+        const float t1610_b = ((t1610_a < 0x1p+30f) ? t1610_a : 0x1p+30f);
         const float t1610_i = ((float)((int32_t)t1610_b));
-        const float t1610 = ((t1610_b < t1610_i) ? (t1610_i - 0x1.0000000000000p+0f) : t1610_i);
-        const float t1611 = (t1610 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t1610 = ((t1610_b < t1610_i) ? (t1610_i - 0x1p+0f) : t1610_i);
+        const float t1611 = (t1610 * 0x1.92p+0f);  /* ad.py:163 */
         const float t1612 = (t1601 - t1611);  /* ad.py:163 */
-        const float t1613 = (t1610 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t1613 = (t1610 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t1614 = (t1612 - t1613);  /* ad.py:163 */
-        const float t1616 = (t1610 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t1617_a = ((-0x1.0000000000000p+30f < t1616) ? t1616 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1617_b = ((t1617_a < 0x1.0000000000000p+30f) ? t1617_a : 0x1.0000000000000p+30f);
+        const float t1616 = (t1610 * 0x1p-2f);  /* ad.py:163 */
+        const float t1617_a = ((-0x1p+30f < t1616) ? t1616 : -0x1p+30f);  /* ad.py:163 */
+        const float t1617_b = ((t1617_a < 0x1p+30f) ? t1617_a : 0x1p+30f);
         const float t1617_i = ((float)((int32_t)t1617_b));
-        const float t1617 = ((t1617_b < t1617_i) ? (t1617_i - 0x1.0000000000000p+0f) : t1617_i);
-        const float t1618 = (0x1.0000000000000p+2f * t1617);  /* ad.py:163 */
+        const float t1617 = ((t1617_b < t1617_i) ? (t1617_i - 0x1p+0f) : t1617_i);
+        const float t1618 = (0x1p+2f * t1617);  /* ad.py:163 */
         const float t1619 = (t1610 - t1618);  /* ad.py:163 */
         const float t1620 = (t1614 * t1614);  /* ad.py:163 */
-        const float t1621 = (-0x1.ae64560000000p-26f * t1620);  /* ad.py:163 */
-        const float t1622 = (t1621 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t1621 = (-0x1.ae6456p-26f * t1620);  /* ad.py:163 */
+        const float t1622 = (t1621 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t1623 = (t1622 * t1620);  /* ad.py:163 */
-        const float t1624 = (t1623 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t1624 = (t1623 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t1625 = (t1624 * t1620);  /* ad.py:163 */
-        const float t1626 = (t1625 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t1626 = (t1625 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t1627 = (t1626 * t1620);  /* ad.py:163 */
-        const float t1628 = (t1627 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t1628 = (t1627 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t1629 = (t1614 * t1620);  /* ad.py:163 */
         const float t1630 = (t1629 * t1628);  /* ad.py:163 */
         const float t1631 = (t1614 + t1630);  /* ad.py:163 */
-        const float t1632 = (0x1.1eed8e0000000p-29f * t1620);  /* ad.py:163 */
-        const float t1633 = (t1632 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t1632 = (0x1.1eed8ep-29f * t1620);  /* ad.py:163 */
+        const float t1633 = (t1632 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t1634 = (t1633 * t1620);  /* ad.py:163 */
-        const float t1635 = (t1634 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t1635 = (t1634 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t1636 = (t1635 * t1620);  /* ad.py:163 */
-        const float t1637 = (t1636 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t1637 = (t1636 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t1638 = (t1637 * t1620);  /* ad.py:163 */
-        const float t1639 = (t1638 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t1640 = (0x1.0000000000000p-1f * t1620);  /* ad.py:163 */
-        const float t1641 = (0x1.0000000000000p+0f - t1640);  /* ad.py:163 */
+        const float t1639 = (t1638 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t1640 = (0x1p-1f * t1620);  /* ad.py:163 */
+        const float t1641 = (0x1p+0f - t1640);  /* ad.py:163 */
         const float t1642 = (t1620 * t1620);  /* ad.py:163 */
         const float t1643 = (t1642 * t1639);  /* ad.py:163 */
         const float t1644 = (t1641 + t1643);  /* ad.py:163 */
-        const int t1645 = (t1619 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t1646 = (t1619 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t1647 = (t1619 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t1645 = (t1619 < 0x1p-1f);  /* ad.py:163 */
+        const int t1646 = (t1619 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t1647 = (t1619 < 0x1.4p+1f);  /* ad.py:163 */
         const float t1648 = (-t1631);  /* ad.py:163 */
         const float t1649 = (-t1644);  /* ad.py:163 */
         const float t1650 = (t1647 ? t1648 : t1649);  /* ad.py:163 */
@@ -1873,51 +1873,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t1662 = (t1661 * t1605);  /* ad.py:104 */
         const float t1663 = (t1658 * t1605);  /* ad.py:104 */
         const float t1664 = (-t1663);  /* ad.py:40 */
-        const float t1665 = (t1603 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t1666 = (t1665 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t1667_a = ((-0x1.0000000000000p+30f < t1666) ? t1666 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1667_b = ((t1667_a < 0x1.0000000000000p+30f) ? t1667_a : 0x1.0000000000000p+30f);
+        const float t1665 = (t1603 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t1666 = (t1665 + 0x1p-1f);  /* ad.py:163 */
+        const float t1667_a = ((-0x1p+30f < t1666) ? t1666 : -0x1p+30f);  /* ad.py:163 */
+        const float t1667_b = ((t1667_a < 0x1p+30f) ? t1667_a : 0x1p+30f);
         const float t1667_i = ((float)((int32_t)t1667_b));
-        const float t1667 = ((t1667_b < t1667_i) ? (t1667_i - 0x1.0000000000000p+0f) : t1667_i);
-        const float t1668 = (t1667 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t1667 = ((t1667_b < t1667_i) ? (t1667_i - 0x1p+0f) : t1667_i);
+        const float t1668 = (t1667 * 0x1.92p+0f);  /* ad.py:163 */
         const float t1669 = (t1603 - t1668);  /* ad.py:163 */
-        const float t1670 = (t1667 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t1670 = (t1667 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t1671 = (t1669 - t1670);  /* ad.py:163 */
-        const float t1673 = (t1667 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t1674_a = ((-0x1.0000000000000p+30f < t1673) ? t1673 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1674_b = ((t1674_a < 0x1.0000000000000p+30f) ? t1674_a : 0x1.0000000000000p+30f);
+        const float t1673 = (t1667 * 0x1p-2f);  /* ad.py:163 */
+        const float t1674_a = ((-0x1p+30f < t1673) ? t1673 : -0x1p+30f);  /* ad.py:163 */
+        const float t1674_b = ((t1674_a < 0x1p+30f) ? t1674_a : 0x1p+30f);
         const float t1674_i = ((float)((int32_t)t1674_b));
-        const float t1674 = ((t1674_b < t1674_i) ? (t1674_i - 0x1.0000000000000p+0f) : t1674_i);
-        const float t1675 = (0x1.0000000000000p+2f * t1674);  /* ad.py:163 */
+        const float t1674 = ((t1674_b < t1674_i) ? (t1674_i - 0x1p+0f) : t1674_i);
+        const float t1675 = (0x1p+2f * t1674);  /* ad.py:163 */
         const float t1676 = (t1667 - t1675);  /* ad.py:163 */
         const float t1677 = (t1671 * t1671);  /* ad.py:163 */
-        const float t1678 = (-0x1.ae64560000000p-26f * t1677);  /* ad.py:163 */
-        const float t1679 = (t1678 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t1678 = (-0x1.ae6456p-26f * t1677);  /* ad.py:163 */
+        const float t1679 = (t1678 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t1680 = (t1679 * t1677);  /* ad.py:163 */
-        const float t1681 = (t1680 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t1681 = (t1680 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t1682 = (t1681 * t1677);  /* ad.py:163 */
-        const float t1683 = (t1682 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t1683 = (t1682 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t1684 = (t1683 * t1677);  /* ad.py:163 */
-        const float t1685 = (t1684 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t1685 = (t1684 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t1686 = (t1671 * t1677);  /* ad.py:163 */
         const float t1687 = (t1686 * t1685);  /* ad.py:163 */
         const float t1688 = (t1671 + t1687);  /* ad.py:163 */
-        const float t1689 = (0x1.1eed8e0000000p-29f * t1677);  /* ad.py:163 */
-        const float t1690 = (t1689 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t1689 = (0x1.1eed8ep-29f * t1677);  /* ad.py:163 */
+        const float t1690 = (t1689 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t1691 = (t1690 * t1677);  /* ad.py:163 */
-        const float t1692 = (t1691 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t1692 = (t1691 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t1693 = (t1692 * t1677);  /* ad.py:163 */
-        const float t1694 = (t1693 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t1694 = (t1693 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t1695 = (t1694 * t1677);  /* ad.py:163 */
-        const float t1696 = (t1695 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t1697 = (0x1.0000000000000p-1f * t1677);  /* ad.py:163 */
-        const float t1698 = (0x1.0000000000000p+0f - t1697);  /* ad.py:163 */
+        const float t1696 = (t1695 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t1697 = (0x1p-1f * t1677);  /* ad.py:163 */
+        const float t1698 = (0x1p+0f - t1697);  /* ad.py:163 */
         const float t1699 = (t1677 * t1677);  /* ad.py:163 */
         const float t1700 = (t1699 * t1696);  /* ad.py:163 */
         const float t1701 = (t1698 + t1700);  /* ad.py:163 */
-        const int t1702 = (t1676 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t1703 = (t1676 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t1704 = (t1676 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t1702 = (t1676 < 0x1p-1f);  /* ad.py:163 */
+        const int t1703 = (t1676 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t1704 = (t1676 < 0x1.4p+1f);  /* ad.py:163 */
         const float t1705 = (-t1688);  /* ad.py:163 */
         const float t1706 = (-t1701);  /* ad.py:163 */
         const float t1707 = (t1704 ? t1705 : t1706);  /* ad.py:163 */
@@ -2004,14 +2004,14 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t1790 = (t1782 * x_te3);  /* mbs.py:99 */
         const float t1791 = (t1789 + t1790);  /* mbs.py:99 */
         const float t1792 = (t1779 + t1791);  /* mbs.py:99 */
-        const float t1793 = ((0x1.12e0be0000000p-30f < t1754) ? t1754 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t1794 = (0x1.0000000000000p+0f / t1793);  /* mbs.py:158 */
+        const float t1793 = ((0x1.12e0bep-30f < t1754) ? t1754 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t1794 = (0x1p+0f / t1793);  /* mbs.py:158 */
         const float t1795 = (t1757 * t1794);  /* mbs.py:163 */
         const float t1796 = (t1795 * t1795);  /* mbs.py:156 */
         const float t1797 = (t1796 * t1754);  /* mbs.py:156 */
         const float t1798 = (t1761 - t1797);  /* mbs.py:156 */
-        const float t1799 = ((0x1.12e0be0000000p-30f < t1798) ? t1798 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t1800 = (0x1.0000000000000p+0f / t1799);  /* mbs.py:158 */
+        const float t1799 = ((0x1.12e0bep-30f < t1798) ? t1798 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t1800 = (0x1p+0f / t1799);  /* mbs.py:158 */
         const float t1801 = (t1795 * t1787);  /* mbs.py:172 */
         const float t1802 = (t1792 - t1801);  /* mbs.py:172 */
         const float t1803 = (t1787 * t1794);  /* mbs.py:173 */
@@ -2026,51 +2026,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t1812 = (x_zd0 + t1811);  /* ekf.py:242 */
         const float t1813 = (u_dt * t1804);  /* ekf.py:242 */
         const float t1814 = (x_zd1 + t1813);  /* ekf.py:242 */
-        const float t1815 = (t1808 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t1816 = (t1815 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t1817_a = ((-0x1.0000000000000p+30f < t1816) ? t1816 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1817_b = ((t1817_a < 0x1.0000000000000p+30f) ? t1817_a : 0x1.0000000000000p+30f);
+        const float t1815 = (t1808 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t1816 = (t1815 + 0x1p-1f);  /* ad.py:163 */
+        const float t1817_a = ((-0x1p+30f < t1816) ? t1816 : -0x1p+30f);  /* ad.py:163 */
+        const float t1817_b = ((t1817_a < 0x1p+30f) ? t1817_a : 0x1p+30f);
         const float t1817_i = ((float)((int32_t)t1817_b));
-        const float t1817 = ((t1817_b < t1817_i) ? (t1817_i - 0x1.0000000000000p+0f) : t1817_i);
-        const float t1818 = (t1817 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t1817 = ((t1817_b < t1817_i) ? (t1817_i - 0x1p+0f) : t1817_i);
+        const float t1818 = (t1817 * 0x1.92p+0f);  /* ad.py:163 */
         const float t1819 = (t1808 - t1818);  /* ad.py:163 */
-        const float t1820 = (t1817 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t1820 = (t1817 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t1821 = (t1819 - t1820);  /* ad.py:163 */
-        const float t1823 = (t1817 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t1824_a = ((-0x1.0000000000000p+30f < t1823) ? t1823 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1824_b = ((t1824_a < 0x1.0000000000000p+30f) ? t1824_a : 0x1.0000000000000p+30f);
+        const float t1823 = (t1817 * 0x1p-2f);  /* ad.py:163 */
+        const float t1824_a = ((-0x1p+30f < t1823) ? t1823 : -0x1p+30f);  /* ad.py:163 */
+        const float t1824_b = ((t1824_a < 0x1p+30f) ? t1824_a : 0x1p+30f);
         const float t1824_i = ((float)((int32_t)t1824_b));
-        const float t1824 = ((t1824_b < t1824_i) ? (t1824_i - 0x1.0000000000000p+0f) : t1824_i);
-        const float t1825 = (0x1.0000000000000p+2f * t1824);  /* ad.py:163 */
+        const float t1824 = ((t1824_b < t1824_i) ? (t1824_i - 0x1p+0f) : t1824_i);
+        const float t1825 = (0x1p+2f * t1824);  /* ad.py:163 */
         const float t1826 = (t1817 - t1825);  /* ad.py:163 */
         const float t1827 = (t1821 * t1821);  /* ad.py:163 */
-        const float t1828 = (-0x1.ae64560000000p-26f * t1827);  /* ad.py:163 */
-        const float t1829 = (t1828 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t1828 = (-0x1.ae6456p-26f * t1827);  /* ad.py:163 */
+        const float t1829 = (t1828 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t1830 = (t1829 * t1827);  /* ad.py:163 */
-        const float t1831 = (t1830 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t1831 = (t1830 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t1832 = (t1831 * t1827);  /* ad.py:163 */
-        const float t1833 = (t1832 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t1833 = (t1832 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t1834 = (t1833 * t1827);  /* ad.py:163 */
-        const float t1835 = (t1834 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t1835 = (t1834 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t1836 = (t1821 * t1827);  /* ad.py:163 */
         const float t1837 = (t1836 * t1835);  /* ad.py:163 */
         const float t1838 = (t1821 + t1837);  /* ad.py:163 */
-        const float t1839 = (0x1.1eed8e0000000p-29f * t1827);  /* ad.py:163 */
-        const float t1840 = (t1839 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t1839 = (0x1.1eed8ep-29f * t1827);  /* ad.py:163 */
+        const float t1840 = (t1839 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t1841 = (t1840 * t1827);  /* ad.py:163 */
-        const float t1842 = (t1841 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t1842 = (t1841 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t1843 = (t1842 * t1827);  /* ad.py:163 */
-        const float t1844 = (t1843 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t1844 = (t1843 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t1845 = (t1844 * t1827);  /* ad.py:163 */
-        const float t1846 = (t1845 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t1847 = (0x1.0000000000000p-1f * t1827);  /* ad.py:163 */
-        const float t1848 = (0x1.0000000000000p+0f - t1847);  /* ad.py:163 */
+        const float t1846 = (t1845 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t1847 = (0x1p-1f * t1827);  /* ad.py:163 */
+        const float t1848 = (0x1p+0f - t1847);  /* ad.py:163 */
         const float t1849 = (t1827 * t1827);  /* ad.py:163 */
         const float t1850 = (t1849 * t1846);  /* ad.py:163 */
         const float t1851 = (t1848 + t1850);  /* ad.py:163 */
-        const int t1852 = (t1826 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t1853 = (t1826 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t1854 = (t1826 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t1852 = (t1826 < 0x1p-1f);  /* ad.py:163 */
+        const int t1853 = (t1826 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t1854 = (t1826 < 0x1.4p+1f);  /* ad.py:163 */
         const float t1855 = (-t1838);  /* ad.py:163 */
         const float t1856 = (-t1851);  /* ad.py:163 */
         const float t1857 = (t1854 ? t1855 : t1856);  /* ad.py:163 */
@@ -2086,51 +2086,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t1869 = (t1868 * t1812);  /* ad.py:104 */
         const float t1870 = (t1865 * t1812);  /* ad.py:104 */
         const float t1871 = (-t1870);  /* ad.py:40 */
-        const float t1872 = (t1810 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t1873 = (t1872 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t1874_a = ((-0x1.0000000000000p+30f < t1873) ? t1873 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1874_b = ((t1874_a < 0x1.0000000000000p+30f) ? t1874_a : 0x1.0000000000000p+30f);
+        const float t1872 = (t1810 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t1873 = (t1872 + 0x1p-1f);  /* ad.py:163 */
+        const float t1874_a = ((-0x1p+30f < t1873) ? t1873 : -0x1p+30f);  /* ad.py:163 */
+        const float t1874_b = ((t1874_a < 0x1p+30f) ? t1874_a : 0x1p+30f);
         const float t1874_i = ((float)((int32_t)t1874_b));
-        const float t1874 = ((t1874_b < t1874_i) ? (t1874_i - 0x1.0000000000000p+0f) : t1874_i);
-        const float t1875 = (t1874 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t1874 = ((t1874_b < t1874_i) ? (t1874_i - 0x1p+0f) : t1874_i);
+        const float t1875 = (t1874 * 0x1.92p+0f);  /* ad.py:163 */
         const float t1876 = (t1810 - t1875);  /* ad.py:163 */
-        const float t1877 = (t1874 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t1877 = (t1874 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t1878 = (t1876 - t1877);  /* ad.py:163 */
-        const float t1880 = (t1874 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t1881_a = ((-0x1.0000000000000p+30f < t1880) ? t1880 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t1881_b = ((t1881_a < 0x1.0000000000000p+30f) ? t1881_a : 0x1.0000000000000p+30f);
+        const float t1880 = (t1874 * 0x1p-2f);  /* ad.py:163 */
+        const float t1881_a = ((-0x1p+30f < t1880) ? t1880 : -0x1p+30f);  /* ad.py:163 */
+        const float t1881_b = ((t1881_a < 0x1p+30f) ? t1881_a : 0x1p+30f);
         const float t1881_i = ((float)((int32_t)t1881_b));
-        const float t1881 = ((t1881_b < t1881_i) ? (t1881_i - 0x1.0000000000000p+0f) : t1881_i);
-        const float t1882 = (0x1.0000000000000p+2f * t1881);  /* ad.py:163 */
+        const float t1881 = ((t1881_b < t1881_i) ? (t1881_i - 0x1p+0f) : t1881_i);
+        const float t1882 = (0x1p+2f * t1881);  /* ad.py:163 */
         const float t1883 = (t1874 - t1882);  /* ad.py:163 */
         const float t1884 = (t1878 * t1878);  /* ad.py:163 */
-        const float t1885 = (-0x1.ae64560000000p-26f * t1884);  /* ad.py:163 */
-        const float t1886 = (t1885 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t1885 = (-0x1.ae6456p-26f * t1884);  /* ad.py:163 */
+        const float t1886 = (t1885 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t1887 = (t1886 * t1884);  /* ad.py:163 */
-        const float t1888 = (t1887 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t1888 = (t1887 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t1889 = (t1888 * t1884);  /* ad.py:163 */
-        const float t1890 = (t1889 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t1890 = (t1889 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t1891 = (t1890 * t1884);  /* ad.py:163 */
-        const float t1892 = (t1891 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t1892 = (t1891 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t1893 = (t1878 * t1884);  /* ad.py:163 */
         const float t1894 = (t1893 * t1892);  /* ad.py:163 */
         const float t1895 = (t1878 + t1894);  /* ad.py:163 */
-        const float t1896 = (0x1.1eed8e0000000p-29f * t1884);  /* ad.py:163 */
-        const float t1897 = (t1896 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t1896 = (0x1.1eed8ep-29f * t1884);  /* ad.py:163 */
+        const float t1897 = (t1896 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t1898 = (t1897 * t1884);  /* ad.py:163 */
-        const float t1899 = (t1898 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t1899 = (t1898 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t1900 = (t1899 * t1884);  /* ad.py:163 */
-        const float t1901 = (t1900 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t1901 = (t1900 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t1902 = (t1901 * t1884);  /* ad.py:163 */
-        const float t1903 = (t1902 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t1904 = (0x1.0000000000000p-1f * t1884);  /* ad.py:163 */
-        const float t1905 = (0x1.0000000000000p+0f - t1904);  /* ad.py:163 */
+        const float t1903 = (t1902 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t1904 = (0x1p-1f * t1884);  /* ad.py:163 */
+        const float t1905 = (0x1p+0f - t1904);  /* ad.py:163 */
         const float t1906 = (t1884 * t1884);  /* ad.py:163 */
         const float t1907 = (t1906 * t1903);  /* ad.py:163 */
         const float t1908 = (t1905 + t1907);  /* ad.py:163 */
-        const int t1909 = (t1883 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t1910 = (t1883 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t1911 = (t1883 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t1909 = (t1883 < 0x1p-1f);  /* ad.py:163 */
+        const int t1910 = (t1883 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t1911 = (t1883 < 0x1.4p+1f);  /* ad.py:163 */
         const float t1912 = (-t1895);  /* ad.py:163 */
         const float t1913 = (-t1908);  /* ad.py:163 */
         const float t1914 = (t1911 ? t1912 : t1913);  /* ad.py:163 */
@@ -2217,94 +2217,94 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t1997 = (t1989 * x_te3);  /* mbs.py:99 */
         const float t1998 = (t1996 + t1997);  /* mbs.py:99 */
         const float t1999 = (t1986 + t1998);  /* mbs.py:99 */
-        const float t2000 = ((0x1.12e0be0000000p-30f < t1961) ? t1961 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t2001 = (0x1.0000000000000p+0f / t2000);  /* mbs.py:158 */
+        const float t2000 = ((0x1.12e0bep-30f < t1961) ? t1961 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t2001 = (0x1p+0f / t2000);  /* mbs.py:158 */
         const float t2002 = (t1964 * t2001);  /* mbs.py:163 */
         const float t2003 = (t2002 * t2002);  /* mbs.py:156 */
         const float t2004 = (t2003 * t1961);  /* mbs.py:156 */
         const float t2005 = (t1968 - t2004);  /* mbs.py:156 */
-        const float t2006 = ((0x1.12e0be0000000p-30f < t2005) ? t2005 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t2007 = (0x1.0000000000000p+0f / t2006);  /* mbs.py:158 */
+        const float t2006 = ((0x1.12e0bep-30f < t2005) ? t2005 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t2007 = (0x1p+0f / t2006);  /* mbs.py:158 */
         const float t2008 = (t2002 * t1994);  /* mbs.py:172 */
         const float t2009 = (t1999 - t2008);  /* mbs.py:172 */
         const float t2010 = (t1994 * t2001);  /* mbs.py:173 */
         const float t2011 = (t2009 * t2007);  /* mbs.py:173 */
         const float t2012 = (t2002 * t2011);  /* mbs.py:177 */
         const float t2013 = (t2010 - t2012);  /* mbs.py:177 */
-        const float t2015 = (u_dt * 0x1.5555560000000p-3f);  /* ekf.py:264 */
-        const float t2017 = (0x1.0000000000000p+1f * t1398);  /* ekf.py:265 */
+        const float t2015 = (u_dt * 0x1.555556p-3f);  /* ekf.py:264 */
+        const float t2017 = (0x1p+1f * t1398);  /* ekf.py:265 */
         const float t2018 = (x_zd0 + t2017);  /* ekf.py:265 */
-        const float t2019 = (0x1.0000000000000p+1f * t1605);  /* ekf.py:265 */
+        const float t2019 = (0x1p+1f * t1605);  /* ekf.py:265 */
         const float t2020 = (t2018 + t2019);  /* ekf.py:265 */
         const float t2021 = (t2020 + t1812);  /* ekf.py:265 */
         const float t2022 = (t2015 * t2021);  /* ekf.py:265 */
         const float t2023 = (x_z0 + t2022);  /* ekf.py:265 */
-        const float t2024 = (0x1.0000000000000p+1f * t1400);  /* ekf.py:265 */
+        const float t2024 = (0x1p+1f * t1400);  /* ekf.py:265 */
         const float t2025 = (x_zd1 + t2024);  /* ekf.py:265 */
-        const float t2026 = (0x1.0000000000000p+1f * t1607);  /* ekf.py:265 */
+        const float t2026 = (0x1p+1f * t1607);  /* ekf.py:265 */
         const float t2027 = (t2025 + t2026);  /* ekf.py:265 */
         const float t2028 = (t2027 + t1814);  /* ekf.py:265 */
         const float t2029 = (t2015 * t2028);  /* ekf.py:265 */
         const float t2030 = (x_z1 + t2029);  /* ekf.py:265 */
-        const float t2031 = (0x1.0000000000000p+1f * t1599);  /* ekf.py:267 */
+        const float t2031 = (0x1p+1f * t1599);  /* ekf.py:267 */
         const float t2032 = (t370 + t2031);  /* ekf.py:267 */
-        const float t2033 = (0x1.0000000000000p+1f * t1806);  /* ekf.py:267 */
+        const float t2033 = (0x1p+1f * t1806);  /* ekf.py:267 */
         const float t2034 = (t2032 + t2033);  /* ekf.py:267 */
         const float t2035 = (t2034 + t2013);  /* ekf.py:267 */
         const float t2036 = (t2015 * t2035);  /* ekf.py:267 */
         const float t2037 = (x_zd0 + t2036);  /* ekf.py:267 */
-        const float t2038 = (0x1.0000000000000p+1f * t1597);  /* ekf.py:267 */
+        const float t2038 = (0x1p+1f * t1597);  /* ekf.py:267 */
         const float t2039 = (t368 + t2038);  /* ekf.py:267 */
-        const float t2040 = (0x1.0000000000000p+1f * t1804);  /* ekf.py:267 */
+        const float t2040 = (0x1p+1f * t1804);  /* ekf.py:267 */
         const float t2041 = (t2039 + t2040);  /* ekf.py:267 */
         const float t2042 = (t2041 + t2011);  /* ekf.py:267 */
         const float t2043 = (t2015 * t2042);  /* ekf.py:267 */
         const float t2044 = (x_zd1 + t2043);  /* ekf.py:267 */
-        const float t2045 = (t2023 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t2046 = (t2045 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t2047_a = ((-0x1.0000000000000p+30f < t2046) ? t2046 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t2047_b = ((t2047_a < 0x1.0000000000000p+30f) ? t2047_a : 0x1.0000000000000p+30f);
+        const float t2045 = (t2023 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t2046 = (t2045 + 0x1p-1f);  /* ad.py:163 */
+        const float t2047_a = ((-0x1p+30f < t2046) ? t2046 : -0x1p+30f);  /* ad.py:163 */
+        const float t2047_b = ((t2047_a < 0x1p+30f) ? t2047_a : 0x1p+30f);
         const float t2047_i = ((float)((int32_t)t2047_b));
-        const float t2047 = ((t2047_b < t2047_i) ? (t2047_i - 0x1.0000000000000p+0f) : t2047_i);
-        const float t2048 = (t2047 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t2047 = ((t2047_b < t2047_i) ? (t2047_i - 0x1p+0f) : t2047_i);
+        const float t2048 = (t2047 * 0x1.92p+0f);  /* ad.py:163 */
         const float t2049 = (t2023 - t2048);  /* ad.py:163 */
-        const float t2050 = (t2047 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t2050 = (t2047 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t2051 = (t2049 - t2050);  /* ad.py:163 */
-        const float t2053 = (t2047 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t2054_a = ((-0x1.0000000000000p+30f < t2053) ? t2053 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t2054_b = ((t2054_a < 0x1.0000000000000p+30f) ? t2054_a : 0x1.0000000000000p+30f);
+        const float t2053 = (t2047 * 0x1p-2f);  /* ad.py:163 */
+        const float t2054_a = ((-0x1p+30f < t2053) ? t2053 : -0x1p+30f);  /* ad.py:163 */
+        const float t2054_b = ((t2054_a < 0x1p+30f) ? t2054_a : 0x1p+30f);
         const float t2054_i = ((float)((int32_t)t2054_b));
-        const float t2054 = ((t2054_b < t2054_i) ? (t2054_i - 0x1.0000000000000p+0f) : t2054_i);
-        const float t2055 = (0x1.0000000000000p+2f * t2054);  /* ad.py:163 */
+        const float t2054 = ((t2054_b < t2054_i) ? (t2054_i - 0x1p+0f) : t2054_i);
+        const float t2055 = (0x1p+2f * t2054);  /* ad.py:163 */
         const float t2056 = (t2047 - t2055);  /* ad.py:163 */
         const float t2057 = (t2051 * t2051);  /* ad.py:163 */
-        const float t2058 = (-0x1.ae64560000000p-26f * t2057);  /* ad.py:163 */
-        const float t2059 = (t2058 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t2058 = (-0x1.ae6456p-26f * t2057);  /* ad.py:163 */
+        const float t2059 = (t2058 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t2060 = (t2059 * t2057);  /* ad.py:163 */
-        const float t2061 = (t2060 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t2061 = (t2060 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t2062 = (t2061 * t2057);  /* ad.py:163 */
-        const float t2063 = (t2062 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t2063 = (t2062 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t2064 = (t2063 * t2057);  /* ad.py:163 */
-        const float t2065 = (t2064 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t2065 = (t2064 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t2066 = (t2051 * t2057);  /* ad.py:163 */
         const float t2067 = (t2066 * t2065);  /* ad.py:163 */
         const float t2068 = (t2051 + t2067);  /* ad.py:163 */
-        const float t2069 = (0x1.1eed8e0000000p-29f * t2057);  /* ad.py:163 */
-        const float t2070 = (t2069 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t2069 = (0x1.1eed8ep-29f * t2057);  /* ad.py:163 */
+        const float t2070 = (t2069 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t2071 = (t2070 * t2057);  /* ad.py:163 */
-        const float t2072 = (t2071 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t2072 = (t2071 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t2073 = (t2072 * t2057);  /* ad.py:163 */
-        const float t2074 = (t2073 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t2074 = (t2073 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t2075 = (t2074 * t2057);  /* ad.py:163 */
-        const float t2076 = (t2075 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t2077 = (0x1.0000000000000p-1f * t2057);  /* ad.py:163 */
-        const float t2078 = (0x1.0000000000000p+0f - t2077);  /* ad.py:163 */
+        const float t2076 = (t2075 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t2077 = (0x1p-1f * t2057);  /* ad.py:163 */
+        const float t2078 = (0x1p+0f - t2077);  /* ad.py:163 */
         const float t2079 = (t2057 * t2057);  /* ad.py:163 */
         const float t2080 = (t2079 * t2076);  /* ad.py:163 */
         const float t2081 = (t2078 + t2080);  /* ad.py:163 */
-        const int t2082 = (t2056 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t2083 = (t2056 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t2084 = (t2056 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t2082 = (t2056 < 0x1p-1f);  /* ad.py:163 */
+        const int t2083 = (t2056 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t2084 = (t2056 < 0x1.4p+1f);  /* ad.py:163 */
         const float t2085 = (-t2068);  /* ad.py:163 */
         const float t2086 = (-t2081);  /* ad.py:163 */
         const float t2087 = (t2084 ? t2085 : t2086);  /* ad.py:163 */
@@ -2322,51 +2322,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t2101 = (t2095 * t2037);  /* ad.py:104 */
         const float t2102 = (-t2095);  /* ad.py:40 */
         const float t2103 = (-t2101);  /* ad.py:40 */
-        const float t2104 = (t2030 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t2105 = (t2104 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t2106_a = ((-0x1.0000000000000p+30f < t2105) ? t2105 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t2106_b = ((t2106_a < 0x1.0000000000000p+30f) ? t2106_a : 0x1.0000000000000p+30f);
+        const float t2104 = (t2030 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t2105 = (t2104 + 0x1p-1f);  /* ad.py:163 */
+        const float t2106_a = ((-0x1p+30f < t2105) ? t2105 : -0x1p+30f);  /* ad.py:163 */
+        const float t2106_b = ((t2106_a < 0x1p+30f) ? t2106_a : 0x1p+30f);
         const float t2106_i = ((float)((int32_t)t2106_b));
-        const float t2106 = ((t2106_b < t2106_i) ? (t2106_i - 0x1.0000000000000p+0f) : t2106_i);
-        const float t2107 = (t2106 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t2106 = ((t2106_b < t2106_i) ? (t2106_i - 0x1p+0f) : t2106_i);
+        const float t2107 = (t2106 * 0x1.92p+0f);  /* ad.py:163 */
         const float t2108 = (t2030 - t2107);  /* ad.py:163 */
-        const float t2109 = (t2106 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t2109 = (t2106 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t2110 = (t2108 - t2109);  /* ad.py:163 */
-        const float t2112 = (t2106 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t2113_a = ((-0x1.0000000000000p+30f < t2112) ? t2112 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t2113_b = ((t2113_a < 0x1.0000000000000p+30f) ? t2113_a : 0x1.0000000000000p+30f);
+        const float t2112 = (t2106 * 0x1p-2f);  /* ad.py:163 */
+        const float t2113_a = ((-0x1p+30f < t2112) ? t2112 : -0x1p+30f);  /* ad.py:163 */
+        const float t2113_b = ((t2113_a < 0x1p+30f) ? t2113_a : 0x1p+30f);
         const float t2113_i = ((float)((int32_t)t2113_b));
-        const float t2113 = ((t2113_b < t2113_i) ? (t2113_i - 0x1.0000000000000p+0f) : t2113_i);
-        const float t2114 = (0x1.0000000000000p+2f * t2113);  /* ad.py:163 */
+        const float t2113 = ((t2113_b < t2113_i) ? (t2113_i - 0x1p+0f) : t2113_i);
+        const float t2114 = (0x1p+2f * t2113);  /* ad.py:163 */
         const float t2115 = (t2106 - t2114);  /* ad.py:163 */
         const float t2116 = (t2110 * t2110);  /* ad.py:163 */
-        const float t2117 = (-0x1.ae64560000000p-26f * t2116);  /* ad.py:163 */
-        const float t2118 = (t2117 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t2117 = (-0x1.ae6456p-26f * t2116);  /* ad.py:163 */
+        const float t2118 = (t2117 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t2119 = (t2118 * t2116);  /* ad.py:163 */
-        const float t2120 = (t2119 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t2120 = (t2119 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t2121 = (t2120 * t2116);  /* ad.py:163 */
-        const float t2122 = (t2121 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t2122 = (t2121 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t2123 = (t2122 * t2116);  /* ad.py:163 */
-        const float t2124 = (t2123 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t2124 = (t2123 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t2125 = (t2110 * t2116);  /* ad.py:163 */
         const float t2126 = (t2125 * t2124);  /* ad.py:163 */
         const float t2127 = (t2110 + t2126);  /* ad.py:163 */
-        const float t2128 = (0x1.1eed8e0000000p-29f * t2116);  /* ad.py:163 */
-        const float t2129 = (t2128 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t2128 = (0x1.1eed8ep-29f * t2116);  /* ad.py:163 */
+        const float t2129 = (t2128 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t2130 = (t2129 * t2116);  /* ad.py:163 */
-        const float t2131 = (t2130 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t2131 = (t2130 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t2132 = (t2131 * t2116);  /* ad.py:163 */
-        const float t2133 = (t2132 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t2133 = (t2132 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t2134 = (t2133 * t2116);  /* ad.py:163 */
-        const float t2135 = (t2134 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t2136 = (0x1.0000000000000p-1f * t2116);  /* ad.py:163 */
-        const float t2137 = (0x1.0000000000000p+0f - t2136);  /* ad.py:163 */
+        const float t2135 = (t2134 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t2136 = (0x1p-1f * t2116);  /* ad.py:163 */
+        const float t2137 = (0x1p+0f - t2136);  /* ad.py:163 */
         const float t2138 = (t2116 * t2116);  /* ad.py:163 */
         const float t2139 = (t2138 * t2135);  /* ad.py:163 */
         const float t2140 = (t2137 + t2139);  /* ad.py:163 */
-        const int t2141 = (t2115 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t2142 = (t2115 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t2143 = (t2115 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t2141 = (t2115 < 0x1p-1f);  /* ad.py:163 */
+        const int t2142 = (t2115 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t2143 = (t2115 < 0x1.4p+1f);  /* ad.py:163 */
         const float t2144 = (-t2127);  /* ad.py:163 */
         const float t2145 = (-t2140);  /* ad.py:163 */
         const float t2146 = (t2143 ? t2144 : t2145);  /* ad.py:163 */
@@ -2455,14 +2455,14 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t2231 = (t2223 * x_te3);  /* mbs.py:99 */
         const float t2232 = (t2230 + t2231);  /* mbs.py:99 */
         const float t2233 = (t2220 + t2232);  /* mbs.py:99 */
-        const float t2234 = ((0x1.12e0be0000000p-30f < t2195) ? t2195 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t2235 = (0x1.0000000000000p+0f / t2234);  /* mbs.py:158 */
+        const float t2234 = ((0x1.12e0bep-30f < t2195) ? t2195 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t2235 = (0x1p+0f / t2234);  /* mbs.py:158 */
         const float t2236 = (t2198 * t2235);  /* mbs.py:163 */
         const float t2237 = (t2236 * t2236);  /* mbs.py:156 */
         const float t2238 = (t2237 * t2195);  /* mbs.py:156 */
         const float t2239 = (t2202 - t2238);  /* mbs.py:156 */
-        const float t2240 = ((0x1.12e0be0000000p-30f < t2239) ? t2239 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t2241 = (0x1.0000000000000p+0f / t2240);  /* mbs.py:158 */
+        const float t2240 = ((0x1.12e0bep-30f < t2239) ? t2239 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t2241 = (0x1p+0f / t2240);  /* mbs.py:158 */
         const float t2242 = (t2236 * t2228);  /* mbs.py:172 */
         const float t2243 = (t2233 - t2242);  /* mbs.py:172 */
         const float t2244 = (t2228 * t2235);  /* mbs.py:173 */
@@ -2473,9 +2473,9 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t2249 = (t2248 * t2241);  /* mbs.py:173 */
         const float t2250 = (t2236 * t2249);  /* mbs.py:177 */
         const float t2251 = (t2235 - t2250);  /* mbs.py:177 */
-        const float t2252 = (t2236 * -0x1.0000000000000p+0f);  /* mbs.py:172 */
-        const float t2253 = (0x1.0000000000000p+0f - t2252);  /* mbs.py:172 */
-        const float t2254 = (-0x1.0000000000000p+0f * t2235);  /* mbs.py:173 */
+        const float t2252 = (t2236 * -0x1p+0f);  /* mbs.py:172 */
+        const float t2253 = (0x1p+0f - t2252);  /* mbs.py:172 */
+        const float t2254 = (-0x1p+0f * t2235);  /* mbs.py:173 */
         const float t2255 = (t2253 * t2241);  /* mbs.py:173 */
         const float t2256 = (t2236 * t2255);  /* mbs.py:177 */
         const float t2257 = (t2254 - t2256);  /* mbs.py:177 */
@@ -2941,13 +2941,13 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t2717 = (u_foot1 - x_te3);  /* leg.py:229 */
         const float t2718 = (t125 ? t2717 : 0.0f);  /* leg.py:229 */
         const float t2719 = (t1377 + t117);  /* ekf.py:392 */
-        const float t2720 = (t117 * 0x1.0000000000000p-1f);  /* ekf.py:393 */
+        const float t2720 = (t117 * 0x1p-1f);  /* ekf.py:393 */
         const int t2721 = (t2720 < t2719);  /* ekf.py:393 */
         const int t2722 = (t92 && t2721);  /* ekf.py:394 */
         const int t2723 = (!t2721);  /* ekf.py:395 */
         const int t2724 = (t92 && t2723);  /* ekf.py:395 */
         const float t2725 = (t2721 ? t2719 : t117);  /* ekf.py:396 */
-        const float t2726 = (0x1.0000000000000p+0f / t2725);  /* ekf.py:396 */
+        const float t2726 = (0x1p+0f / t2725);  /* ekf.py:396 */
         const float t2727 = (t1271 * t2726);  /* ekf.py:397 */
         const float t2728 = (t2722 ? t2727 : 0.0f);  /* ekf.py:397 */
         const float t2729 = (t1316 * t2726);  /* ekf.py:397 */
@@ -3150,7 +3150,7 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const int t2926 = (t95 && t2925);  /* ekf.py:395 */
         const int t2927 = (t2724 || t2926);  /* ekf.py:395 */
         const float t2928 = (t2923 ? t2922 : t117);  /* ekf.py:396 */
-        const float t2929 = (0x1.0000000000000p+0f / t2928);  /* ekf.py:396 */
+        const float t2929 = (0x1p+0f / t2928);  /* ekf.py:396 */
         const float t2930 = (t2791 * t2929);  /* ekf.py:397 */
         const float t2931 = (t2924 ? t2930 : 0.0f);  /* ekf.py:397 */
         const float t2932 = (t2819 * t2929);  /* ekf.py:397 */
@@ -3504,14 +3504,14 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t3280 = (t2636 * t3266);  /* ekf.py:392 */
         const float t3281 = (t3279 + t3280);  /* ekf.py:392 */
         const float t3282 = (t3281 + t118);  /* ekf.py:392 */
-        const float t3283 = (t118 * 0x1.0000000000000p-1f);  /* ekf.py:393 */
+        const float t3283 = (t118 * 0x1p-1f);  /* ekf.py:393 */
         const int t3284 = (t3283 < t3282);  /* ekf.py:393 */
         const int t3285 = (t102 && t3284);  /* ekf.py:394 */
         const int t3286 = (!t3284);  /* ekf.py:395 */
         const int t3287 = (t102 && t3286);  /* ekf.py:395 */
         const int t3288 = (t2927 || t3287);  /* ekf.py:395 */
         const float t3289 = (t3284 ? t3282 : t118);  /* ekf.py:396 */
-        const float t3290 = (0x1.0000000000000p+0f / t3289);  /* ekf.py:396 */
+        const float t3290 = (0x1p+0f / t3289);  /* ekf.py:396 */
         const float t3291 = (t3161 * t3290);  /* ekf.py:397 */
         const float t3292 = (t3285 ? t3291 : 0.0f);  /* ekf.py:397 */
         const float t3293 = (t3176 * t3290);  /* ekf.py:397 */
@@ -3871,7 +3871,7 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const int t3647 = (t102 && t3646);  /* ekf.py:395 */
         const int t3648 = (t3288 || t3647);  /* ekf.py:395 */
         const float t3649 = (t3644 ? t3643 : t118);  /* ekf.py:396 */
-        const float t3650 = (0x1.0000000000000p+0f / t3649);  /* ekf.py:396 */
+        const float t3650 = (0x1p+0f / t3649);  /* ekf.py:396 */
         const float t3651 = (t3522 * t3650);  /* ekf.py:397 */
         const float t3652 = (t3645 ? t3651 : 0.0f);  /* ekf.py:397 */
         const float t3653 = (t3537 * t3650);  /* ekf.py:397 */
@@ -4231,7 +4231,7 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const int t4007 = (t108 && t4006);  /* ekf.py:395 */
         const int t4008 = (t3648 || t4007);  /* ekf.py:395 */
         const float t4009 = (t4004 ? t4003 : t118);  /* ekf.py:396 */
-        const float t4010 = (0x1.0000000000000p+0f / t4009);  /* ekf.py:396 */
+        const float t4010 = (0x1p+0f / t4009);  /* ekf.py:396 */
         const float t4011 = (t3882 * t4010);  /* ekf.py:397 */
         const float t4012 = (t4005 ? t4011 : 0.0f);  /* ekf.py:397 */
         const float t4013 = (t3897 * t4010);  /* ekf.py:397 */
@@ -4591,7 +4591,7 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const int t4367 = (t108 && t4366);  /* ekf.py:395 */
         const int t4368 = (t4008 || t4367);  /* ekf.py:395 */
         const float t4369 = (t4364 ? t4363 : t118);  /* ekf.py:396 */
-        const float t4370 = (0x1.0000000000000p+0f / t4369);  /* ekf.py:396 */
+        const float t4370 = (0x1p+0f / t4369);  /* ekf.py:396 */
         const float t4371 = (t4242 * t4370);  /* ekf.py:397 */
         const float t4372 = (t4365 ? t4371 : 0.0f);  /* ekf.py:397 */
         const float t4373 = (t4257 * t4370);  /* ekf.py:397 */
@@ -4788,14 +4788,14 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t4564 = (t4401 - x_te2);  /* ekf.py:390 */
         const float t4565 = (t2716 - t4564);  /* ekf.py:390 */
         const float t4566 = (t4555 + t128);  /* ekf.py:392 */
-        const float t4567 = (t128 * 0x1.0000000000000p-1f);  /* ekf.py:393 */
+        const float t4567 = (t128 * 0x1p-1f);  /* ekf.py:393 */
         const int t4568 = (t4567 < t4566);  /* ekf.py:393 */
         const int t4569 = (t125 && t4568);  /* ekf.py:394 */
         const int t4570 = (!t4568);  /* ekf.py:395 */
         const int t4571 = (t125 && t4570);  /* ekf.py:395 */
         const int t4572 = (t4368 || t4571);  /* ekf.py:395 */
         const float t4573 = (t4568 ? t4566 : t128);  /* ekf.py:396 */
-        const float t4574 = (0x1.0000000000000p+0f / t4573);  /* ekf.py:396 */
+        const float t4574 = (0x1p+0f / t4573);  /* ekf.py:396 */
         const float t4575 = (t4447 * t4574);  /* ekf.py:397 */
         const float t4576 = (t4569 ? t4575 : 0.0f);  /* ekf.py:397 */
         const float t4577 = (t4475 * t4574);  /* ekf.py:397 */
@@ -4998,7 +4998,7 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const int t4774 = (t125 && t4773);  /* ekf.py:395 */
         t4775 = (t4572 || t4774);  /* ekf.py:395 */
         const float t4776 = (t4771 ? t4770 : t128);  /* ekf.py:396 */
-        const float t4777 = (0x1.0000000000000p+0f / t4776);  /* ekf.py:396 */
+        const float t4777 = (0x1p+0f / t4776);  /* ekf.py:396 */
         const float t4778 = (t4655 * t4777);  /* ekf.py:397 */
         const float t4779 = (t4772 ? t4778 : 0.0f);  /* ekf.py:397 */
         const float t4780 = (t4683 * t4777);  /* ekf.py:397 */
@@ -5206,38 +5206,38 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t4972 = fabsf(t4971);  /* leg.py:234 */
         const float t4973 = ((t99 < t4972) ? t4972 : t99);  /* leg.py:234 */
         const float t4974 = ((t4972 < t99) ? t4972 : t99);  /* leg.py:234 */
-        const float t4976 = ((0x1.4484c00000000p-100f < t4973) ? t4973 : 0x1.4484c00000000p-100f);  /* leg.py:234 */
+        const float t4976 = ((0x1.4484cp-100f < t4973) ? t4973 : 0x1.4484cp-100f);  /* leg.py:234 */
         const float t4977 = (t4974 / t4976);  /* leg.py:234 */
-        const int t4980 = (0x1.a8279a0000000p-2f < t4977);  /* leg.py:234 */
-        const float t4981 = (t4977 - 0x1.0000000000000p+0f);  /* leg.py:234 */
-        const float t4982 = (t4977 + 0x1.0000000000000p+0f);  /* leg.py:234 */
+        const int t4980 = (0x1.a8279ap-2f < t4977);  /* leg.py:234 */
+        const float t4981 = (t4977 - 0x1p+0f);  /* leg.py:234 */
+        const float t4982 = (t4977 + 0x1p+0f);  /* leg.py:234 */
         const float t4983 = (t4981 / t4982);  /* leg.py:234 */
         const float t4984 = (t4980 ? t4983 : t4977);  /* leg.py:234 */
         const float t4986 = (t4984 * t4984);  /* leg.py:234 */
-        const float t4988 = (-0x1.e1e1e20000000p-5f * t4986);  /* leg.py:234 */
-        const float t4990 = (t4988 + 0x1.1111120000000p-4f);  /* leg.py:234 */
+        const float t4988 = (-0x1.e1e1e2p-5f * t4986);  /* leg.py:234 */
+        const float t4990 = (t4988 + 0x1.111112p-4f);  /* leg.py:234 */
         const float t4991 = (t4990 * t4986);  /* leg.py:234 */
-        const float t4993 = (t4991 + -0x1.3b13b20000000p-4f);  /* leg.py:234 */
+        const float t4993 = (t4991 + -0x1.3b13b2p-4f);  /* leg.py:234 */
         const float t4994 = (t4993 * t4986);  /* leg.py:234 */
-        const float t4996 = (t4994 + 0x1.745d180000000p-4f);  /* leg.py:234 */
+        const float t4996 = (t4994 + 0x1.745d18p-4f);  /* leg.py:234 */
         const float t4997 = (t4996 * t4986);  /* leg.py:234 */
-        const float t4999 = (t4997 + -0x1.c71c720000000p-4f);  /* leg.py:234 */
+        const float t4999 = (t4997 + -0x1.c71c72p-4f);  /* leg.py:234 */
         const float t5000 = (t4999 * t4986);  /* leg.py:234 */
-        const float t5002 = (t5000 + 0x1.24924a0000000p-3f);  /* leg.py:234 */
+        const float t5002 = (t5000 + 0x1.24924ap-3f);  /* leg.py:234 */
         const float t5003 = (t5002 * t4986);  /* leg.py:234 */
-        const float t5005 = (t5003 + -0x1.99999a0000000p-3f);  /* leg.py:234 */
+        const float t5005 = (t5003 + -0x1.99999ap-3f);  /* leg.py:234 */
         const float t5006 = (t5005 * t4986);  /* leg.py:234 */
-        const float t5007 = (t5006 + 0x1.5555560000000p-2f);  /* leg.py:234 */
+        const float t5007 = (t5006 + 0x1.555556p-2f);  /* leg.py:234 */
         const float t5008 = (t4984 * t4986);  /* leg.py:234 */
         const float t5009 = (t5008 * t5007);  /* leg.py:234 */
         const float t5010 = (t4984 - t5009);  /* leg.py:234 */
-        const float t5012 = (t5010 + 0x1.921fb60000000p-1f);  /* leg.py:234 */
+        const float t5012 = (t5010 + 0x1.921fb6p-1f);  /* leg.py:234 */
         const float t5013 = (t4980 ? t5012 : t5010);  /* leg.py:234 */
         const int t5014 = (t4972 < t99);  /* leg.py:234 */
-        const float t5016 = (0x1.921fb60000000p+0f - t5013);  /* leg.py:234 */
+        const float t5016 = (0x1.921fb6p+0f - t5013);  /* leg.py:234 */
         const float t5017 = (t5014 ? t5016 : t5013);  /* leg.py:234 */
         const int t5018 = (t4971 < 0.0f);  /* leg.py:234 */
-        const float t5020 = (0x1.921fb60000000p+1f - t5017);  /* leg.py:234 */
+        const float t5020 = (0x1.921fb6p+1f - t5017);  /* leg.py:234 */
         const float t5021 = (t5018 ? t5020 : t5017);  /* leg.py:234 */
         const int t5022 = (u_acc1 < 0.0f);  /* leg.py:234 */
         const float t5023 = (-t5021);  /* leg.py:234 */
@@ -5246,38 +5246,38 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t5026 = fabsf(t5025);  /* leg.py:234 */
         const float t5027 = ((t105 < t5026) ? t5026 : t105);  /* leg.py:234 */
         const float t5028 = ((t5026 < t105) ? t5026 : t105);  /* leg.py:234 */
-        const float t5029 = ((0x1.4484c00000000p-100f < t5027) ? t5027 : 0x1.4484c00000000p-100f);  /* leg.py:234 */
+        const float t5029 = ((0x1.4484cp-100f < t5027) ? t5027 : 0x1.4484cp-100f);  /* leg.py:234 */
         const float t5030 = (t5028 / t5029);  /* leg.py:234 */
-        const int t5032 = (0x1.a8279a0000000p-2f < t5030);  /* leg.py:234 */
-        const float t5033 = (t5030 - 0x1.0000000000000p+0f);  /* leg.py:234 */
-        const float t5034 = (t5030 + 0x1.0000000000000p+0f);  /* leg.py:234 */
+        const int t5032 = (0x1.a8279ap-2f < t5030);  /* leg.py:234 */
+        const float t5033 = (t5030 - 0x1p+0f);  /* leg.py:234 */
+        const float t5034 = (t5030 + 0x1p+0f);  /* leg.py:234 */
         const float t5035 = (t5033 / t5034);  /* leg.py:234 */
         const float t5036 = (t5032 ? t5035 : t5030);  /* leg.py:234 */
         const float t5038 = (t5036 * t5036);  /* leg.py:234 */
-        const float t5039 = (-0x1.e1e1e20000000p-5f * t5038);  /* leg.py:234 */
-        const float t5040 = (t5039 + 0x1.1111120000000p-4f);  /* leg.py:234 */
+        const float t5039 = (-0x1.e1e1e2p-5f * t5038);  /* leg.py:234 */
+        const float t5040 = (t5039 + 0x1.111112p-4f);  /* leg.py:234 */
         const float t5041 = (t5040 * t5038);  /* leg.py:234 */
-        const float t5042 = (t5041 + -0x1.3b13b20000000p-4f);  /* leg.py:234 */
+        const float t5042 = (t5041 + -0x1.3b13b2p-4f);  /* leg.py:234 */
         const float t5043 = (t5042 * t5038);  /* leg.py:234 */
-        const float t5044 = (t5043 + 0x1.745d180000000p-4f);  /* leg.py:234 */
+        const float t5044 = (t5043 + 0x1.745d18p-4f);  /* leg.py:234 */
         const float t5045 = (t5044 * t5038);  /* leg.py:234 */
-        const float t5046 = (t5045 + -0x1.c71c720000000p-4f);  /* leg.py:234 */
+        const float t5046 = (t5045 + -0x1.c71c72p-4f);  /* leg.py:234 */
         const float t5047 = (t5046 * t5038);  /* leg.py:234 */
-        const float t5048 = (t5047 + 0x1.24924a0000000p-3f);  /* leg.py:234 */
+        const float t5048 = (t5047 + 0x1.24924ap-3f);  /* leg.py:234 */
         const float t5049 = (t5048 * t5038);  /* leg.py:234 */
-        const float t5050 = (t5049 + -0x1.99999a0000000p-3f);  /* leg.py:234 */
+        const float t5050 = (t5049 + -0x1.99999ap-3f);  /* leg.py:234 */
         const float t5051 = (t5050 * t5038);  /* leg.py:234 */
-        const float t5052 = (t5051 + 0x1.5555560000000p-2f);  /* leg.py:234 */
+        const float t5052 = (t5051 + 0x1.555556p-2f);  /* leg.py:234 */
         const float t5053 = (t5036 * t5038);  /* leg.py:234 */
         const float t5054 = (t5053 * t5052);  /* leg.py:234 */
         const float t5055 = (t5036 - t5054);  /* leg.py:234 */
-        const float t5056 = (t5055 + 0x1.921fb60000000p-1f);  /* leg.py:234 */
+        const float t5056 = (t5055 + 0x1.921fb6p-1f);  /* leg.py:234 */
         const float t5057 = (t5032 ? t5056 : t5055);  /* leg.py:234 */
         const int t5058 = (t5026 < t105);  /* leg.py:234 */
-        const float t5059 = (0x1.921fb60000000p+0f - t5057);  /* leg.py:234 */
+        const float t5059 = (0x1.921fb6p+0f - t5057);  /* leg.py:234 */
         const float t5060 = (t5058 ? t5059 : t5057);  /* leg.py:234 */
         const int t5061 = (t5025 < 0.0f);  /* leg.py:234 */
-        const float t5062 = (0x1.921fb60000000p+1f - t5060);  /* leg.py:234 */
+        const float t5062 = (0x1.921fb6p+1f - t5060);  /* leg.py:234 */
         const float t5063 = (t5061 ? t5062 : t5060);  /* leg.py:234 */
         const int t5064 = (u_acc3 < 0.0f);  /* leg.py:234 */
         const float t5065 = (-t5063);  /* leg.py:234 */
@@ -5286,51 +5286,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         t5068 = (t95 ? u_gyr1 : 0.0f);  /* leg.py:235 */
         t5069 = (t125 ? u_foot0 : 0.0f);  /* leg.py:236 */
         t5070 = (t125 ? u_foot1 : 0.0f);  /* leg.py:236 */
-        const float t5071 = (t5024 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t5072 = (t5071 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t5073_a = ((-0x1.0000000000000p+30f < t5072) ? t5072 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t5073_b = ((t5073_a < 0x1.0000000000000p+30f) ? t5073_a : 0x1.0000000000000p+30f);
+        const float t5071 = (t5024 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t5072 = (t5071 + 0x1p-1f);  /* ad.py:163 */
+        const float t5073_a = ((-0x1p+30f < t5072) ? t5072 : -0x1p+30f);  /* ad.py:163 */
+        const float t5073_b = ((t5073_a < 0x1p+30f) ? t5073_a : 0x1p+30f);
         const float t5073_i = ((float)((int32_t)t5073_b));
-        const float t5073 = ((t5073_b < t5073_i) ? (t5073_i - 0x1.0000000000000p+0f) : t5073_i);
-        const float t5074 = (t5073 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t5073 = ((t5073_b < t5073_i) ? (t5073_i - 0x1p+0f) : t5073_i);
+        const float t5074 = (t5073 * 0x1.92p+0f);  /* ad.py:163 */
         const float t5075 = (t5024 - t5074);  /* ad.py:163 */
-        const float t5076 = (t5073 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t5076 = (t5073 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t5077 = (t5075 - t5076);  /* ad.py:163 */
-        const float t5079 = (t5073 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t5080_a = ((-0x1.0000000000000p+30f < t5079) ? t5079 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t5080_b = ((t5080_a < 0x1.0000000000000p+30f) ? t5080_a : 0x1.0000000000000p+30f);
+        const float t5079 = (t5073 * 0x1p-2f);  /* ad.py:163 */
+        const float t5080_a = ((-0x1p+30f < t5079) ? t5079 : -0x1p+30f);  /* ad.py:163 */
+        const float t5080_b = ((t5080_a < 0x1p+30f) ? t5080_a : 0x1p+30f);
         const float t5080_i = ((float)((int32_t)t5080_b));
-        const float t5080 = ((t5080_b < t5080_i) ? (t5080_i - 0x1.0000000000000p+0f) : t5080_i);
-        const float t5081 = (0x1.0000000000000p+2f * t5080);  /* ad.py:163 */
+        const float t5080 = ((t5080_b < t5080_i) ? (t5080_i - 0x1p+0f) : t5080_i);
+        const float t5081 = (0x1p+2f * t5080);  /* ad.py:163 */
         const float t5082 = (t5073 - t5081);  /* ad.py:163 */
         const float t5083 = (t5077 * t5077);  /* ad.py:163 */
-        const float t5084 = (-0x1.ae64560000000p-26f * t5083);  /* ad.py:163 */
-        const float t5085 = (t5084 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t5084 = (-0x1.ae6456p-26f * t5083);  /* ad.py:163 */
+        const float t5085 = (t5084 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t5086 = (t5085 * t5083);  /* ad.py:163 */
-        const float t5087 = (t5086 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t5087 = (t5086 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t5088 = (t5087 * t5083);  /* ad.py:163 */
-        const float t5089 = (t5088 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t5089 = (t5088 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t5090 = (t5089 * t5083);  /* ad.py:163 */
-        const float t5091 = (t5090 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t5091 = (t5090 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t5092 = (t5077 * t5083);  /* ad.py:163 */
         const float t5093 = (t5092 * t5091);  /* ad.py:163 */
         const float t5094 = (t5077 + t5093);  /* ad.py:163 */
-        const float t5095 = (0x1.1eed8e0000000p-29f * t5083);  /* ad.py:163 */
-        const float t5096 = (t5095 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t5095 = (0x1.1eed8ep-29f * t5083);  /* ad.py:163 */
+        const float t5096 = (t5095 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t5097 = (t5096 * t5083);  /* ad.py:163 */
-        const float t5098 = (t5097 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t5098 = (t5097 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t5099 = (t5098 * t5083);  /* ad.py:163 */
-        const float t5100 = (t5099 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t5100 = (t5099 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t5101 = (t5100 * t5083);  /* ad.py:163 */
-        const float t5102 = (t5101 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t5103 = (0x1.0000000000000p-1f * t5083);  /* ad.py:163 */
-        const float t5104 = (0x1.0000000000000p+0f - t5103);  /* ad.py:163 */
+        const float t5102 = (t5101 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t5103 = (0x1p-1f * t5083);  /* ad.py:163 */
+        const float t5104 = (0x1p+0f - t5103);  /* ad.py:163 */
         const float t5105 = (t5083 * t5083);  /* ad.py:163 */
         const float t5106 = (t5105 * t5102);  /* ad.py:163 */
         const float t5107 = (t5104 + t5106);  /* ad.py:163 */
-        const int t5108 = (t5082 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t5109 = (t5082 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t5110 = (t5082 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t5108 = (t5082 < 0x1p-1f);  /* ad.py:163 */
+        const int t5109 = (t5082 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t5110 = (t5082 < 0x1.4p+1f);  /* ad.py:163 */
         const float t5111 = (-t5094);  /* ad.py:163 */
         const float t5112 = (-t5107);  /* ad.py:163 */
         const float t5113 = (t5110 ? t5111 : t5112);  /* ad.py:163 */
@@ -5346,51 +5346,51 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t5125 = (t5124 * t5067);  /* ad.py:104 */
         const float t5126 = (t5121 * t5067);  /* ad.py:104 */
         const float t5127 = (-t5126);  /* ad.py:40 */
-        const float t5128 = (t5066 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t5129 = (t5128 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t5130_a = ((-0x1.0000000000000p+30f < t5129) ? t5129 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t5130_b = ((t5130_a < 0x1.0000000000000p+30f) ? t5130_a : 0x1.0000000000000p+30f);
+        const float t5128 = (t5066 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t5129 = (t5128 + 0x1p-1f);  /* ad.py:163 */
+        const float t5130_a = ((-0x1p+30f < t5129) ? t5129 : -0x1p+30f);  /* ad.py:163 */
+        const float t5130_b = ((t5130_a < 0x1p+30f) ? t5130_a : 0x1p+30f);
         const float t5130_i = ((float)((int32_t)t5130_b));
-        const float t5130 = ((t5130_b < t5130_i) ? (t5130_i - 0x1.0000000000000p+0f) : t5130_i);
-        const float t5131 = (t5130 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t5130 = ((t5130_b < t5130_i) ? (t5130_i - 0x1p+0f) : t5130_i);
+        const float t5131 = (t5130 * 0x1.92p+0f);  /* ad.py:163 */
         const float t5132 = (t5066 - t5131);  /* ad.py:163 */
-        const float t5133 = (t5130 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t5133 = (t5130 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t5134 = (t5132 - t5133);  /* ad.py:163 */
-        const float t5136 = (t5130 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t5137_a = ((-0x1.0000000000000p+30f < t5136) ? t5136 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t5137_b = ((t5137_a < 0x1.0000000000000p+30f) ? t5137_a : 0x1.0000000000000p+30f);
+        const float t5136 = (t5130 * 0x1p-2f);  /* ad.py:163 */
+        const float t5137_a = ((-0x1p+30f < t5136) ? t5136 : -0x1p+30f);  /* ad.py:163 */
+        const float t5137_b = ((t5137_a < 0x1p+30f) ? t5137_a : 0x1p+30f);
         const float t5137_i = ((float)((int32_t)t5137_b));
-        const float t5137 = ((t5137_b < t5137_i) ? (t5137_i - 0x1.0000000000000p+0f) : t5137_i);
-        const float t5138 = (0x1.0000000000000p+2f * t5137);  /* ad.py:163 */
+        const float t5137 = ((t5137_b < t5137_i) ? (t5137_i - 0x1p+0f) : t5137_i);
+        const float t5138 = (0x1p+2f * t5137);  /* ad.py:163 */
         const float t5139 = (t5130 - t5138);  /* ad.py:163 */
         const float t5140 = (t5134 * t5134);  /* ad.py:163 */
-        const float t5141 = (-0x1.ae64560000000p-26f * t5140);  /* ad.py:163 */
-        const float t5142 = (t5141 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t5141 = (-0x1.ae6456p-26f * t5140);  /* ad.py:163 */
+        const float t5142 = (t5141 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t5143 = (t5142 * t5140);  /* ad.py:163 */
-        const float t5144 = (t5143 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t5144 = (t5143 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t5145 = (t5144 * t5140);  /* ad.py:163 */
-        const float t5146 = (t5145 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t5146 = (t5145 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t5147 = (t5146 * t5140);  /* ad.py:163 */
-        const float t5148 = (t5147 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t5148 = (t5147 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t5149 = (t5134 * t5140);  /* ad.py:163 */
         const float t5150 = (t5149 * t5148);  /* ad.py:163 */
         const float t5151 = (t5134 + t5150);  /* ad.py:163 */
-        const float t5152 = (0x1.1eed8e0000000p-29f * t5140);  /* ad.py:163 */
-        const float t5153 = (t5152 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t5152 = (0x1.1eed8ep-29f * t5140);  /* ad.py:163 */
+        const float t5153 = (t5152 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t5154 = (t5153 * t5140);  /* ad.py:163 */
-        const float t5155 = (t5154 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t5155 = (t5154 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t5156 = (t5155 * t5140);  /* ad.py:163 */
-        const float t5157 = (t5156 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t5157 = (t5156 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t5158 = (t5157 * t5140);  /* ad.py:163 */
-        const float t5159 = (t5158 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t5160 = (0x1.0000000000000p-1f * t5140);  /* ad.py:163 */
-        const float t5161 = (0x1.0000000000000p+0f - t5160);  /* ad.py:163 */
+        const float t5159 = (t5158 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t5160 = (0x1p-1f * t5140);  /* ad.py:163 */
+        const float t5161 = (0x1p+0f - t5160);  /* ad.py:163 */
         const float t5162 = (t5140 * t5140);  /* ad.py:163 */
         const float t5163 = (t5162 * t5159);  /* ad.py:163 */
         const float t5164 = (t5161 + t5163);  /* ad.py:163 */
-        const int t5165 = (t5139 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t5166 = (t5139 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t5167 = (t5139 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t5165 = (t5139 < 0x1p-1f);  /* ad.py:163 */
+        const int t5166 = (t5139 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t5167 = (t5139 < 0x1.4p+1f);  /* ad.py:163 */
         const float t5168 = (-t5151);  /* ad.py:163 */
         const float t5169 = (-t5164);  /* ad.py:163 */
         const float t5170 = (t5167 ? t5168 : t5169);  /* ad.py:163 */
@@ -5460,10 +5460,10 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t5236 = (t5234 + t5235);  /* mbs.py:210 */
         const float t5237 = (t5225 + t5236);  /* mbs.py:210 */
         const float t5238 = (-t5237);  /* mbs.py:210 */
-        const float t5239 = (-0x1.0000000000000p+0f * t5233);  /* mbs.py:215 */
+        const float t5239 = (-0x1p+0f * t5233);  /* mbs.py:215 */
         const float t5240 = (t5239 + t5238);  /* mbs.py:215 */
-        const float t5241 = (0x1.0000000000000p+1f * t5233);  /* mbs.py:221 */
-        const float t5242 = (-0x1.0000000000000p+0f * t5240);  /* mbs.py:221 */
+        const float t5241 = (0x1p+1f * t5233);  /* mbs.py:221 */
+        const float t5242 = (-0x1p+0f * t5240);  /* mbs.py:221 */
         t5243 = (t5241 - t5242);  /* mbs.py:221 */
         t5244 = (t5240 - t5239);  /* mbs.py:222 */
     }
@@ -5561,44 +5561,44 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
     const float t5336 = (t139 ? t5248 : t5335);  /* ekf.py:431 */
     const int t5337 = (x_initialised || t139);  /* ekf.py:434 */
     const float t5338 = fabsf(t5250);  /* ekf.py:435 */
-    const int t5340 = (t5338 <= 0x1.921fb60000000p+3f);  /* ekf.py:435 */
+    const int t5340 = (t5338 <= 0x1.921fb6p+3f);  /* ekf.py:435 */
     const float t5341 = fabsf(t5252);  /* ekf.py:435 */
-    const int t5342 = (t5341 <= 0x1.921fb60000000p+3f);  /* ekf.py:435 */
+    const int t5342 = (t5341 <= 0x1.921fb6p+3f);  /* ekf.py:435 */
     const float t5343 = fabsf(t5254);  /* ekf.py:435 */
-    const int t5344 = (t5343 <= 0x1.1740b00000000p+5f);  /* ekf.py:435 */
+    const int t5344 = (t5343 <= 0x1.1740bp+5f);  /* ekf.py:435 */
     const float t5345 = fabsf(t5256);  /* ekf.py:435 */
-    const int t5346 = (t5345 <= 0x1.1740b00000000p+5f);  /* ekf.py:435 */
+    const int t5346 = (t5345 <= 0x1.1740bp+5f);  /* ekf.py:435 */
     const float t5347 = fabsf(t5258);  /* ekf.py:435 */
-    const int t5349 = (t5347 <= 0x1.f400000000000p+9f);  /* ekf.py:435 */
+    const int t5349 = (t5347 <= 0x1.f4p+9f);  /* ekf.py:435 */
     const float t5350 = fabsf(t5260);  /* ekf.py:435 */
-    const int t5351 = (t5350 <= 0x1.f400000000000p+9f);  /* ekf.py:435 */
+    const int t5351 = (t5350 <= 0x1.f4p+9f);  /* ekf.py:435 */
     const float t5352 = fabsf(t5262);  /* ekf.py:435 */
-    const int t5353 = (t5352 <= 0x1.f400000000000p+9f);  /* ekf.py:435 */
+    const int t5353 = (t5352 <= 0x1.f4p+9f);  /* ekf.py:435 */
     const float t5354 = fabsf(t5264);  /* ekf.py:435 */
-    const int t5355 = (t5354 <= 0x1.f400000000000p+9f);  /* ekf.py:435 */
+    const int t5355 = (t5354 <= 0x1.f4p+9f);  /* ekf.py:435 */
     const int t5356 = (0.0f <= t5266);  /* ekf.py:436 */
-    const int t5358 = (t5266 <= 0x1.7d78400000000p+26f);  /* ekf.py:436 */
+    const int t5358 = (t5266 <= 0x1.7d784p+26f);  /* ekf.py:436 */
     const int t5359 = (t5356 && t5358);  /* ekf.py:436 */
     const int t5360 = (0.0f <= t5282);  /* ekf.py:436 */
-    const int t5361 = (t5282 <= 0x1.7d78400000000p+26f);  /* ekf.py:436 */
+    const int t5361 = (t5282 <= 0x1.7d784p+26f);  /* ekf.py:436 */
     const int t5362 = (t5360 && t5361);  /* ekf.py:436 */
     const int t5363 = (0.0f <= t5296);  /* ekf.py:436 */
-    const int t5364 = (t5296 <= 0x1.7d78400000000p+26f);  /* ekf.py:436 */
+    const int t5364 = (t5296 <= 0x1.7d784p+26f);  /* ekf.py:436 */
     const int t5365 = (t5363 && t5364);  /* ekf.py:436 */
     const int t5366 = (0.0f <= t5308);  /* ekf.py:436 */
-    const int t5367 = (t5308 <= 0x1.7d78400000000p+26f);  /* ekf.py:436 */
+    const int t5367 = (t5308 <= 0x1.7d784p+26f);  /* ekf.py:436 */
     const int t5368 = (t5366 && t5367);  /* ekf.py:436 */
     const int t5369 = (0.0f <= t5318);  /* ekf.py:436 */
-    const int t5370 = (t5318 <= 0x1.7d78400000000p+26f);  /* ekf.py:436 */
+    const int t5370 = (t5318 <= 0x1.7d784p+26f);  /* ekf.py:436 */
     const int t5371 = (t5369 && t5370);  /* ekf.py:436 */
     const int t5372 = (0.0f <= t5326);  /* ekf.py:436 */
-    const int t5373 = (t5326 <= 0x1.7d78400000000p+26f);  /* ekf.py:436 */
+    const int t5373 = (t5326 <= 0x1.7d784p+26f);  /* ekf.py:436 */
     const int t5374 = (t5372 && t5373);  /* ekf.py:436 */
     const int t5375 = (0.0f <= t5332);  /* ekf.py:436 */
-    const int t5376 = (t5332 <= 0x1.7d78400000000p+26f);  /* ekf.py:436 */
+    const int t5376 = (t5332 <= 0x1.7d784p+26f);  /* ekf.py:436 */
     const int t5377 = (t5375 && t5376);  /* ekf.py:436 */
     const int t5378 = (0.0f <= t5336);  /* ekf.py:436 */
-    const int t5379 = (t5336 <= 0x1.7d78400000000p+26f);  /* ekf.py:436 */
+    const int t5379 = (t5336 <= 0x1.7d784p+26f);  /* ekf.py:436 */
     const int t5380 = (t5378 && t5379);  /* ekf.py:436 */
     const int t5381 = (t5340 && t5342);  /* ekf.py:435 */
     const int t5382 = (t5381 && t5344);  /* ekf.py:435 */

@@ -23,61 +23,61 @@
 
 void pendulum_f32_default_params(pendulum_f32_params *p)
 {
-    p->m1 = 0x1.9000000000000p+5f;
-    p->m2 = 0x1.1800000000000p+5f;
-    p->L = 0x1.99999a0000000p-1f;
-    p->g = 0x1.39eb860000000p+3f;
-    p->sigma_marker = 0x1.0624de0000000p-10f;
-    p->sigma_force = 0x1.99999a0000000p-5f;
-    p->sigma_torque = 0x1.99999a0000000p-5f;
-    p->q_force = 0x1.86a0000000000p+16f;
-    p->q_torque = 0x1.86a0000000000p+16f;
-    p->p0_pos = 0x1.47ae140000000p-6f;
-    p->p0_vel = 0x1.0000000000000p+0f;
-    p->p0_force = 0x1.4000000000000p+3f;
-    p->p0_torque = 0x1.9000000000000p+6f;
+    p->m1 = 0x1.9p+5f;
+    p->m2 = 0x1.18p+5f;
+    p->L = 0x1.99999ap-1f;
+    p->g = 0x1.39eb86p+3f;
+    p->sigma_marker = 0x1.0624dep-10f;
+    p->sigma_force = 0x1.99999ap-5f;
+    p->sigma_torque = 0x1.99999ap-5f;
+    p->q_force = 0x1.86ap+16f;
+    p->q_torque = 0x1.86ap+16f;
+    p->p0_pos = 0x1.47ae14p-6f;
+    p->p0_vel = 0x1p+0f;
+    p->p0_force = 0x1.4p+3f;
+    p->p0_torque = 0x1.9p+6f;
 }
 
 int pendulum_f32_init(pendulum_f32_state *s, const pendulum_f32_params *p)
 {
     int status = 0;
-    if (!((p->p0_torque >= 0x1.0624de0000000p-10f) && (p->p0_torque <= 0x1.3880000000000p+13f))) {
+    if (!((p->p0_torque >= 0x1.0624dep-10f) && (p->p0_torque <= 0x1.388p+13f))) {
         status = -13;
     }
-    if (!((p->p0_force >= 0x1.0624de0000000p-10f) && (p->p0_force <= 0x1.3880000000000p+13f))) {
+    if (!((p->p0_force >= 0x1.0624dep-10f) && (p->p0_force <= 0x1.388p+13f))) {
         status = -12;
     }
-    if (!((p->p0_vel >= 0x1.0c6f7a0000000p-20f) && (p->p0_vel <= 0x1.9000000000000p+6f))) {
+    if (!((p->p0_vel >= 0x1.0c6f7ap-20f) && (p->p0_vel <= 0x1.9p+6f))) {
         status = -11;
     }
-    if (!((p->p0_pos >= 0x1.0c6f7a0000000p-20f) && (p->p0_pos <= 0x1.4000000000000p+3f))) {
+    if (!((p->p0_pos >= 0x1.0c6f7ap-20f) && (p->p0_pos <= 0x1.4p+3f))) {
         status = -10;
     }
-    if (!((p->q_torque >= 0x1.5798ee0000000p-27f) && (p->q_torque <= 0x1.dcd6500000000p+29f))) {
+    if (!((p->q_torque >= 0x1.5798eep-27f) && (p->q_torque <= 0x1.dcd65p+29f))) {
         status = -9;
     }
-    if (!((p->q_force >= 0x1.5798ee0000000p-27f) && (p->q_force <= 0x1.dcd6500000000p+29f))) {
+    if (!((p->q_force >= 0x1.5798eep-27f) && (p->q_force <= 0x1.dcd65p+29f))) {
         status = -8;
     }
-    if (!((p->sigma_torque >= 0x1.a36e2e0000000p-14f) && (p->sigma_torque <= 0x1.f400000000000p+9f))) {
+    if (!((p->sigma_torque >= 0x1.a36e2ep-14f) && (p->sigma_torque <= 0x1.f4p+9f))) {
         status = -7;
     }
-    if (!((p->sigma_force >= 0x1.a36e2e0000000p-14f) && (p->sigma_force <= 0x1.f400000000000p+9f))) {
+    if (!((p->sigma_force >= 0x1.a36e2ep-14f) && (p->sigma_force <= 0x1.f4p+9f))) {
         status = -6;
     }
-    if (!((p->sigma_marker >= 0x1.0c6f7a0000000p-20f) && (p->sigma_marker <= 0x1.0000000000000p+0f))) {
+    if (!((p->sigma_marker >= 0x1.0c6f7ap-20f) && (p->sigma_marker <= 0x1p+0f))) {
         status = -5;
     }
-    if (!((p->g >= 0.0f) && (p->g <= 0x1.4000000000000p+4f))) {
+    if (!((p->g >= 0.0f) && (p->g <= 0x1.4p+4f))) {
         status = -4;
     }
-    if (!((p->L >= 0x1.99999a0000000p-4f) && (p->L <= 0x1.4000000000000p+2f))) {
+    if (!((p->L >= 0x1.99999ap-4f) && (p->L <= 0x1.4p+2f))) {
         status = -3;
     }
-    if (!((p->m2 >= 0x1.0000000000000p-1f) && (p->m2 <= 0x1.f400000000000p+8f))) {
+    if (!((p->m2 >= 0x1p-1f) && (p->m2 <= 0x1.f4p+8f))) {
         status = -2;
     }
-    if (!((p->m1 >= 0x1.0000000000000p-1f) && (p->m1 <= 0x1.f400000000000p+8f))) {
+    if (!((p->m1 >= 0x1p-1f) && (p->m1 <= 0x1.f4p+8f))) {
         status = -1;
     }
     if (status != 0) {
@@ -97,7 +97,7 @@ int pendulum_f32_init(pendulum_f32_state *s, const pendulum_f32_params *p)
     s->te[1] = 0.0f;
     s->te[2] = 0.0f;
     s->te[3] = 0.0f;
-    s->P[0] = 0x1.a36e2e0000000p-12f;
+    s->P[0] = 0x1.a36e2ep-12f;
     s->P[1] = 0.0f;
     s->P[2] = 0.0f;
     s->P[3] = 0.0f;
@@ -109,7 +109,7 @@ int pendulum_f32_init(pendulum_f32_state *s, const pendulum_f32_params *p)
     s->P[9] = 0.0f;
     s->P[10] = 0.0f;
     s->P[11] = 0.0f;
-    s->P[12] = 0x1.a36e2e0000000p-12f;
+    s->P[12] = 0x1.a36e2ep-12f;
     s->P[13] = 0.0f;
     s->P[14] = 0.0f;
     s->P[15] = 0.0f;
@@ -120,7 +120,7 @@ int pendulum_f32_init(pendulum_f32_state *s, const pendulum_f32_params *p)
     s->P[20] = 0.0f;
     s->P[21] = 0.0f;
     s->P[22] = 0.0f;
-    s->P[23] = 0x1.a36e2e0000000p-12f;
+    s->P[23] = 0x1.a36e2ep-12f;
     s->P[24] = 0.0f;
     s->P[25] = 0.0f;
     s->P[26] = 0.0f;
@@ -130,7 +130,7 @@ int pendulum_f32_init(pendulum_f32_state *s, const pendulum_f32_params *p)
     s->P[30] = 0.0f;
     s->P[31] = 0.0f;
     s->P[32] = 0.0f;
-    s->P[33] = 0x1.a36e2e0000000p-12f;
+    s->P[33] = 0x1.a36e2ep-12f;
     s->P[34] = 0.0f;
     s->P[35] = 0.0f;
     s->P[36] = 0.0f;
@@ -139,7 +139,7 @@ int pendulum_f32_init(pendulum_f32_state *s, const pendulum_f32_params *p)
     s->P[39] = 0.0f;
     s->P[40] = 0.0f;
     s->P[41] = 0.0f;
-    s->P[42] = 0x1.0000000000000p+0f;
+    s->P[42] = 0x1p+0f;
     s->P[43] = 0.0f;
     s->P[44] = 0.0f;
     s->P[45] = 0.0f;
@@ -147,34 +147,34 @@ int pendulum_f32_init(pendulum_f32_state *s, const pendulum_f32_params *p)
     s->P[47] = 0.0f;
     s->P[48] = 0.0f;
     s->P[49] = 0.0f;
-    s->P[50] = 0x1.0000000000000p+0f;
+    s->P[50] = 0x1p+0f;
     s->P[51] = 0.0f;
     s->P[52] = 0.0f;
     s->P[53] = 0.0f;
     s->P[54] = 0.0f;
     s->P[55] = 0.0f;
     s->P[56] = 0.0f;
-    s->P[57] = 0x1.0000000000000p+0f;
+    s->P[57] = 0x1p+0f;
     s->P[58] = 0.0f;
     s->P[59] = 0.0f;
     s->P[60] = 0.0f;
     s->P[61] = 0.0f;
     s->P[62] = 0.0f;
-    s->P[63] = 0x1.0000000000000p+0f;
+    s->P[63] = 0x1p+0f;
     s->P[64] = 0.0f;
     s->P[65] = 0.0f;
     s->P[66] = 0.0f;
     s->P[67] = 0.0f;
-    s->P[68] = 0x1.3880000000000p+13f;
+    s->P[68] = 0x1.388p+13f;
     s->P[69] = 0.0f;
     s->P[70] = 0.0f;
     s->P[71] = 0.0f;
-    s->P[72] = 0x1.9000000000000p+6f;
+    s->P[72] = 0x1.9p+6f;
     s->P[73] = 0.0f;
     s->P[74] = 0.0f;
-    s->P[75] = 0x1.9000000000000p+6f;
+    s->P[75] = 0x1.9p+6f;
     s->P[76] = 0.0f;
-    s->P[77] = 0x1.3880000000000p+13f;
+    s->P[77] = 0x1.388p+13f;
     s->initialised = 0;
     s->rejected = 0;
     s->skipped = 0;
@@ -313,43 +313,43 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
     const int32_t x_skipped = s->skipped;
     const int32_t x_resets = s->resets;
     const int t129 = (0.0f < u_dt);  /* pendulum.py:212 */
-    const int t131 = (u_dt <= 0x1.99999a0000000p-4f);  /* pendulum.py:212 */
+    const int t131 = (u_dt <= 0x1.99999ap-4f);  /* pendulum.py:212 */
     const int t132 = (t129 && t131);  /* pendulum.py:212 */
     const float t133 = fabsf(u_markers0);  /* pendulum.py:216 */
-    const int t135 = (t133 <= 0x1.4000000000000p+3f);  /* pendulum.py:216 */
+    const int t135 = (t133 <= 0x1.4p+3f);  /* pendulum.py:216 */
     const float t136 = fabsf(u_markers1);  /* pendulum.py:217 */
-    const int t137 = (t136 <= 0x1.4000000000000p+3f);  /* pendulum.py:217 */
+    const int t137 = (t136 <= 0x1.4p+3f);  /* pendulum.py:217 */
     const int t138 = (u_marker_valid0 && t135);  /* pendulum.py:216 */
     const int t139 = (t138 && t137);  /* pendulum.py:216 */
     const float t140 = fabsf(u_markers2);  /* pendulum.py:216 */
-    const int t141 = (t140 <= 0x1.4000000000000p+3f);  /* pendulum.py:216 */
+    const int t141 = (t140 <= 0x1.4p+3f);  /* pendulum.py:216 */
     const float t142 = fabsf(u_markers3);  /* pendulum.py:217 */
-    const int t143 = (t142 <= 0x1.4000000000000p+3f);  /* pendulum.py:217 */
+    const int t143 = (t142 <= 0x1.4p+3f);  /* pendulum.py:217 */
     const int t144 = (u_marker_valid1 && t141);  /* pendulum.py:216 */
     const int t145 = (t144 && t143);  /* pendulum.py:216 */
     const float t146 = fabsf(u_markers4);  /* pendulum.py:216 */
-    const int t147 = (t146 <= 0x1.4000000000000p+3f);  /* pendulum.py:216 */
+    const int t147 = (t146 <= 0x1.4p+3f);  /* pendulum.py:216 */
     const float t148 = fabsf(u_markers5);  /* pendulum.py:217 */
-    const int t149 = (t148 <= 0x1.4000000000000p+3f);  /* pendulum.py:217 */
+    const int t149 = (t148 <= 0x1.4p+3f);  /* pendulum.py:217 */
     const int t150 = (u_marker_valid2 && t147);  /* pendulum.py:216 */
     const int t151 = (t150 && t149);  /* pendulum.py:216 */
     const float t152 = fabsf(u_markers6);  /* pendulum.py:216 */
-    const int t153 = (t152 <= 0x1.4000000000000p+3f);  /* pendulum.py:216 */
+    const int t153 = (t152 <= 0x1.4p+3f);  /* pendulum.py:216 */
     const float t154 = fabsf(u_markers7);  /* pendulum.py:217 */
-    const int t155 = (t154 <= 0x1.4000000000000p+3f);  /* pendulum.py:217 */
+    const int t155 = (t154 <= 0x1.4p+3f);  /* pendulum.py:217 */
     const int t156 = (u_marker_valid3 && t153);  /* pendulum.py:216 */
     const int t157 = (t156 && t155);  /* pendulum.py:216 */
     const float t158 = fabsf(u_efforts0);  /* pendulum.py:218 */
-    const int t160 = (t158 <= 0x1.3880000000000p+14f);  /* pendulum.py:218 */
+    const int t160 = (t158 <= 0x1.388p+14f);  /* pendulum.py:218 */
     const int t161 = (u_effort_valid0 && t160);  /* pendulum.py:218 */
     const float t162 = fabsf(u_efforts1);  /* pendulum.py:218 */
-    const int t163 = (t162 <= 0x1.3880000000000p+14f);  /* pendulum.py:218 */
+    const int t163 = (t162 <= 0x1.388p+14f);  /* pendulum.py:218 */
     const int t164 = (u_effort_valid1 && t163);  /* pendulum.py:218 */
     const float t165 = fabsf(u_efforts2);  /* pendulum.py:218 */
-    const int t166 = (t165 <= 0x1.3880000000000p+14f);  /* pendulum.py:218 */
+    const int t166 = (t165 <= 0x1.388p+14f);  /* pendulum.py:218 */
     const int t167 = (u_effort_valid2 && t166);  /* pendulum.py:218 */
     const float t168 = fabsf(u_efforts3);  /* pendulum.py:218 */
-    const int t169 = (t168 <= 0x1.3880000000000p+14f);  /* pendulum.py:218 */
+    const int t169 = (t168 <= 0x1.388p+14f);  /* pendulum.py:218 */
     const int t170 = (u_effort_valid3 && t169);  /* pendulum.py:218 */
     const int t171 = (!t139);  /* pendulum.py:219 */
     const int t172 = (u_marker_valid0 && t171);  /* pendulum.py:219 */
@@ -479,51 +479,51 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
     float t8670 = 0.0f;
     float t8674 = 0.0f;
     if (t203) {
-        const float t208 = (x_z2 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t210 = (t208 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t211_a = ((-0x1.0000000000000p+30f < t210) ? t210 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t211_b = ((t211_a < 0x1.0000000000000p+30f) ? t211_a : 0x1.0000000000000p+30f);
+        const float t208 = (x_z2 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t210 = (t208 + 0x1p-1f);  /* ad.py:163 */
+        const float t211_a = ((-0x1p+30f < t210) ? t210 : -0x1p+30f);  /* ad.py:163 */
+        const float t211_b = ((t211_a < 0x1p+30f) ? t211_a : 0x1p+30f);
         const float t211_i = ((float)((int32_t)t211_b));
-        const float t211 = ((t211_b < t211_i) ? (t211_i - 0x1.0000000000000p+0f) : t211_i);
-        const float t213 = (t211 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t211 = ((t211_b < t211_i) ? (t211_i - 0x1p+0f) : t211_i);
+        const float t213 = (t211 * 0x1.92p+0f);  /* ad.py:163 */
         const float t214 = (x_z2 - t213);  /* ad.py:163 */
-        const float t216 = (t211 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t216 = (t211 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t217 = (t214 - t216);  /* ad.py:163 */
-        const float t220 = (t211 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t221_a = ((-0x1.0000000000000p+30f < t220) ? t220 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t221_b = ((t221_a < 0x1.0000000000000p+30f) ? t221_a : 0x1.0000000000000p+30f);
+        const float t220 = (t211 * 0x1p-2f);  /* ad.py:163 */
+        const float t221_a = ((-0x1p+30f < t220) ? t220 : -0x1p+30f);  /* ad.py:163 */
+        const float t221_b = ((t221_a < 0x1p+30f) ? t221_a : 0x1p+30f);
         const float t221_i = ((float)((int32_t)t221_b));
-        const float t221 = ((t221_b < t221_i) ? (t221_i - 0x1.0000000000000p+0f) : t221_i);
-        const float t223 = (0x1.0000000000000p+2f * t221);  /* ad.py:163 */
+        const float t221 = ((t221_b < t221_i) ? (t221_i - 0x1p+0f) : t221_i);
+        const float t223 = (0x1p+2f * t221);  /* ad.py:163 */
         const float t224 = (t211 - t223);  /* ad.py:163 */
         const float t225 = (t217 * t217);  /* ad.py:163 */
-        const float t227 = (-0x1.ae64560000000p-26f * t225);  /* ad.py:163 */
-        const float t229 = (t227 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t227 = (-0x1.ae6456p-26f * t225);  /* ad.py:163 */
+        const float t229 = (t227 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t230 = (t229 * t225);  /* ad.py:163 */
-        const float t232 = (t230 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t232 = (t230 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t233 = (t232 * t225);  /* ad.py:163 */
-        const float t235 = (t233 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t235 = (t233 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t236 = (t235 * t225);  /* ad.py:163 */
-        const float t238 = (t236 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t238 = (t236 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t239 = (t217 * t225);  /* ad.py:163 */
         const float t240 = (t239 * t238);  /* ad.py:163 */
         const float t241 = (t217 + t240);  /* ad.py:163 */
-        const float t243 = (0x1.1eed8e0000000p-29f * t225);  /* ad.py:163 */
-        const float t245 = (t243 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t243 = (0x1.1eed8ep-29f * t225);  /* ad.py:163 */
+        const float t245 = (t243 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t246 = (t245 * t225);  /* ad.py:163 */
-        const float t248 = (t246 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t248 = (t246 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t249 = (t248 * t225);  /* ad.py:163 */
-        const float t251 = (t249 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t251 = (t249 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t252 = (t251 * t225);  /* ad.py:163 */
-        const float t254 = (t252 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t255 = (0x1.0000000000000p-1f * t225);  /* ad.py:163 */
-        const float t257 = (0x1.0000000000000p+0f - t255);  /* ad.py:163 */
+        const float t254 = (t252 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t255 = (0x1p-1f * t225);  /* ad.py:163 */
+        const float t257 = (0x1p+0f - t255);  /* ad.py:163 */
         const float t258 = (t225 * t225);  /* ad.py:163 */
         const float t259 = (t258 * t254);  /* ad.py:163 */
         const float t260 = (t257 + t259);  /* ad.py:163 */
-        const int t261 = (t224 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t263 = (t224 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t265 = (t224 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t261 = (t224 < 0x1p-1f);  /* ad.py:163 */
+        const int t263 = (t224 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t265 = (t224 < 0x1.4p+1f);  /* ad.py:163 */
         const float t266 = (-t241);  /* ad.py:163 */
         const float t267 = (-t260);  /* ad.py:163 */
         const float t268 = (t265 ? t266 : t267);  /* ad.py:163 */
@@ -541,51 +541,51 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t282 = (t276 * x_zd2);  /* ad.py:104 */
         const float t283 = (-t276);  /* ad.py:40 */
         const float t284 = (-t282);  /* ad.py:40 */
-        const float t285 = (x_z3 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t286 = (t285 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t287_a = ((-0x1.0000000000000p+30f < t286) ? t286 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t287_b = ((t287_a < 0x1.0000000000000p+30f) ? t287_a : 0x1.0000000000000p+30f);
+        const float t285 = (x_z3 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t286 = (t285 + 0x1p-1f);  /* ad.py:163 */
+        const float t287_a = ((-0x1p+30f < t286) ? t286 : -0x1p+30f);  /* ad.py:163 */
+        const float t287_b = ((t287_a < 0x1p+30f) ? t287_a : 0x1p+30f);
         const float t287_i = ((float)((int32_t)t287_b));
-        const float t287 = ((t287_b < t287_i) ? (t287_i - 0x1.0000000000000p+0f) : t287_i);
-        const float t288 = (t287 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t287 = ((t287_b < t287_i) ? (t287_i - 0x1p+0f) : t287_i);
+        const float t288 = (t287 * 0x1.92p+0f);  /* ad.py:163 */
         const float t289 = (x_z3 - t288);  /* ad.py:163 */
-        const float t290 = (t287 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t290 = (t287 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t291 = (t289 - t290);  /* ad.py:163 */
-        const float t293 = (t287 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t294_a = ((-0x1.0000000000000p+30f < t293) ? t293 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t294_b = ((t294_a < 0x1.0000000000000p+30f) ? t294_a : 0x1.0000000000000p+30f);
+        const float t293 = (t287 * 0x1p-2f);  /* ad.py:163 */
+        const float t294_a = ((-0x1p+30f < t293) ? t293 : -0x1p+30f);  /* ad.py:163 */
+        const float t294_b = ((t294_a < 0x1p+30f) ? t294_a : 0x1p+30f);
         const float t294_i = ((float)((int32_t)t294_b));
-        const float t294 = ((t294_b < t294_i) ? (t294_i - 0x1.0000000000000p+0f) : t294_i);
-        const float t295 = (0x1.0000000000000p+2f * t294);  /* ad.py:163 */
+        const float t294 = ((t294_b < t294_i) ? (t294_i - 0x1p+0f) : t294_i);
+        const float t295 = (0x1p+2f * t294);  /* ad.py:163 */
         const float t296 = (t287 - t295);  /* ad.py:163 */
         const float t297 = (t291 * t291);  /* ad.py:163 */
-        const float t298 = (-0x1.ae64560000000p-26f * t297);  /* ad.py:163 */
-        const float t299 = (t298 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t298 = (-0x1.ae6456p-26f * t297);  /* ad.py:163 */
+        const float t299 = (t298 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t300 = (t299 * t297);  /* ad.py:163 */
-        const float t301 = (t300 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t301 = (t300 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t302 = (t301 * t297);  /* ad.py:163 */
-        const float t303 = (t302 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t303 = (t302 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t304 = (t303 * t297);  /* ad.py:163 */
-        const float t305 = (t304 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t305 = (t304 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t306 = (t291 * t297);  /* ad.py:163 */
         const float t307 = (t306 * t305);  /* ad.py:163 */
         const float t308 = (t291 + t307);  /* ad.py:163 */
-        const float t309 = (0x1.1eed8e0000000p-29f * t297);  /* ad.py:163 */
-        const float t310 = (t309 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t309 = (0x1.1eed8ep-29f * t297);  /* ad.py:163 */
+        const float t310 = (t309 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t311 = (t310 * t297);  /* ad.py:163 */
-        const float t312 = (t311 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t312 = (t311 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t313 = (t312 * t297);  /* ad.py:163 */
-        const float t314 = (t313 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t314 = (t313 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t315 = (t314 * t297);  /* ad.py:163 */
-        const float t316 = (t315 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t317 = (0x1.0000000000000p-1f * t297);  /* ad.py:163 */
-        const float t318 = (0x1.0000000000000p+0f - t317);  /* ad.py:163 */
+        const float t316 = (t315 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t317 = (0x1p-1f * t297);  /* ad.py:163 */
+        const float t318 = (0x1p+0f - t317);  /* ad.py:163 */
         const float t319 = (t297 * t297);  /* ad.py:163 */
         const float t320 = (t319 * t316);  /* ad.py:163 */
         const float t321 = (t318 + t320);  /* ad.py:163 */
-        const int t322 = (t296 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t323 = (t296 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t324 = (t296 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t322 = (t296 < 0x1p-1f);  /* ad.py:163 */
+        const int t323 = (t296 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t324 = (t296 < 0x1.4p+1f);  /* ad.py:163 */
         const float t325 = (-t308);  /* ad.py:163 */
         const float t326 = (-t321);  /* ad.py:163 */
         const float t327 = (t324 ? t325 : t326);  /* ad.py:163 */
@@ -616,21 +616,21 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t354 = (p_L * t343);  /* ad.py:116 */
         const float t355 = (-t353);  /* ad.py:87 */
         const float t356 = (t349 - t354);  /* ad.py:87 */
-        const float t358 = (p_m1 / 0x1.8000000000000p+1f);  /* models.py:63 */
-        const float t360 = (p_m1 / 0x1.8000000000000p+2f);  /* models.py:63 */
-        const float t361 = (p_m2 / 0x1.8000000000000p+1f);  /* models.py:64 */
-        const float t362 = (p_m2 / 0x1.8000000000000p+2f);  /* models.py:64 */
+        const float t358 = (p_m1 / 0x1.8p+1f);  /* models.py:63 */
+        const float t360 = (p_m1 / 0x1.8p+2f);  /* models.py:63 */
+        const float t361 = (p_m2 / 0x1.8p+1f);  /* models.py:64 */
+        const float t362 = (p_m2 / 0x1.8p+2f);  /* models.py:64 */
         const float t363 = (p_m1 + p_m2);  /* models.py:65 */
-        const float t364 = (t363 / 0x1.8000000000000p+1f);  /* models.py:65 */
+        const float t364 = (t363 / 0x1.8p+1f);  /* models.py:65 */
         const float t365 = (p_m1 * p_g);  /* models.py:77 */
         const float t366 = (-t365);  /* models.py:77 */
-        const float t367 = (t366 * 0x1.0000000000000p-1f);  /* models.py:77 */
+        const float t367 = (t366 * 0x1p-1f);  /* models.py:77 */
         const float t368 = (t363 * p_g);  /* models.py:77 */
         const float t369 = (-t368);  /* models.py:77 */
-        const float t370 = (t369 * 0x1.0000000000000p-1f);  /* models.py:77 */
+        const float t370 = (t369 * 0x1p-1f);  /* models.py:77 */
         const float t371 = (p_m2 * p_g);  /* models.py:78 */
         const float t372 = (-t371);  /* models.py:78 */
-        const float t373 = (t372 * 0x1.0000000000000p-1f);  /* models.py:78 */
+        const float t373 = (t372 * 0x1p-1f);  /* models.py:78 */
         const float t374 = (t358 + t360);  /* mbs.py:74 */
         const float t375 = (t360 * t344);  /* mbs.py:74 */
         const float t376 = (t360 * t348);  /* mbs.py:74 */
@@ -712,7 +712,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t452 = (t450 + t451);  /* mbs.py:84 */
         const float t453 = (t440 + x_te1);  /* mbs.py:99 */
         const float t454 = (t442 + x_te2);  /* mbs.py:99 */
-        const float t456 = (-0x1.0000000000000p+0f * x_te0);  /* mbs.py:99 */
+        const float t456 = (-0x1p+0f * x_te0);  /* mbs.py:99 */
         const float t457 = (t344 * x_te1);  /* mbs.py:99 */
         const float t458 = (t456 + t457);  /* mbs.py:99 */
         const float t459 = (t348 * x_te2);  /* mbs.py:99 */
@@ -724,8 +724,8 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t465 = (t463 + t464);  /* mbs.py:99 */
         const float t466 = (t465 + x_te3);  /* mbs.py:99 */
         const float t467 = (t452 + t466);  /* mbs.py:99 */
-        const float t469 = ((0x1.12e0be0000000p-30f < t395) ? t395 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t470 = (0x1.0000000000000p+0f / t469);  /* mbs.py:158 */
+        const float t469 = ((0x1.12e0bep-30f < t395) ? t395 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t470 = (0x1p+0f / t469);  /* mbs.py:158 */
         const float t471 = (t397 * t470);  /* mbs.py:163 */
         const float t472 = (t398 * t470);  /* mbs.py:163 */
         const float t473 = (t400 * t470);  /* mbs.py:163 */
@@ -736,8 +736,8 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t478 = (t473 * t473);  /* mbs.py:156 */
         const float t479 = (t478 * t395);  /* mbs.py:156 */
         const float t480 = (t477 - t479);  /* mbs.py:156 */
-        const float t481 = ((0x1.12e0be0000000p-30f < t480) ? t480 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t482 = (0x1.0000000000000p+0f / t481);  /* mbs.py:158 */
+        const float t481 = ((0x1.12e0bep-30f < t480) ? t480 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t482 = (0x1p+0f / t481);  /* mbs.py:158 */
         const float t483 = (t472 * t471);  /* mbs.py:162 */
         const float t484 = (t483 * t395);  /* mbs.py:162 */
         const float t485 = (t415 - t484);  /* mbs.py:162 */
@@ -754,8 +754,8 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t496 = (t489 * t489);  /* mbs.py:156 */
         const float t497 = (t496 * t480);  /* mbs.py:156 */
         const float t498 = (t495 - t497);  /* mbs.py:156 */
-        const float t499 = ((0x1.12e0be0000000p-30f < t498) ? t498 : 0x1.12e0be0000000p-30f);  /* mbs.py:158 */
-        const float t500 = (0x1.0000000000000p+0f / t499);  /* mbs.py:158 */
+        const float t499 = ((0x1.12e0bep-30f < t498) ? t498 : 0x1.12e0bep-30f);  /* mbs.py:158 */
+        const float t500 = (0x1p+0f / t499);  /* mbs.py:158 */
         const float t501 = (t471 * t453);  /* mbs.py:172 */
         const float t502 = (t461 - t501);  /* mbs.py:172 */
         const float t503 = (t473 * t454);  /* mbs.py:172 */
@@ -780,9 +780,9 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t522 = (t511 - t521);  /* mbs.py:177 */
         const float t523 = (t472 * t514);  /* mbs.py:177 */
         const float t524 = (t522 - t523);  /* mbs.py:177 */
-        const float t525 = (t489 * -0x1.0000000000000p+0f);  /* mbs.py:172 */
-        const float t526 = (0x1.0000000000000p+0f - t525);  /* mbs.py:172 */
-        const float t527 = (-0x1.0000000000000p+0f * t482);  /* mbs.py:173 */
+        const float t525 = (t489 * -0x1p+0f);  /* mbs.py:172 */
+        const float t526 = (0x1p+0f - t525);  /* mbs.py:172 */
+        const float t527 = (-0x1p+0f * t482);  /* mbs.py:173 */
         const float t528 = (t526 * t500);  /* mbs.py:173 */
         const float t529 = (t489 * t528);  /* mbs.py:177 */
         const float t530 = (t527 - t529);  /* mbs.py:177 */
@@ -1191,7 +1191,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t933 = (p_q_torque * u_dt);  /* ekf.py:121 */
         const float t934 = (p_q_force * u_dt);  /* ekf.py:121 */
         const float t935 = (u_dt * u_dt);  /* ekf.py:224 */
-        const float t936 = (t935 * 0x1.0000000000000p-1f);  /* ekf.py:224 */
+        const float t936 = (t935 * 0x1p-1f);  /* ekf.py:224 */
         const float t937 = (t917 * t936);  /* ekf.py:121 */
         const float t938 = (t918 * t936);  /* ekf.py:121 */
         const float t939 = (t919 * t936);  /* ekf.py:121 */
@@ -1279,7 +1279,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t1021 = (t932 * t500);  /* ekf.py:139 */
         const float t1022 = (t1020 + t1021);  /* ekf.py:139 */
         const float t1023 = (t935 * u_dt);  /* ekf.py:225 */
-        const float t1025 = (t1023 * 0x1.5555560000000p-2f);  /* ekf.py:225 */
+        const float t1025 = (t1023 * 0x1.555556p-2f);  /* ekf.py:225 */
         const float t1026 = (t959 * t1025);  /* ekf.py:121 */
         const float t1027 = (t966 * t1025);  /* ekf.py:121 */
         const float t1028 = (t973 * t1025);  /* ekf.py:121 */
@@ -1322,8 +1322,8 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t1065 = (t544 * u_dt);  /* ekf.py:121 */
         const float t1066 = (t560 * u_dt);  /* ekf.py:121 */
         const float t1067 = (t500 * u_dt);  /* ekf.py:121 */
-        const float t1068 = (0x1.0000000000000p+0f + t1054);  /* ekf.py:117 */
-        const float t1069 = (0x1.0000000000000p+0f + t1063);  /* ekf.py:117 */
+        const float t1068 = (0x1p+0f + t1054);  /* ekf.py:117 */
+        const float t1069 = (0x1p+0f + t1063);  /* ekf.py:117 */
         const float t1070 = (t892 * t836);  /* ekf.py:113 */
         const float t1071 = (t916 * t834);  /* ekf.py:113 */
         const float t1072 = (t1070 + t1071);  /* ekf.py:113 */
@@ -1491,9 +1491,9 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t1234 = (t1166 * t936);  /* ekf.py:121 */
         const float t1235 = (t1169 * t936);  /* ekf.py:121 */
         const float t1236 = (t1172 * t936);  /* ekf.py:121 */
-        const float t1237 = (0x1.0000000000000p+0f + t1189);  /* ekf.py:117 */
+        const float t1237 = (0x1p+0f + t1189);  /* ekf.py:117 */
         const float t1238 = (u_dt + t1191);  /* ekf.py:117 */
-        const float t1239 = (0x1.0000000000000p+0f + t1198);  /* ekf.py:117 */
+        const float t1239 = (0x1p+0f + t1198);  /* ekf.py:117 */
         const float t1240 = (u_dt + t1200);  /* ekf.py:117 */
         const float t1241 = (t1036 + t1205);  /* ekf.py:117 */
         const float t1242 = (t1037 + t1206);  /* ekf.py:117 */
@@ -3390,51 +3390,51 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t3133 = (x_zd2 + t3132);  /* ekf.py:242 */
         const float t3134 = (u_dt * t514);  /* ekf.py:242 */
         const float t3135 = (x_zd3 + t3134);  /* ekf.py:242 */
-        const float t3136 = (t3125 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t3137 = (t3136 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t3138_a = ((-0x1.0000000000000p+30f < t3137) ? t3137 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t3138_b = ((t3138_a < 0x1.0000000000000p+30f) ? t3138_a : 0x1.0000000000000p+30f);
+        const float t3136 = (t3125 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t3137 = (t3136 + 0x1p-1f);  /* ad.py:163 */
+        const float t3138_a = ((-0x1p+30f < t3137) ? t3137 : -0x1p+30f);  /* ad.py:163 */
+        const float t3138_b = ((t3138_a < 0x1p+30f) ? t3138_a : 0x1p+30f);
         const float t3138_i = ((float)((int32_t)t3138_b));
-        const float t3138 = ((t3138_b < t3138_i) ? (t3138_i - 0x1.0000000000000p+0f) : t3138_i);
-        const float t3139 = (t3138 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t3138 = ((t3138_b < t3138_i) ? (t3138_i - 0x1p+0f) : t3138_i);
+        const float t3139 = (t3138 * 0x1.92p+0f);  /* ad.py:163 */
         const float t3140 = (t3125 - t3139);  /* ad.py:163 */
-        const float t3141 = (t3138 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t3141 = (t3138 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t3142 = (t3140 - t3141);  /* ad.py:163 */
-        const float t3144 = (t3138 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t3145_a = ((-0x1.0000000000000p+30f < t3144) ? t3144 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t3145_b = ((t3145_a < 0x1.0000000000000p+30f) ? t3145_a : 0x1.0000000000000p+30f);
+        const float t3144 = (t3138 * 0x1p-2f);  /* ad.py:163 */
+        const float t3145_a = ((-0x1p+30f < t3144) ? t3144 : -0x1p+30f);  /* ad.py:163 */
+        const float t3145_b = ((t3145_a < 0x1p+30f) ? t3145_a : 0x1p+30f);
         const float t3145_i = ((float)((int32_t)t3145_b));
-        const float t3145 = ((t3145_b < t3145_i) ? (t3145_i - 0x1.0000000000000p+0f) : t3145_i);
-        const float t3146 = (0x1.0000000000000p+2f * t3145);  /* ad.py:163 */
+        const float t3145 = ((t3145_b < t3145_i) ? (t3145_i - 0x1p+0f) : t3145_i);
+        const float t3146 = (0x1p+2f * t3145);  /* ad.py:163 */
         const float t3147 = (t3138 - t3146);  /* ad.py:163 */
         const float t3148 = (t3142 * t3142);  /* ad.py:163 */
-        const float t3149 = (-0x1.ae64560000000p-26f * t3148);  /* ad.py:163 */
-        const float t3150 = (t3149 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t3149 = (-0x1.ae6456p-26f * t3148);  /* ad.py:163 */
+        const float t3150 = (t3149 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t3151 = (t3150 * t3148);  /* ad.py:163 */
-        const float t3152 = (t3151 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t3152 = (t3151 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t3153 = (t3152 * t3148);  /* ad.py:163 */
-        const float t3154 = (t3153 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t3154 = (t3153 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t3155 = (t3154 * t3148);  /* ad.py:163 */
-        const float t3156 = (t3155 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t3156 = (t3155 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t3157 = (t3142 * t3148);  /* ad.py:163 */
         const float t3158 = (t3157 * t3156);  /* ad.py:163 */
         const float t3159 = (t3142 + t3158);  /* ad.py:163 */
-        const float t3160 = (0x1.1eed8e0000000p-29f * t3148);  /* ad.py:163 */
-        const float t3161 = (t3160 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t3160 = (0x1.1eed8ep-29f * t3148);  /* ad.py:163 */
+        const float t3161 = (t3160 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t3162 = (t3161 * t3148);  /* ad.py:163 */
-        const float t3163 = (t3162 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t3163 = (t3162 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t3164 = (t3163 * t3148);  /* ad.py:163 */
-        const float t3165 = (t3164 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t3165 = (t3164 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t3166 = (t3165 * t3148);  /* ad.py:163 */
-        const float t3167 = (t3166 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t3168 = (0x1.0000000000000p-1f * t3148);  /* ad.py:163 */
-        const float t3169 = (0x1.0000000000000p+0f - t3168);  /* ad.py:163 */
+        const float t3167 = (t3166 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t3168 = (0x1p-1f * t3148);  /* ad.py:163 */
+        const float t3169 = (0x1p+0f - t3168);  /* ad.py:163 */
         const float t3170 = (t3148 * t3148);  /* ad.py:163 */
         const float t3171 = (t3170 * t3167);  /* ad.py:163 */
         const float t3172 = (t3169 + t3171);  /* ad.py:163 */
-        const int t3173 = (t3147 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t3174 = (t3147 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t3175 = (t3147 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t3173 = (t3147 < 0x1p-1f);  /* ad.py:163 */
+        const int t3174 = (t3147 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t3175 = (t3147 < 0x1.4p+1f);  /* ad.py:163 */
         const float t3176 = (-t3159);  /* ad.py:163 */
         const float t3177 = (-t3172);  /* ad.py:163 */
         const float t3178 = (t3175 ? t3176 : t3177);  /* ad.py:163 */
@@ -3444,51 +3444,51 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t3182 = (t3174 ? t3176 : t3181);  /* ad.py:163 */
         const float t3183 = (t3173 ? t3172 : t3182);  /* ad.py:163 */
         const float t3186 = (-t3180);  /* ad.py:40 */
-        const float t3187 = (t3127 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t3188 = (t3187 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t3189_a = ((-0x1.0000000000000p+30f < t3188) ? t3188 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t3189_b = ((t3189_a < 0x1.0000000000000p+30f) ? t3189_a : 0x1.0000000000000p+30f);
+        const float t3187 = (t3127 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t3188 = (t3187 + 0x1p-1f);  /* ad.py:163 */
+        const float t3189_a = ((-0x1p+30f < t3188) ? t3188 : -0x1p+30f);  /* ad.py:163 */
+        const float t3189_b = ((t3189_a < 0x1p+30f) ? t3189_a : 0x1p+30f);
         const float t3189_i = ((float)((int32_t)t3189_b));
-        const float t3189 = ((t3189_b < t3189_i) ? (t3189_i - 0x1.0000000000000p+0f) : t3189_i);
-        const float t3190 = (t3189 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t3189 = ((t3189_b < t3189_i) ? (t3189_i - 0x1p+0f) : t3189_i);
+        const float t3190 = (t3189 * 0x1.92p+0f);  /* ad.py:163 */
         const float t3191 = (t3127 - t3190);  /* ad.py:163 */
-        const float t3192 = (t3189 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t3192 = (t3189 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t3193 = (t3191 - t3192);  /* ad.py:163 */
-        const float t3195 = (t3189 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t3196_a = ((-0x1.0000000000000p+30f < t3195) ? t3195 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t3196_b = ((t3196_a < 0x1.0000000000000p+30f) ? t3196_a : 0x1.0000000000000p+30f);
+        const float t3195 = (t3189 * 0x1p-2f);  /* ad.py:163 */
+        const float t3196_a = ((-0x1p+30f < t3195) ? t3195 : -0x1p+30f);  /* ad.py:163 */
+        const float t3196_b = ((t3196_a < 0x1p+30f) ? t3196_a : 0x1p+30f);
         const float t3196_i = ((float)((int32_t)t3196_b));
-        const float t3196 = ((t3196_b < t3196_i) ? (t3196_i - 0x1.0000000000000p+0f) : t3196_i);
-        const float t3197 = (0x1.0000000000000p+2f * t3196);  /* ad.py:163 */
+        const float t3196 = ((t3196_b < t3196_i) ? (t3196_i - 0x1p+0f) : t3196_i);
+        const float t3197 = (0x1p+2f * t3196);  /* ad.py:163 */
         const float t3198 = (t3189 - t3197);  /* ad.py:163 */
         const float t3199 = (t3193 * t3193);  /* ad.py:163 */
-        const float t3200 = (-0x1.ae64560000000p-26f * t3199);  /* ad.py:163 */
-        const float t3201 = (t3200 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t3200 = (-0x1.ae6456p-26f * t3199);  /* ad.py:163 */
+        const float t3201 = (t3200 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t3202 = (t3201 * t3199);  /* ad.py:163 */
-        const float t3203 = (t3202 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t3203 = (t3202 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t3204 = (t3203 * t3199);  /* ad.py:163 */
-        const float t3205 = (t3204 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t3205 = (t3204 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t3206 = (t3205 * t3199);  /* ad.py:163 */
-        const float t3207 = (t3206 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t3207 = (t3206 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t3208 = (t3193 * t3199);  /* ad.py:163 */
         const float t3209 = (t3208 * t3207);  /* ad.py:163 */
         const float t3210 = (t3193 + t3209);  /* ad.py:163 */
-        const float t3211 = (0x1.1eed8e0000000p-29f * t3199);  /* ad.py:163 */
-        const float t3212 = (t3211 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t3211 = (0x1.1eed8ep-29f * t3199);  /* ad.py:163 */
+        const float t3212 = (t3211 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t3213 = (t3212 * t3199);  /* ad.py:163 */
-        const float t3214 = (t3213 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t3214 = (t3213 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t3215 = (t3214 * t3199);  /* ad.py:163 */
-        const float t3216 = (t3215 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t3216 = (t3215 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t3217 = (t3216 * t3199);  /* ad.py:163 */
-        const float t3218 = (t3217 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t3219 = (0x1.0000000000000p-1f * t3199);  /* ad.py:163 */
-        const float t3220 = (0x1.0000000000000p+0f - t3219);  /* ad.py:163 */
+        const float t3218 = (t3217 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t3219 = (0x1p-1f * t3199);  /* ad.py:163 */
+        const float t3220 = (0x1p+0f - t3219);  /* ad.py:163 */
         const float t3221 = (t3199 * t3199);  /* ad.py:163 */
         const float t3222 = (t3221 * t3218);  /* ad.py:163 */
         const float t3223 = (t3220 + t3222);  /* ad.py:163 */
-        const int t3224 = (t3198 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t3225 = (t3198 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t3226 = (t3198 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t3224 = (t3198 < 0x1p-1f);  /* ad.py:163 */
+        const int t3225 = (t3198 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t3226 = (t3198 < 0x1.4p+1f);  /* ad.py:163 */
         const float t3227 = (-t3210);  /* ad.py:163 */
         const float t3228 = (-t3223);  /* ad.py:163 */
         const float t3229 = (t3226 ? t3227 : t3228);  /* ad.py:163 */
@@ -3512,9 +3512,9 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t3249 = (-t3247);  /* ad.py:87 */
         const float t3250 = (t3240 - t3121);  /* ad.py:87 */
         const float t3251 = (t3242 - t3123);  /* ad.py:87 */
-        const float t3253 = (0x1.99999a0000000p-5f / p_L);  /* models.py:101 */
-        const float t3254 = (0x1.0000000000000p-2f * t3250);  /* ad.py:116 */
-        const float t3255 = (0x1.0000000000000p-2f * t3239);  /* ad.py:116 */
+        const float t3253 = (0x1.99999ap-5f / p_L);  /* models.py:101 */
+        const float t3254 = (0x1p-2f * t3250);  /* ad.py:116 */
+        const float t3255 = (0x1p-2f * t3239);  /* ad.py:116 */
         const float t3256 = (t3121 + t3254);  /* ad.py:71 */
         const float t3257 = (t3253 * t3251);  /* ad.py:116 */
         const float t3258 = (t3253 * 0.0f);  /* ad.py:116 */
@@ -3522,16 +3522,16 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t3260 = (t3256 - t3257);  /* ad.py:87 */
         const float t3261 = (-t3258);  /* ad.py:87 */
         const float t3262 = (t3255 - t3259);  /* ad.py:87 */
-        const float t3263 = (0x1.0000000000000p-2f * t3251);  /* ad.py:116 */
-        const float t3264 = (0x1.0000000000000p-2f * t3243);  /* ad.py:116 */
+        const float t3263 = (0x1p-2f * t3251);  /* ad.py:116 */
+        const float t3264 = (0x1p-2f * t3243);  /* ad.py:116 */
         const float t3265 = (t3123 + t3263);  /* ad.py:71 */
         const float t3266 = (t3253 * t3250);  /* ad.py:116 */
         const float t3267 = (t3253 * t3239);  /* ad.py:116 */
         const float t3268 = (t3265 + t3266);  /* ad.py:71 */
         const float t3269 = (t3264 + t3267);  /* ad.py:71 */
-        const float t3271 = (-0x1.99999a0000000p-5f / p_L);  /* models.py:101 */
-        const float t3273 = (0x1.8000000000000p-1f * t3250);  /* ad.py:116 */
-        const float t3274 = (0x1.8000000000000p-1f * t3239);  /* ad.py:116 */
+        const float t3271 = (-0x1.99999ap-5f / p_L);  /* models.py:101 */
+        const float t3273 = (0x1.8p-1f * t3250);  /* ad.py:116 */
+        const float t3274 = (0x1.8p-1f * t3239);  /* ad.py:116 */
         const float t3275 = (t3121 + t3273);  /* ad.py:71 */
         const float t3276 = (t3271 * t3251);  /* ad.py:116 */
         const float t3277 = (t3271 * 0.0f);  /* ad.py:116 */
@@ -3539,8 +3539,8 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t3279 = (t3275 - t3276);  /* ad.py:87 */
         const float t3280 = (-t3277);  /* ad.py:87 */
         const float t3281 = (t3274 - t3278);  /* ad.py:87 */
-        const float t3282 = (0x1.8000000000000p-1f * t3251);  /* ad.py:116 */
-        const float t3283 = (0x1.8000000000000p-1f * t3243);  /* ad.py:116 */
+        const float t3282 = (0x1.8p-1f * t3251);  /* ad.py:116 */
+        const float t3283 = (0x1.8p-1f * t3243);  /* ad.py:116 */
         const float t3284 = (t3123 + t3282);  /* ad.py:71 */
         const float t3285 = (t3271 * t3250);  /* ad.py:116 */
         const float t3286 = (t3271 * t3239);  /* ad.py:116 */
@@ -3550,9 +3550,9 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t3290 = (t3239 - t3239);  /* ad.py:87 */
         const float t3291 = (t3248 - t3242);  /* ad.py:87 */
         const float t3292 = (t3243 - t3243);  /* ad.py:87 */
-        const float t3293 = (0x1.0000000000000p-2f * t3289);  /* ad.py:116 */
-        const float t3294 = (0x1.0000000000000p-2f * t3290);  /* ad.py:116 */
-        const float t3295 = (0x1.0000000000000p-2f * t3245);  /* ad.py:116 */
+        const float t3293 = (0x1p-2f * t3289);  /* ad.py:116 */
+        const float t3294 = (0x1p-2f * t3290);  /* ad.py:116 */
+        const float t3295 = (0x1p-2f * t3245);  /* ad.py:116 */
         const float t3296 = (t3240 + t3293);  /* ad.py:71 */
         const float t3297 = (t3239 + t3294);  /* ad.py:71 */
         const float t3298 = (t3253 * t3291);  /* ad.py:116 */
@@ -3561,9 +3561,9 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t3301 = (t3296 - t3298);  /* ad.py:87 */
         const float t3302 = (t3297 - t3299);  /* ad.py:87 */
         const float t3303 = (t3295 - t3300);  /* ad.py:87 */
-        const float t3304 = (0x1.0000000000000p-2f * t3291);  /* ad.py:116 */
-        const float t3305 = (0x1.0000000000000p-2f * t3292);  /* ad.py:116 */
-        const float t3306 = (0x1.0000000000000p-2f * t3249);  /* ad.py:116 */
+        const float t3304 = (0x1p-2f * t3291);  /* ad.py:116 */
+        const float t3305 = (0x1p-2f * t3292);  /* ad.py:116 */
+        const float t3306 = (0x1p-2f * t3249);  /* ad.py:116 */
         const float t3307 = (t3242 + t3304);  /* ad.py:71 */
         const float t3308 = (t3243 + t3305);  /* ad.py:71 */
         const float t3309 = (t3253 * t3289);  /* ad.py:116 */
@@ -3572,9 +3572,9 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t3312 = (t3307 + t3309);  /* ad.py:71 */
         const float t3313 = (t3308 + t3310);  /* ad.py:71 */
         const float t3314 = (t3306 + t3311);  /* ad.py:71 */
-        const float t3315 = (0x1.8000000000000p-1f * t3289);  /* ad.py:116 */
-        const float t3316 = (0x1.8000000000000p-1f * t3290);  /* ad.py:116 */
-        const float t3317 = (0x1.8000000000000p-1f * t3245);  /* ad.py:116 */
+        const float t3315 = (0x1.8p-1f * t3289);  /* ad.py:116 */
+        const float t3316 = (0x1.8p-1f * t3290);  /* ad.py:116 */
+        const float t3317 = (0x1.8p-1f * t3245);  /* ad.py:116 */
         const float t3318 = (t3240 + t3315);  /* ad.py:71 */
         const float t3319 = (t3239 + t3316);  /* ad.py:71 */
         const float t3320 = (t3271 * t3291);  /* ad.py:116 */
@@ -3583,9 +3583,9 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t3323 = (t3318 - t3320);  /* ad.py:87 */
         const float t3324 = (t3319 - t3321);  /* ad.py:87 */
         const float t3325 = (t3317 - t3322);  /* ad.py:87 */
-        const float t3326 = (0x1.8000000000000p-1f * t3291);  /* ad.py:116 */
-        const float t3327 = (0x1.8000000000000p-1f * t3292);  /* ad.py:116 */
-        const float t3328 = (0x1.8000000000000p-1f * t3249);  /* ad.py:116 */
+        const float t3326 = (0x1.8p-1f * t3291);  /* ad.py:116 */
+        const float t3327 = (0x1.8p-1f * t3292);  /* ad.py:116 */
+        const float t3328 = (0x1.8p-1f * t3249);  /* ad.py:116 */
         const float t3329 = (t3242 + t3326);  /* ad.py:71 */
         const float t3330 = (t3243 + t3327);  /* ad.py:71 */
         const float t3331 = (t3271 * t3289);  /* ad.py:116 */
@@ -3671,13 +3671,13 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t3411 = (t3262 * t3372);  /* ekf.py:392 */
         const float t3412 = (t3410 + t3411);  /* ekf.py:392 */
         const float t3413 = (t3412 + t204);  /* ekf.py:392 */
-        const float t3414 = (t204 * 0x1.0000000000000p-1f);  /* ekf.py:393 */
+        const float t3414 = (t204 * 0x1p-1f);  /* ekf.py:393 */
         const int t3415 = (t3414 < t3413);  /* ekf.py:393 */
         const int t3416 = (t139 && t3415);  /* ekf.py:394 */
         const int t3417 = (!t3415);  /* ekf.py:395 */
         const int t3418 = (t139 && t3417);  /* ekf.py:395 */
         const float t3419 = (t3415 ? t3413 : t204);  /* ekf.py:396 */
-        const float t3420 = (0x1.0000000000000p+0f / t3419);  /* ekf.py:396 */
+        const float t3420 = (0x1p+0f / t3419);  /* ekf.py:396 */
         const float t3421 = (t3364 * t3420);  /* ekf.py:397 */
         const float t3422 = (t3416 ? t3421 : 0.0f);  /* ekf.py:397 */
         const float t3423 = (t3368 * t3420);  /* ekf.py:397 */
@@ -4130,7 +4130,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const int t3870 = (t139 && t3869);  /* ekf.py:395 */
         const int t3871 = (t3418 || t3870);  /* ekf.py:395 */
         const float t3872 = (t3867 ? t3866 : t204);  /* ekf.py:396 */
-        const float t3873 = (0x1.0000000000000p+0f / t3872);  /* ekf.py:396 */
+        const float t3873 = (0x1p+0f / t3872);  /* ekf.py:396 */
         const float t3874 = (t3817 * t3873);  /* ekf.py:397 */
         const float t3875 = (t3868 ? t3874 : 0.0f);  /* ekf.py:397 */
         const float t3876 = (t3821 * t3873);  /* ekf.py:397 */
@@ -4583,7 +4583,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const int t4323 = (t145 && t4322);  /* ekf.py:395 */
         const int t4324 = (t3871 || t4323);  /* ekf.py:395 */
         const float t4325 = (t4320 ? t4319 : t204);  /* ekf.py:396 */
-        const float t4326 = (0x1.0000000000000p+0f / t4325);  /* ekf.py:396 */
+        const float t4326 = (0x1p+0f / t4325);  /* ekf.py:396 */
         const float t4327 = (t4270 * t4326);  /* ekf.py:397 */
         const float t4328 = (t4321 ? t4327 : 0.0f);  /* ekf.py:397 */
         const float t4329 = (t4274 * t4326);  /* ekf.py:397 */
@@ -5036,7 +5036,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const int t4776 = (t145 && t4775);  /* ekf.py:395 */
         const int t4777 = (t4324 || t4776);  /* ekf.py:395 */
         const float t4778 = (t4773 ? t4772 : t204);  /* ekf.py:396 */
-        const float t4779 = (0x1.0000000000000p+0f / t4778);  /* ekf.py:396 */
+        const float t4779 = (0x1p+0f / t4778);  /* ekf.py:396 */
         const float t4780 = (t4723 * t4779);  /* ekf.py:397 */
         const float t4781 = (t4774 ? t4780 : 0.0f);  /* ekf.py:397 */
         const float t4782 = (t4727 * t4779);  /* ekf.py:397 */
@@ -5518,7 +5518,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const int t5258 = (t151 && t5257);  /* ekf.py:395 */
         const int t5259 = (t4777 || t5258);  /* ekf.py:395 */
         const float t5260 = (t5255 ? t5254 : t204);  /* ekf.py:396 */
-        const float t5261 = (0x1.0000000000000p+0f / t5260);  /* ekf.py:396 */
+        const float t5261 = (0x1p+0f / t5260);  /* ekf.py:396 */
         const float t5262 = (t5181 * t5261);  /* ekf.py:397 */
         const float t5263 = (t5256 ? t5262 : 0.0f);  /* ekf.py:397 */
         const float t5264 = (t5187 * t5261);  /* ekf.py:397 */
@@ -6000,7 +6000,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const int t5740 = (t151 && t5739);  /* ekf.py:395 */
         const int t5741 = (t5259 || t5740);  /* ekf.py:395 */
         const float t5742 = (t5737 ? t5736 : t204);  /* ekf.py:396 */
-        const float t5743 = (0x1.0000000000000p+0f / t5742);  /* ekf.py:396 */
+        const float t5743 = (0x1p+0f / t5742);  /* ekf.py:396 */
         const float t5744 = (t5663 * t5743);  /* ekf.py:397 */
         const float t5745 = (t5738 ? t5744 : 0.0f);  /* ekf.py:397 */
         const float t5746 = (t5669 * t5743);  /* ekf.py:397 */
@@ -6482,7 +6482,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const int t6222 = (t157 && t6221);  /* ekf.py:395 */
         const int t6223 = (t5741 || t6222);  /* ekf.py:395 */
         const float t6224 = (t6219 ? t6218 : t204);  /* ekf.py:396 */
-        const float t6225 = (0x1.0000000000000p+0f / t6224);  /* ekf.py:396 */
+        const float t6225 = (0x1p+0f / t6224);  /* ekf.py:396 */
         const float t6226 = (t6145 * t6225);  /* ekf.py:397 */
         const float t6227 = (t6220 ? t6226 : 0.0f);  /* ekf.py:397 */
         const float t6228 = (t6151 * t6225);  /* ekf.py:397 */
@@ -6964,7 +6964,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const int t6704 = (t157 && t6703);  /* ekf.py:395 */
         const int t6705 = (t6223 || t6704);  /* ekf.py:395 */
         const float t6706 = (t6701 ? t6700 : t204);  /* ekf.py:396 */
-        const float t6707 = (0x1.0000000000000p+0f / t6706);  /* ekf.py:396 */
+        const float t6707 = (0x1p+0f / t6706);  /* ekf.py:396 */
         const float t6708 = (t6627 * t6707);  /* ekf.py:397 */
         const float t6709 = (t6702 ? t6708 : 0.0f);  /* ekf.py:397 */
         const float t6710 = (t6633 * t6707);  /* ekf.py:397 */
@@ -7353,14 +7353,14 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t7093 = (t6750 - x_te0);  /* ekf.py:390 */
         const float t7094 = (t3354 - t7093);  /* ekf.py:390 */
         const float t7095 = (t7056 + t205);  /* ekf.py:392 */
-        const float t7096 = (t205 * 0x1.0000000000000p-1f);  /* ekf.py:393 */
+        const float t7096 = (t205 * 0x1p-1f);  /* ekf.py:393 */
         const int t7097 = (t7096 < t7095);  /* ekf.py:393 */
         const int t7098 = (t161 && t7097);  /* ekf.py:394 */
         const int t7099 = (!t7097);  /* ekf.py:395 */
         const int t7100 = (t161 && t7099);  /* ekf.py:395 */
         const int t7101 = (t6705 || t7100);  /* ekf.py:395 */
         const float t7102 = (t7097 ? t7095 : t205);  /* ekf.py:396 */
-        const float t7103 = (0x1.0000000000000p+0f / t7102);  /* ekf.py:396 */
+        const float t7103 = (0x1p+0f / t7102);  /* ekf.py:396 */
         const float t7104 = (t6816 * t7103);  /* ekf.py:397 */
         const float t7105 = (t7098 ? t7104 : 0.0f);  /* ekf.py:397 */
         const float t7106 = (t6860 * t7103);  /* ekf.py:397 */
@@ -7749,14 +7749,14 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t7489 = (t7148 - x_te1);  /* ekf.py:390 */
         const float t7490 = (t3356 - t7489);  /* ekf.py:390 */
         const float t7491 = (t7468 + t206);  /* ekf.py:392 */
-        const float t7492 = (t206 * 0x1.0000000000000p-1f);  /* ekf.py:393 */
+        const float t7492 = (t206 * 0x1p-1f);  /* ekf.py:393 */
         const int t7493 = (t7492 < t7491);  /* ekf.py:393 */
         const int t7494 = (t164 && t7493);  /* ekf.py:394 */
         const int t7495 = (!t7493);  /* ekf.py:395 */
         const int t7496 = (t164 && t7495);  /* ekf.py:395 */
         const int t7497 = (t7101 || t7496);  /* ekf.py:395 */
         const float t7498 = (t7493 ? t7491 : t206);  /* ekf.py:396 */
-        const float t7499 = (0x1.0000000000000p+0f / t7498);  /* ekf.py:396 */
+        const float t7499 = (0x1p+0f / t7498);  /* ekf.py:396 */
         const float t7500 = (t7216 * t7499);  /* ekf.py:397 */
         const float t7501 = (t7494 ? t7500 : 0.0f);  /* ekf.py:397 */
         const float t7502 = (t7260 * t7499);  /* ekf.py:397 */
@@ -8151,7 +8151,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const int t7891 = (t167 && t7890);  /* ekf.py:395 */
         const int t7892 = (t7497 || t7891);  /* ekf.py:395 */
         const float t7893 = (t7888 ? t7887 : t206);  /* ekf.py:396 */
-        const float t7894 = (0x1.0000000000000p+0f / t7893);  /* ekf.py:396 */
+        const float t7894 = (0x1p+0f / t7893);  /* ekf.py:396 */
         const float t7895 = (t7616 * t7894);  /* ekf.py:397 */
         const float t7896 = (t7889 ? t7895 : 0.0f);  /* ekf.py:397 */
         const float t7897 = (t7660 * t7894);  /* ekf.py:397 */
@@ -8546,7 +8546,7 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const int t8286 = (t170 && t8285);  /* ekf.py:395 */
         t8287 = (t7892 || t8286);  /* ekf.py:395 */
         const float t8288 = (t8283 ? t8282 : t205);  /* ekf.py:396 */
-        const float t8289 = (0x1.0000000000000p+0f / t8288);  /* ekf.py:396 */
+        const float t8289 = (0x1p+0f / t8288);  /* ekf.py:396 */
         const float t8290 = (t8015 * t8289);  /* ekf.py:397 */
         const float t8291 = (t8284 ? t8290 : 0.0f);  /* ekf.py:397 */
         const float t8292 = (t8059 * t8289);  /* ekf.py:397 */
@@ -8942,42 +8942,42 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
     float t8887 = 0.0f;
     float t9015 = 0.0f;
     if (t202) {
-        const float t8675 = (0x1.0000000000000p-1f * p_L);  /* pendulum.py:191 */
+        const float t8675 = (0x1p-1f * p_L);  /* pendulum.py:191 */
         const float t8676 = fabsf(t8675);  /* pendulum.py:191 */
-        const float t8677 = ((0x1.99999a0000000p-4f < t8676) ? t8676 : 0x1.99999a0000000p-4f);  /* pendulum.py:191 */
-        const float t8678 = ((t8676 < 0x1.99999a0000000p-4f) ? t8676 : 0x1.99999a0000000p-4f);  /* pendulum.py:191 */
-        const float t8680 = ((0x1.4484c00000000p-100f < t8677) ? t8677 : 0x1.4484c00000000p-100f);  /* pendulum.py:191 */
+        const float t8677 = ((0x1.99999ap-4f < t8676) ? t8676 : 0x1.99999ap-4f);  /* pendulum.py:191 */
+        const float t8678 = ((t8676 < 0x1.99999ap-4f) ? t8676 : 0x1.99999ap-4f);  /* pendulum.py:191 */
+        const float t8680 = ((0x1.4484cp-100f < t8677) ? t8677 : 0x1.4484cp-100f);  /* pendulum.py:191 */
         const float t8681 = (t8678 / t8680);  /* pendulum.py:191 */
-        const int t8684 = (0x1.a8279a0000000p-2f < t8681);  /* pendulum.py:191 */
-        const float t8685 = (t8681 - 0x1.0000000000000p+0f);  /* pendulum.py:191 */
-        const float t8686 = (t8681 + 0x1.0000000000000p+0f);  /* pendulum.py:191 */
+        const int t8684 = (0x1.a8279ap-2f < t8681);  /* pendulum.py:191 */
+        const float t8685 = (t8681 - 0x1p+0f);  /* pendulum.py:191 */
+        const float t8686 = (t8681 + 0x1p+0f);  /* pendulum.py:191 */
         const float t8687 = (t8685 / t8686);  /* pendulum.py:191 */
         const float t8688 = (t8684 ? t8687 : t8681);  /* pendulum.py:191 */
         const float t8690 = (t8688 * t8688);  /* pendulum.py:191 */
-        const float t8692 = (-0x1.e1e1e20000000p-5f * t8690);  /* pendulum.py:191 */
-        const float t8694 = (t8692 + 0x1.1111120000000p-4f);  /* pendulum.py:191 */
+        const float t8692 = (-0x1.e1e1e2p-5f * t8690);  /* pendulum.py:191 */
+        const float t8694 = (t8692 + 0x1.111112p-4f);  /* pendulum.py:191 */
         const float t8695 = (t8694 * t8690);  /* pendulum.py:191 */
-        const float t8697 = (t8695 + -0x1.3b13b20000000p-4f);  /* pendulum.py:191 */
+        const float t8697 = (t8695 + -0x1.3b13b2p-4f);  /* pendulum.py:191 */
         const float t8698 = (t8697 * t8690);  /* pendulum.py:191 */
-        const float t8700 = (t8698 + 0x1.745d180000000p-4f);  /* pendulum.py:191 */
+        const float t8700 = (t8698 + 0x1.745d18p-4f);  /* pendulum.py:191 */
         const float t8701 = (t8700 * t8690);  /* pendulum.py:191 */
-        const float t8703 = (t8701 + -0x1.c71c720000000p-4f);  /* pendulum.py:191 */
+        const float t8703 = (t8701 + -0x1.c71c72p-4f);  /* pendulum.py:191 */
         const float t8704 = (t8703 * t8690);  /* pendulum.py:191 */
-        const float t8706 = (t8704 + 0x1.24924a0000000p-3f);  /* pendulum.py:191 */
+        const float t8706 = (t8704 + 0x1.24924ap-3f);  /* pendulum.py:191 */
         const float t8707 = (t8706 * t8690);  /* pendulum.py:191 */
-        const float t8709 = (t8707 + -0x1.99999a0000000p-3f);  /* pendulum.py:191 */
+        const float t8709 = (t8707 + -0x1.99999ap-3f);  /* pendulum.py:191 */
         const float t8710 = (t8709 * t8690);  /* pendulum.py:191 */
-        const float t8711 = (t8710 + 0x1.5555560000000p-2f);  /* pendulum.py:191 */
+        const float t8711 = (t8710 + 0x1.555556p-2f);  /* pendulum.py:191 */
         const float t8712 = (t8688 * t8690);  /* pendulum.py:191 */
         const float t8713 = (t8712 * t8711);  /* pendulum.py:191 */
         const float t8714 = (t8688 - t8713);  /* pendulum.py:191 */
-        const float t8716 = (t8714 + 0x1.921fb60000000p-1f);  /* pendulum.py:191 */
+        const float t8716 = (t8714 + 0x1.921fb6p-1f);  /* pendulum.py:191 */
         const float t8717 = (t8684 ? t8716 : t8714);  /* pendulum.py:191 */
-        const int t8718 = (t8676 < 0x1.99999a0000000p-4f);  /* pendulum.py:191 */
-        const float t8720 = (0x1.921fb60000000p+0f - t8717);  /* pendulum.py:191 */
+        const int t8718 = (t8676 < 0x1.99999ap-4f);  /* pendulum.py:191 */
+        const float t8720 = (0x1.921fb6p+0f - t8717);  /* pendulum.py:191 */
         const float t8721 = (t8718 ? t8720 : t8717);  /* pendulum.py:191 */
         const int t8722 = (t8675 < 0.0f);  /* pendulum.py:191 */
-        const float t8724 = (0x1.921fb60000000p+1f - t8721);  /* pendulum.py:191 */
+        const float t8724 = (0x1.921fb6p+1f - t8721);  /* pendulum.py:191 */
         const float t8725 = (t8722 ? t8724 : t8721);  /* pendulum.py:191 */
         const float t8726 = (-t8725);  /* pendulum.py:191 */
         const float t8727 = (u_markers3 - u_markers1);  /* pendulum.py:192 */
@@ -8986,46 +8986,46 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t8730 = fabsf(t8727);  /* pendulum.py:192 */
         const float t8731 = ((t8730 < t8729) ? t8729 : t8730);  /* pendulum.py:192 */
         const float t8732 = ((t8729 < t8730) ? t8729 : t8730);  /* pendulum.py:192 */
-        const float t8733 = ((0x1.4484c00000000p-100f < t8731) ? t8731 : 0x1.4484c00000000p-100f);  /* pendulum.py:192 */
+        const float t8733 = ((0x1.4484cp-100f < t8731) ? t8731 : 0x1.4484cp-100f);  /* pendulum.py:192 */
         const float t8734 = (t8732 / t8733);  /* pendulum.py:192 */
-        const int t8736 = (0x1.a8279a0000000p-2f < t8734);  /* pendulum.py:192 */
-        const float t8737 = (t8734 - 0x1.0000000000000p+0f);  /* pendulum.py:192 */
-        const float t8738 = (t8734 + 0x1.0000000000000p+0f);  /* pendulum.py:192 */
+        const int t8736 = (0x1.a8279ap-2f < t8734);  /* pendulum.py:192 */
+        const float t8737 = (t8734 - 0x1p+0f);  /* pendulum.py:192 */
+        const float t8738 = (t8734 + 0x1p+0f);  /* pendulum.py:192 */
         const float t8739 = (t8737 / t8738);  /* pendulum.py:192 */
         const float t8740 = (t8736 ? t8739 : t8734);  /* pendulum.py:192 */
         const float t8742 = (t8740 * t8740);  /* pendulum.py:192 */
-        const float t8743 = (-0x1.e1e1e20000000p-5f * t8742);  /* pendulum.py:192 */
-        const float t8744 = (t8743 + 0x1.1111120000000p-4f);  /* pendulum.py:192 */
+        const float t8743 = (-0x1.e1e1e2p-5f * t8742);  /* pendulum.py:192 */
+        const float t8744 = (t8743 + 0x1.111112p-4f);  /* pendulum.py:192 */
         const float t8745 = (t8744 * t8742);  /* pendulum.py:192 */
-        const float t8746 = (t8745 + -0x1.3b13b20000000p-4f);  /* pendulum.py:192 */
+        const float t8746 = (t8745 + -0x1.3b13b2p-4f);  /* pendulum.py:192 */
         const float t8747 = (t8746 * t8742);  /* pendulum.py:192 */
-        const float t8748 = (t8747 + 0x1.745d180000000p-4f);  /* pendulum.py:192 */
+        const float t8748 = (t8747 + 0x1.745d18p-4f);  /* pendulum.py:192 */
         const float t8749 = (t8748 * t8742);  /* pendulum.py:192 */
-        const float t8750 = (t8749 + -0x1.c71c720000000p-4f);  /* pendulum.py:192 */
+        const float t8750 = (t8749 + -0x1.c71c72p-4f);  /* pendulum.py:192 */
         const float t8751 = (t8750 * t8742);  /* pendulum.py:192 */
-        const float t8752 = (t8751 + 0x1.24924a0000000p-3f);  /* pendulum.py:192 */
+        const float t8752 = (t8751 + 0x1.24924ap-3f);  /* pendulum.py:192 */
         const float t8753 = (t8752 * t8742);  /* pendulum.py:192 */
-        const float t8754 = (t8753 + -0x1.99999a0000000p-3f);  /* pendulum.py:192 */
+        const float t8754 = (t8753 + -0x1.99999ap-3f);  /* pendulum.py:192 */
         const float t8755 = (t8754 * t8742);  /* pendulum.py:192 */
-        const float t8756 = (t8755 + 0x1.5555560000000p-2f);  /* pendulum.py:192 */
+        const float t8756 = (t8755 + 0x1.555556p-2f);  /* pendulum.py:192 */
         const float t8757 = (t8740 * t8742);  /* pendulum.py:192 */
         const float t8758 = (t8757 * t8756);  /* pendulum.py:192 */
         const float t8759 = (t8740 - t8758);  /* pendulum.py:192 */
-        const float t8760 = (t8759 + 0x1.921fb60000000p-1f);  /* pendulum.py:192 */
+        const float t8760 = (t8759 + 0x1.921fb6p-1f);  /* pendulum.py:192 */
         const float t8761 = (t8736 ? t8760 : t8759);  /* pendulum.py:192 */
         const int t8762 = (t8729 < t8730);  /* pendulum.py:192 */
-        const float t8763 = (0x1.921fb60000000p+0f - t8761);  /* pendulum.py:192 */
+        const float t8763 = (0x1.921fb6p+0f - t8761);  /* pendulum.py:192 */
         const float t8764 = (t8762 ? t8763 : t8761);  /* pendulum.py:192 */
         const int t8765 = (t8728 < 0.0f);  /* pendulum.py:192 */
-        const float t8766 = (0x1.921fb60000000p+1f - t8764);  /* pendulum.py:192 */
+        const float t8766 = (0x1.921fb6p+1f - t8764);  /* pendulum.py:192 */
         const float t8767 = (t8765 ? t8766 : t8764);  /* pendulum.py:192 */
         const int t8768 = (t8727 < 0.0f);  /* pendulum.py:192 */
         const float t8769 = (-t8767);  /* pendulum.py:192 */
         const float t8770 = (t8768 ? t8769 : t8767);  /* pendulum.py:192 */
         const float t8771 = (t8770 - t8726);  /* pendulum.py:192 */
-        const float t8772 = (t8771 + 0x1.921fb60000000p+0f);  /* pendulum.py:193 */
-        const int t8773 = (0x1.921fb60000000p+1f < t8772);  /* pendulum.py:194 */
-        const float t8775 = (t8772 - 0x1.921fb60000000p+2f);  /* pendulum.py:194 */
+        const float t8772 = (t8771 + 0x1.921fb6p+0f);  /* pendulum.py:193 */
+        const int t8773 = (0x1.921fb6p+1f < t8772);  /* pendulum.py:194 */
+        const float t8775 = (t8772 - 0x1.921fb6p+2f);  /* pendulum.py:194 */
         t8776 = (t8773 ? t8775 : t8772);  /* pendulum.py:194 */
         const float t8777 = (u_markers7 - u_markers5);  /* pendulum.py:192 */
         const float t8778 = (u_markers6 - u_markers4);  /* pendulum.py:192 */
@@ -9033,92 +9033,92 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t8780 = fabsf(t8777);  /* pendulum.py:192 */
         const float t8781 = ((t8780 < t8779) ? t8779 : t8780);  /* pendulum.py:192 */
         const float t8782 = ((t8779 < t8780) ? t8779 : t8780);  /* pendulum.py:192 */
-        const float t8783 = ((0x1.4484c00000000p-100f < t8781) ? t8781 : 0x1.4484c00000000p-100f);  /* pendulum.py:192 */
+        const float t8783 = ((0x1.4484cp-100f < t8781) ? t8781 : 0x1.4484cp-100f);  /* pendulum.py:192 */
         const float t8784 = (t8782 / t8783);  /* pendulum.py:192 */
-        const int t8786 = (0x1.a8279a0000000p-2f < t8784);  /* pendulum.py:192 */
-        const float t8787 = (t8784 - 0x1.0000000000000p+0f);  /* pendulum.py:192 */
-        const float t8788 = (t8784 + 0x1.0000000000000p+0f);  /* pendulum.py:192 */
+        const int t8786 = (0x1.a8279ap-2f < t8784);  /* pendulum.py:192 */
+        const float t8787 = (t8784 - 0x1p+0f);  /* pendulum.py:192 */
+        const float t8788 = (t8784 + 0x1p+0f);  /* pendulum.py:192 */
         const float t8789 = (t8787 / t8788);  /* pendulum.py:192 */
         const float t8790 = (t8786 ? t8789 : t8784);  /* pendulum.py:192 */
         const float t8792 = (t8790 * t8790);  /* pendulum.py:192 */
-        const float t8793 = (-0x1.e1e1e20000000p-5f * t8792);  /* pendulum.py:192 */
-        const float t8794 = (t8793 + 0x1.1111120000000p-4f);  /* pendulum.py:192 */
+        const float t8793 = (-0x1.e1e1e2p-5f * t8792);  /* pendulum.py:192 */
+        const float t8794 = (t8793 + 0x1.111112p-4f);  /* pendulum.py:192 */
         const float t8795 = (t8794 * t8792);  /* pendulum.py:192 */
-        const float t8796 = (t8795 + -0x1.3b13b20000000p-4f);  /* pendulum.py:192 */
+        const float t8796 = (t8795 + -0x1.3b13b2p-4f);  /* pendulum.py:192 */
         const float t8797 = (t8796 * t8792);  /* pendulum.py:192 */
-        const float t8798 = (t8797 + 0x1.745d180000000p-4f);  /* pendulum.py:192 */
+        const float t8798 = (t8797 + 0x1.745d18p-4f);  /* pendulum.py:192 */
         const float t8799 = (t8798 * t8792);  /* pendulum.py:192 */
-        const float t8800 = (t8799 + -0x1.c71c720000000p-4f);  /* pendulum.py:192 */
+        const float t8800 = (t8799 + -0x1.c71c72p-4f);  /* pendulum.py:192 */
         const float t8801 = (t8800 * t8792);  /* pendulum.py:192 */
-        const float t8802 = (t8801 + 0x1.24924a0000000p-3f);  /* pendulum.py:192 */
+        const float t8802 = (t8801 + 0x1.24924ap-3f);  /* pendulum.py:192 */
         const float t8803 = (t8802 * t8792);  /* pendulum.py:192 */
-        const float t8804 = (t8803 + -0x1.99999a0000000p-3f);  /* pendulum.py:192 */
+        const float t8804 = (t8803 + -0x1.99999ap-3f);  /* pendulum.py:192 */
         const float t8805 = (t8804 * t8792);  /* pendulum.py:192 */
-        const float t8806 = (t8805 + 0x1.5555560000000p-2f);  /* pendulum.py:192 */
+        const float t8806 = (t8805 + 0x1.555556p-2f);  /* pendulum.py:192 */
         const float t8807 = (t8790 * t8792);  /* pendulum.py:192 */
         const float t8808 = (t8807 * t8806);  /* pendulum.py:192 */
         const float t8809 = (t8790 - t8808);  /* pendulum.py:192 */
-        const float t8810 = (t8809 + 0x1.921fb60000000p-1f);  /* pendulum.py:192 */
+        const float t8810 = (t8809 + 0x1.921fb6p-1f);  /* pendulum.py:192 */
         const float t8811 = (t8786 ? t8810 : t8809);  /* pendulum.py:192 */
         const int t8812 = (t8779 < t8780);  /* pendulum.py:192 */
-        const float t8813 = (0x1.921fb60000000p+0f - t8811);  /* pendulum.py:192 */
+        const float t8813 = (0x1.921fb6p+0f - t8811);  /* pendulum.py:192 */
         const float t8814 = (t8812 ? t8813 : t8811);  /* pendulum.py:192 */
         const int t8815 = (t8778 < 0.0f);  /* pendulum.py:192 */
-        const float t8816 = (0x1.921fb60000000p+1f - t8814);  /* pendulum.py:192 */
+        const float t8816 = (0x1.921fb6p+1f - t8814);  /* pendulum.py:192 */
         const float t8817 = (t8815 ? t8816 : t8814);  /* pendulum.py:192 */
         const int t8818 = (t8777 < 0.0f);  /* pendulum.py:192 */
         const float t8819 = (-t8817);  /* pendulum.py:192 */
         const float t8820 = (t8818 ? t8819 : t8817);  /* pendulum.py:192 */
         const float t8821 = (t8820 - t8726);  /* pendulum.py:192 */
-        const float t8822 = (t8821 + 0x1.921fb60000000p+0f);  /* pendulum.py:193 */
-        const int t8823 = (0x1.921fb60000000p+1f < t8822);  /* pendulum.py:194 */
-        const float t8824 = (t8822 - 0x1.921fb60000000p+2f);  /* pendulum.py:194 */
+        const float t8822 = (t8821 + 0x1.921fb6p+0f);  /* pendulum.py:193 */
+        const int t8823 = (0x1.921fb6p+1f < t8822);  /* pendulum.py:194 */
+        const float t8824 = (t8822 - 0x1.921fb6p+2f);  /* pendulum.py:194 */
         t8825 = (t8823 ? t8824 : t8822);  /* pendulum.py:194 */
-        const float t8826 = (t8776 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t8827 = (t8826 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t8828_a = ((-0x1.0000000000000p+30f < t8827) ? t8827 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t8828_b = ((t8828_a < 0x1.0000000000000p+30f) ? t8828_a : 0x1.0000000000000p+30f);
+        const float t8826 = (t8776 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t8827 = (t8826 + 0x1p-1f);  /* ad.py:163 */
+        const float t8828_a = ((-0x1p+30f < t8827) ? t8827 : -0x1p+30f);  /* ad.py:163 */
+        const float t8828_b = ((t8828_a < 0x1p+30f) ? t8828_a : 0x1p+30f);
         const float t8828_i = ((float)((int32_t)t8828_b));
-        const float t8828 = ((t8828_b < t8828_i) ? (t8828_i - 0x1.0000000000000p+0f) : t8828_i);
-        const float t8829 = (t8828 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t8828 = ((t8828_b < t8828_i) ? (t8828_i - 0x1p+0f) : t8828_i);
+        const float t8829 = (t8828 * 0x1.92p+0f);  /* ad.py:163 */
         const float t8830 = (t8776 - t8829);  /* ad.py:163 */
-        const float t8831 = (t8828 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t8831 = (t8828 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t8832 = (t8830 - t8831);  /* ad.py:163 */
-        const float t8834 = (t8828 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t8835_a = ((-0x1.0000000000000p+30f < t8834) ? t8834 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t8835_b = ((t8835_a < 0x1.0000000000000p+30f) ? t8835_a : 0x1.0000000000000p+30f);
+        const float t8834 = (t8828 * 0x1p-2f);  /* ad.py:163 */
+        const float t8835_a = ((-0x1p+30f < t8834) ? t8834 : -0x1p+30f);  /* ad.py:163 */
+        const float t8835_b = ((t8835_a < 0x1p+30f) ? t8835_a : 0x1p+30f);
         const float t8835_i = ((float)((int32_t)t8835_b));
-        const float t8835 = ((t8835_b < t8835_i) ? (t8835_i - 0x1.0000000000000p+0f) : t8835_i);
-        const float t8836 = (0x1.0000000000000p+2f * t8835);  /* ad.py:163 */
+        const float t8835 = ((t8835_b < t8835_i) ? (t8835_i - 0x1p+0f) : t8835_i);
+        const float t8836 = (0x1p+2f * t8835);  /* ad.py:163 */
         const float t8837 = (t8828 - t8836);  /* ad.py:163 */
         const float t8838 = (t8832 * t8832);  /* ad.py:163 */
-        const float t8839 = (-0x1.ae64560000000p-26f * t8838);  /* ad.py:163 */
-        const float t8840 = (t8839 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t8839 = (-0x1.ae6456p-26f * t8838);  /* ad.py:163 */
+        const float t8840 = (t8839 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t8841 = (t8840 * t8838);  /* ad.py:163 */
-        const float t8842 = (t8841 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t8842 = (t8841 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t8843 = (t8842 * t8838);  /* ad.py:163 */
-        const float t8844 = (t8843 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t8844 = (t8843 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t8845 = (t8844 * t8838);  /* ad.py:163 */
-        const float t8846 = (t8845 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t8846 = (t8845 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t8847 = (t8832 * t8838);  /* ad.py:163 */
         const float t8848 = (t8847 * t8846);  /* ad.py:163 */
         const float t8849 = (t8832 + t8848);  /* ad.py:163 */
-        const float t8850 = (0x1.1eed8e0000000p-29f * t8838);  /* ad.py:163 */
-        const float t8851 = (t8850 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t8850 = (0x1.1eed8ep-29f * t8838);  /* ad.py:163 */
+        const float t8851 = (t8850 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t8852 = (t8851 * t8838);  /* ad.py:163 */
-        const float t8853 = (t8852 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t8853 = (t8852 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t8854 = (t8853 * t8838);  /* ad.py:163 */
-        const float t8855 = (t8854 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t8855 = (t8854 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t8856 = (t8855 * t8838);  /* ad.py:163 */
-        const float t8857 = (t8856 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t8858 = (0x1.0000000000000p-1f * t8838);  /* ad.py:163 */
-        const float t8859 = (0x1.0000000000000p+0f - t8858);  /* ad.py:163 */
+        const float t8857 = (t8856 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t8858 = (0x1p-1f * t8838);  /* ad.py:163 */
+        const float t8859 = (0x1p+0f - t8858);  /* ad.py:163 */
         const float t8860 = (t8838 * t8838);  /* ad.py:163 */
         const float t8861 = (t8860 * t8857);  /* ad.py:163 */
         const float t8862 = (t8859 + t8861);  /* ad.py:163 */
-        const int t8863 = (t8837 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t8864 = (t8837 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t8865 = (t8837 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t8863 = (t8837 < 0x1p-1f);  /* ad.py:163 */
+        const int t8864 = (t8837 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t8865 = (t8837 < 0x1.4p+1f);  /* ad.py:163 */
         const float t8866 = (-t8849);  /* ad.py:163 */
         const float t8867 = (-t8862);  /* ad.py:163 */
         const float t8868 = (t8865 ? t8866 : t8867);  /* ad.py:163 */
@@ -9127,14 +9127,14 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t8871 = (t8865 ? t8867 : t8849);  /* ad.py:163 */
         const float t8872 = (t8864 ? t8866 : t8871);  /* ad.py:163 */
         const float t8873 = (t8863 ? t8862 : t8872);  /* ad.py:163 */
-        const float t8876 = (0x1.0000000000000p-2f * p_L);  /* pendulum.py:200 */
+        const float t8876 = (0x1p-2f * p_L);  /* pendulum.py:200 */
         const float t8877 = (t8876 * t8870);  /* pendulum.py:200 */
         const float t8878 = (u_markers0 - t8877);  /* pendulum.py:200 */
-        const float t8879 = (0x1.99999a0000000p-5f * t8873);  /* pendulum.py:200 */
+        const float t8879 = (0x1.99999ap-5f * t8873);  /* pendulum.py:200 */
         t8880 = (t8878 - t8879);  /* pendulum.py:200 */
         const float t8881 = (t8876 * t8873);  /* pendulum.py:201 */
         const float t8882 = (u_markers1 + t8881);  /* pendulum.py:201 */
-        const float t8883 = (0x1.99999a0000000p-5f * t8870);  /* pendulum.py:201 */
+        const float t8883 = (0x1.99999ap-5f * t8870);  /* pendulum.py:201 */
         t8884 = (t8882 - t8883);  /* pendulum.py:201 */
         t8885 = (t164 ? u_efforts1 : 0.0f);  /* pendulum.py:243 */
         t8886 = (t167 ? u_efforts2 : 0.0f);  /* pendulum.py:243 */
@@ -9146,51 +9146,51 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t8892 = (t8891 * 0.0f);  /* ad.py:104 */
         const float t8893 = (t8888 * 0.0f);  /* ad.py:104 */
         const float t8894 = (-t8893);  /* ad.py:40 */
-        const float t8895 = (t8825 * 0x1.45f3060000000p-1f);  /* ad.py:163 */
-        const float t8896 = (t8895 + 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const float t8897_a = ((-0x1.0000000000000p+30f < t8896) ? t8896 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t8897_b = ((t8897_a < 0x1.0000000000000p+30f) ? t8897_a : 0x1.0000000000000p+30f);
+        const float t8895 = (t8825 * 0x1.45f306p-1f);  /* ad.py:163 */
+        const float t8896 = (t8895 + 0x1p-1f);  /* ad.py:163 */
+        const float t8897_a = ((-0x1p+30f < t8896) ? t8896 : -0x1p+30f);  /* ad.py:163 */
+        const float t8897_b = ((t8897_a < 0x1p+30f) ? t8897_a : 0x1p+30f);
         const float t8897_i = ((float)((int32_t)t8897_b));
-        const float t8897 = ((t8897_b < t8897_i) ? (t8897_i - 0x1.0000000000000p+0f) : t8897_i);
-        const float t8898 = (t8897 * 0x1.9200000000000p+0f);  /* ad.py:163 */
+        const float t8897 = ((t8897_b < t8897_i) ? (t8897_i - 0x1p+0f) : t8897_i);
+        const float t8898 = (t8897 * 0x1.92p+0f);  /* ad.py:163 */
         const float t8899 = (t8825 - t8898);  /* ad.py:163 */
-        const float t8900 = (t8897 * 0x1.fb54440000000p-12f);  /* ad.py:163 */
+        const float t8900 = (t8897 * 0x1.fb5444p-12f);  /* ad.py:163 */
         const float t8901 = (t8899 - t8900);  /* ad.py:163 */
-        const float t8903 = (t8897 * 0x1.0000000000000p-2f);  /* ad.py:163 */
-        const float t8904_a = ((-0x1.0000000000000p+30f < t8903) ? t8903 : -0x1.0000000000000p+30f);  /* ad.py:163 */
-        const float t8904_b = ((t8904_a < 0x1.0000000000000p+30f) ? t8904_a : 0x1.0000000000000p+30f);
+        const float t8903 = (t8897 * 0x1p-2f);  /* ad.py:163 */
+        const float t8904_a = ((-0x1p+30f < t8903) ? t8903 : -0x1p+30f);  /* ad.py:163 */
+        const float t8904_b = ((t8904_a < 0x1p+30f) ? t8904_a : 0x1p+30f);
         const float t8904_i = ((float)((int32_t)t8904_b));
-        const float t8904 = ((t8904_b < t8904_i) ? (t8904_i - 0x1.0000000000000p+0f) : t8904_i);
-        const float t8905 = (0x1.0000000000000p+2f * t8904);  /* ad.py:163 */
+        const float t8904 = ((t8904_b < t8904_i) ? (t8904_i - 0x1p+0f) : t8904_i);
+        const float t8905 = (0x1p+2f * t8904);  /* ad.py:163 */
         const float t8906 = (t8897 - t8905);  /* ad.py:163 */
         const float t8907 = (t8901 * t8901);  /* ad.py:163 */
-        const float t8908 = (-0x1.ae64560000000p-26f * t8907);  /* ad.py:163 */
-        const float t8909 = (t8908 + 0x1.71de3a0000000p-19f);  /* ad.py:163 */
+        const float t8908 = (-0x1.ae6456p-26f * t8907);  /* ad.py:163 */
+        const float t8909 = (t8908 + 0x1.71de3ap-19f);  /* ad.py:163 */
         const float t8910 = (t8909 * t8907);  /* ad.py:163 */
-        const float t8911 = (t8910 + -0x1.a01a020000000p-13f);  /* ad.py:163 */
+        const float t8911 = (t8910 + -0x1.a01a02p-13f);  /* ad.py:163 */
         const float t8912 = (t8911 * t8907);  /* ad.py:163 */
-        const float t8913 = (t8912 + 0x1.1111120000000p-7f);  /* ad.py:163 */
+        const float t8913 = (t8912 + 0x1.111112p-7f);  /* ad.py:163 */
         const float t8914 = (t8913 * t8907);  /* ad.py:163 */
-        const float t8915 = (t8914 + -0x1.5555560000000p-3f);  /* ad.py:163 */
+        const float t8915 = (t8914 + -0x1.555556p-3f);  /* ad.py:163 */
         const float t8916 = (t8901 * t8907);  /* ad.py:163 */
         const float t8917 = (t8916 * t8915);  /* ad.py:163 */
         const float t8918 = (t8901 + t8917);  /* ad.py:163 */
-        const float t8919 = (0x1.1eed8e0000000p-29f * t8907);  /* ad.py:163 */
-        const float t8920 = (t8919 + -0x1.27e4fc0000000p-22f);  /* ad.py:163 */
+        const float t8919 = (0x1.1eed8ep-29f * t8907);  /* ad.py:163 */
+        const float t8920 = (t8919 + -0x1.27e4fcp-22f);  /* ad.py:163 */
         const float t8921 = (t8920 * t8907);  /* ad.py:163 */
-        const float t8922 = (t8921 + 0x1.a01a020000000p-16f);  /* ad.py:163 */
+        const float t8922 = (t8921 + 0x1.a01a02p-16f);  /* ad.py:163 */
         const float t8923 = (t8922 * t8907);  /* ad.py:163 */
-        const float t8924 = (t8923 + -0x1.6c16c20000000p-10f);  /* ad.py:163 */
+        const float t8924 = (t8923 + -0x1.6c16c2p-10f);  /* ad.py:163 */
         const float t8925 = (t8924 * t8907);  /* ad.py:163 */
-        const float t8926 = (t8925 + 0x1.5555560000000p-5f);  /* ad.py:163 */
-        const float t8927 = (0x1.0000000000000p-1f * t8907);  /* ad.py:163 */
-        const float t8928 = (0x1.0000000000000p+0f - t8927);  /* ad.py:163 */
+        const float t8926 = (t8925 + 0x1.555556p-5f);  /* ad.py:163 */
+        const float t8927 = (0x1p-1f * t8907);  /* ad.py:163 */
+        const float t8928 = (0x1p+0f - t8927);  /* ad.py:163 */
         const float t8929 = (t8907 * t8907);  /* ad.py:163 */
         const float t8930 = (t8929 * t8926);  /* ad.py:163 */
         const float t8931 = (t8928 + t8930);  /* ad.py:163 */
-        const int t8932 = (t8906 < 0x1.0000000000000p-1f);  /* ad.py:163 */
-        const int t8933 = (t8906 < 0x1.8000000000000p+0f);  /* ad.py:163 */
-        const int t8934 = (t8906 < 0x1.4000000000000p+1f);  /* ad.py:163 */
+        const int t8932 = (t8906 < 0x1p-1f);  /* ad.py:163 */
+        const int t8933 = (t8906 < 0x1.8p+0f);  /* ad.py:163 */
+        const int t8934 = (t8906 < 0x1.4p+1f);  /* ad.py:163 */
         const float t8935 = (-t8918);  /* ad.py:163 */
         const float t8936 = (-t8931);  /* ad.py:163 */
         const float t8937 = (t8934 ? t8935 : t8936);  /* ad.py:163 */
@@ -9219,16 +9219,16 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t8962 = (p_L * t8951);  /* ad.py:116 */
         const float t8963 = (-t8961);  /* ad.py:87 */
         const float t8964 = (t8957 - t8962);  /* ad.py:87 */
-        const float t8965 = (p_m2 / 0x1.8000000000000p+1f);  /* models.py:64 */
-        const float t8966 = (p_m2 / 0x1.8000000000000p+2f);  /* models.py:64 */
+        const float t8965 = (p_m2 / 0x1.8p+1f);  /* models.py:64 */
+        const float t8966 = (p_m2 / 0x1.8p+2f);  /* models.py:64 */
         const float t8967 = (p_m1 + p_m2);  /* models.py:65 */
-        const float t8968 = (t8967 / 0x1.8000000000000p+1f);  /* models.py:65 */
+        const float t8968 = (t8967 / 0x1.8p+1f);  /* models.py:65 */
         const float t8969 = (t8967 * p_g);  /* models.py:77 */
         const float t8970 = (-t8969);  /* models.py:77 */
-        const float t8971 = (t8970 * 0x1.0000000000000p-1f);  /* models.py:77 */
+        const float t8971 = (t8970 * 0x1p-1f);  /* models.py:77 */
         const float t8972 = (p_m2 * p_g);  /* models.py:78 */
         const float t8973 = (-t8972);  /* models.py:78 */
-        const float t8974 = (t8973 * 0x1.0000000000000p-1f);  /* models.py:78 */
+        const float t8974 = (t8973 * 0x1p-1f);  /* models.py:78 */
         const float t8975 = (t8968 * t8953);  /* mbs.py:68 */
         const float t8976 = (t8966 * t8960);  /* mbs.py:68 */
         const float t8977 = (t8975 + t8976);  /* mbs.py:68 */
@@ -9266,9 +9266,9 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t9009 = (t9008 + t8887);  /* mbs.py:210 */
         const float t9010 = (t9000 + t9009);  /* mbs.py:210 */
         const float t9011 = (-t9010);  /* mbs.py:210 */
-        const float t9012 = (-0x1.0000000000000p+0f * t9005);  /* mbs.py:215 */
+        const float t9012 = (-0x1p+0f * t9005);  /* mbs.py:215 */
         const float t9013 = (t9012 + t9011);  /* mbs.py:215 */
-        const float t9014 = (t9013 * 0x1.0000000000000p-1f);  /* mbs.py:217 */
+        const float t9014 = (t9013 * 0x1p-1f);  /* mbs.py:217 */
         t9015 = (t161 ? u_efforts0 : t9014);  /* pendulum.py:245 */
     }
     const float t9016 = (p_p0_pos * p_p0_pos);  /* pendulum.py:159 */
@@ -9457,64 +9457,64 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
     const float t9199 = (t202 ? t9019 : t9198);  /* ekf.py:431 */
     const int t9200 = (x_initialised || t202);  /* ekf.py:434 */
     const float t9201 = fabsf(t9021);  /* ekf.py:435 */
-    const int t9202 = (t9201 <= 0x1.4000000000000p+3f);  /* ekf.py:435 */
+    const int t9202 = (t9201 <= 0x1.4p+3f);  /* ekf.py:435 */
     const float t9203 = fabsf(t9023);  /* ekf.py:435 */
-    const int t9204 = (t9203 <= 0x1.4000000000000p+3f);  /* ekf.py:435 */
+    const int t9204 = (t9203 <= 0x1.4p+3f);  /* ekf.py:435 */
     const float t9205 = fabsf(t9025);  /* ekf.py:435 */
-    const int t9207 = (t9205 <= 0x1.4000000000000p+4f);  /* ekf.py:435 */
+    const int t9207 = (t9205 <= 0x1.4p+4f);  /* ekf.py:435 */
     const float t9208 = fabsf(t9027);  /* ekf.py:435 */
-    const int t9209 = (t9208 <= 0x1.4000000000000p+4f);  /* ekf.py:435 */
+    const int t9209 = (t9208 <= 0x1.4p+4f);  /* ekf.py:435 */
     const float t9210 = fabsf(t9029);  /* ekf.py:435 */
-    const int t9212 = (t9210 <= 0x1.9000000000000p+6f);  /* ekf.py:435 */
+    const int t9212 = (t9210 <= 0x1.9p+6f);  /* ekf.py:435 */
     const float t9213 = fabsf(t9031);  /* ekf.py:435 */
-    const int t9214 = (t9213 <= 0x1.9000000000000p+6f);  /* ekf.py:435 */
+    const int t9214 = (t9213 <= 0x1.9p+6f);  /* ekf.py:435 */
     const float t9215 = fabsf(t9033);  /* ekf.py:435 */
-    const int t9216 = (t9215 <= 0x1.9000000000000p+6f);  /* ekf.py:435 */
+    const int t9216 = (t9215 <= 0x1.9p+6f);  /* ekf.py:435 */
     const float t9217 = fabsf(t9035);  /* ekf.py:435 */
-    const int t9218 = (t9217 <= 0x1.9000000000000p+6f);  /* ekf.py:435 */
+    const int t9218 = (t9217 <= 0x1.9p+6f);  /* ekf.py:435 */
     const float t9219 = fabsf(t9037);  /* ekf.py:435 */
-    const int t9221 = (t9219 <= 0x1.86a0000000000p+15f);  /* ekf.py:435 */
+    const int t9221 = (t9219 <= 0x1.86ap+15f);  /* ekf.py:435 */
     const float t9222 = fabsf(t9039);  /* ekf.py:435 */
-    const int t9223 = (t9222 <= 0x1.86a0000000000p+15f);  /* ekf.py:435 */
+    const int t9223 = (t9222 <= 0x1.86ap+15f);  /* ekf.py:435 */
     const float t9224 = fabsf(t9041);  /* ekf.py:435 */
-    const int t9225 = (t9224 <= 0x1.86a0000000000p+15f);  /* ekf.py:435 */
+    const int t9225 = (t9224 <= 0x1.86ap+15f);  /* ekf.py:435 */
     const float t9226 = fabsf(t9043);  /* ekf.py:435 */
-    const int t9227 = (t9226 <= 0x1.86a0000000000p+15f);  /* ekf.py:435 */
+    const int t9227 = (t9226 <= 0x1.86ap+15f);  /* ekf.py:435 */
     const int t9228 = (0.0f <= t9045);  /* ekf.py:436 */
-    const int t9230 = (t9045 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9230 = (t9045 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9231 = (t9228 && t9230);  /* ekf.py:436 */
     const int t9232 = (0.0f <= t9069);  /* ekf.py:436 */
-    const int t9233 = (t9069 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9233 = (t9069 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9234 = (t9232 && t9233);  /* ekf.py:436 */
     const int t9235 = (0.0f <= t9091);  /* ekf.py:436 */
-    const int t9236 = (t9091 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9236 = (t9091 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9237 = (t9235 && t9236);  /* ekf.py:436 */
     const int t9238 = (0.0f <= t9111);  /* ekf.py:436 */
-    const int t9239 = (t9111 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9239 = (t9111 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9240 = (t9238 && t9239);  /* ekf.py:436 */
     const int t9241 = (0.0f <= t9129);  /* ekf.py:436 */
-    const int t9242 = (t9129 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9242 = (t9129 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9243 = (t9241 && t9242);  /* ekf.py:436 */
     const int t9244 = (0.0f <= t9145);  /* ekf.py:436 */
-    const int t9245 = (t9145 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9245 = (t9145 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9246 = (t9244 && t9245);  /* ekf.py:436 */
     const int t9247 = (0.0f <= t9159);  /* ekf.py:436 */
-    const int t9248 = (t9159 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9248 = (t9159 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9249 = (t9247 && t9248);  /* ekf.py:436 */
     const int t9250 = (0.0f <= t9171);  /* ekf.py:436 */
-    const int t9251 = (t9171 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9251 = (t9171 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9252 = (t9250 && t9251);  /* ekf.py:436 */
     const int t9253 = (0.0f <= t9181);  /* ekf.py:436 */
-    const int t9254 = (t9181 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9254 = (t9181 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9255 = (t9253 && t9254);  /* ekf.py:436 */
     const int t9256 = (0.0f <= t9189);  /* ekf.py:436 */
-    const int t9257 = (t9189 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9257 = (t9189 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9258 = (t9256 && t9257);  /* ekf.py:436 */
     const int t9259 = (0.0f <= t9195);  /* ekf.py:436 */
-    const int t9260 = (t9195 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9260 = (t9195 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9261 = (t9259 && t9260);  /* ekf.py:436 */
     const int t9262 = (0.0f <= t9199);  /* ekf.py:436 */
-    const int t9263 = (t9199 <= 0x1.2a05f20000000p+33f);  /* ekf.py:436 */
+    const int t9263 = (t9199 <= 0x1.2a05f2p+33f);  /* ekf.py:436 */
     const int t9264 = (t9262 && t9263);  /* ekf.py:436 */
     const int t9265 = (t9202 && t9204);  /* ekf.py:435 */
     const int t9266 = (t9265 && t9207);  /* ekf.py:435 */
