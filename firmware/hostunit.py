@@ -177,26 +177,20 @@ def synthetic_samples(n: int, rate_hz: int, k0: int = 0) -> dict[str, np.ndarray
 # ------------------------------------------------------------------------------ HIL helpers
 
 def hil_frames(time_us, acc, gyr, mag_uT, mag_updated=None, seq0: int = 0, key: bytes | None = None) -> list[bytes]:
-    """One HIL_SENSOR frame per sample (SI units; mag in uT, sent in gauss)."""
+    """One HIL_SENSOR frame per sample (SI units; mag in uT, sent in gauss).  With ``key`` the
+    frames are signed, with strictly increasing signing timestamps."""
+    from kinefuse.host.link.hil import hil_sensor_frames
+    frames = _split(hil_sensor_frames(time_us, acc, gyr, mag_uT, mag_updated=mag_updated, seq0=seq0))
     if key is None:
-        from kinefuse.host.link.hil import hil_sensor_frames
-        data = hil_sensor_frames(time_us, acc, gyr, mag_uT, mag_updated=mag_updated, seq0=seq0)
-        return _split(data)
-    from kinefuse.host.link.codec import Encoder
-    from kinefuse.host.link.hil import UPDATED_ACC_GYRO, UPDATED_MAG, UT_PER_GAUSS
-    enc = Encoder(255, 190, key=key)
-    enc.seq = seq0
+        return frames
+    from kinefuse.host.link.codec import frame_from_payload, signing_timestamp
+    from kinefuse.host.link.spec import kinefuse_dialect
+    spec = kinefuse_dialect()["HIL_SENSOR"]
+    ts = signing_timestamp()
     out = []
-    upd = np.ones(len(time_us), bool) if mag_updated is None else np.asarray(mag_updated, bool)
-    for i in range(len(time_us)):
-        m = np.asarray(mag_uT[i], np.float64) / UT_PER_GAUSS
-        out.append(enc.encode("HIL_SENSOR", time_usec=int(time_us[i]),
-                              xacc=float(np.float32(acc[i][0])), yacc=float(np.float32(acc[i][1])),
-                              zacc=float(np.float32(acc[i][2])), xgyro=float(np.float32(gyr[i][0])),
-                              ygyro=float(np.float32(gyr[i][1])), zgyro=float(np.float32(gyr[i][2])),
-                              xmag=float(np.float32(m[0])), ymag=float(np.float32(m[1])),
-                              zmag=float(np.float32(m[2])),
-                              fields_updated=UPDATED_ACC_GYRO | (UPDATED_MAG if upd[i] else 0)))
+    for k, f in enumerate(frames):
+        payload = f[10:10 + f[1]].ljust(spec.length, b"\0")
+        out.append(frame_from_payload(spec, payload, f[5], f[6], f[4], key=key, timestamp=ts + k + 1))
     return out
 
 
@@ -228,6 +222,8 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
     flags = np.zeros(n, np.int64)
     first_counter = None
     got_raw = got_ori = 0
+    session.poll(0)
+    session.drain()                            # older frames (a sensor stream) are not answers
     for start in range(0, n, window):
         stop = min(n, start + window)
         session.send_bytes(b"".join(frames[start:stop]))
@@ -242,6 +238,8 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
                     continue
                 m = f.msg
                 if first_counter is None:
+                    if f.msgid != MSG_RAW or not m.flags & 64:   # the first SIMULATED sample
+                        continue
                     first_counter = m.sample_counter
                 i = (m.sample_counter - first_counter) & 0xFFFFFFFF
                 if i >= n:

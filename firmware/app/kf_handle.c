@@ -333,7 +333,8 @@ static void handle_hil(kf_app *app, const mavlink_message_t *msg)
     s.direct = (uint8_t)(app->values[KF_P_HIL_MODE].u == 1u);
     if (!app->hil) {
         app->hil = 1u;         /* from now on the sensor is ignored (until reset) */
-        app->have_prev = 0u;   /* the first HIL sample gets the nominal time step */
+        kf_config_reset_filter(app);   /* no estimate mixing sensor and simulated motion; the
+                                        * first HIL sample gets the nominal time step */
     }
     kf_app_sample(app, &s);
 }

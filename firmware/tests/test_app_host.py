@@ -14,7 +14,7 @@ import pytest
 
 from kinefuse.firmware import hostunit
 from kinefuse.firmware.hostunit import HostUnit, hil_run, unit_model
-from kinefuse.host.link.params import ParamClient, ParamError
+from kinefuse.host.link.params import ParamClient, ParamError, encode_value
 
 pytestmark = pytest.mark.skipif(shutil.which("gcc") is None, reason="gcc not installed")
 
@@ -145,8 +145,7 @@ def test_power_cut_in_the_host_build(tmp_path):
         try:
             s = unit.session()
             s.send("PARAM_SET", target_system=1, target_component=200, param_id="KF_ORI_RATE_HZ",
-                   param_value=__import__("kinefuse.host.link.params", fromlist=["x"]).encode_value(20, 3),
-                   param_type=3)
+                   param_value=encode_value(20, 3), param_type=3)
             assert unit.proc.wait(5) == 75
         finally:
             unit.stop()
@@ -282,3 +281,27 @@ def test_heading_tare_rotates_quaternion_and_covariance(hil_unit_f32, broad_inpu
     assert np.allclose(got["cov"][0], exp, rtol=1e-5, atol=1e-12)
     # the rotation did change it: the xz, yz terms turn with the frame
     assert not np.allclose(exp[[2, 4]], ref["cov"][n][[2, 4]], rtol=0.05, atol=0)
+
+
+def test_signed_hil_with_a_streaming_sensor():
+    """A unit with its sensor streaming and a signing key: signed HIL samples take over, the
+    answers are the HIL samples' (not the sensor's), bit-identical to the model."""
+    import hashlib
+    from kinefuse.host.link.codec import signing_timestamp
+    key = hashlib.sha256(b"hil key").digest()
+    rng = np.random.default_rng(5)
+    n = 120
+    t = 50_000_000 + np.arange(n, dtype=np.int64) * 1000
+    acc = np.array([0.0, 0.3, 9.8]) + rng.normal(0, 0.05, (n, 3))
+    gyr = np.array([0.2, -0.1, 0.4]) + rng.normal(0, 0.01, (n, 3))
+    mag = np.array([5.0, 19.0, -45.0]) + rng.normal(0, 0.3, (n, 3))
+    with HostUnit(filters=None) as unit:
+        s = unit.session()
+        s.send("SETUP_SIGNING", target_system=1, target_component=200, secret_key=list(key),
+               initial_timestamp=signing_timestamp())
+        time.sleep(0.2)
+        s.send("HIL_SENSOR", time_usec=1, zacc=9.8, fields_updated=0x3F)   # unsigned: refused
+        got = hil_run(s, t, acc, gyr, mag, key=key)
+    ref = unit_model("flagship", "f32", t, acc, gyr, mag, rate_hz=1000)
+    assert np.array_equal(got["time_us"], t)
+    assert np.array_equal(got["q"].view(np.uint32), ref["q"].view(np.uint32))
