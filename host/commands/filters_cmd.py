@@ -23,7 +23,7 @@ def describe() -> dict:
             "presets": cls.presets,
             "outputs": [{"name": v.name, "size": v.size, "unit": v.unit, "doc": v.doc}
                         for v in cls.outputs],
-            "implementations": ["ref", "f32", "q"],
+            "implementations": ["ref", *cls.systems],
         }
     return out
 
@@ -37,7 +37,8 @@ def run(args) -> int:
     from rich.table import Table
     console = Console()
     for name, d in info.items():
-        t = Table(title=f"{name} — {d['title']}  (input: {d['input']}; --impl ref|f32|q)",
+        t = Table(title=f"{name} — {d['title']}  (input: {d['input']}; "
+                        f"--impl {'|'.join(d['implementations'])})",
                   title_justify="left", show_edge=False)
         for col in ("parameter", "default", "unit", "range", "meaning"):
             t.add_column(col)
