@@ -254,7 +254,7 @@ def test_vac_reproduces_the_ahrs_package_aqua():
     implementation, NWU earth frame, earth→sensor quaternion) to rounding."""
     ahrs = pytest.importorskip("ahrs")
     rec = _sim(mag_rate_hz=100.0)
-    n = 1500
+    n = 800
     Q = ahrs.filters.AQUA(gyr=rec.gyr[:n], acc=rec.acc[:n], mag=rec.mag[:n],
                           frequency=rec.rate_hz, alpha=0.01, beta=0.01, adaptive=False).Q
     nwu_to_enu = Quat(math.sqrt(0.5), 0.0, 0.0, math.sqrt(0.5))

@@ -114,7 +114,7 @@ def test_float32_and_fixed_point_stay_near_the_reference(name):
     from kinefuse.hil_tests import sim
     from kinefuse.host.bench.common import quat_angle_deg
     rec = sim.simulate("slow_rotation", seed=12)
-    n = 2000
+    n = 1000
     inputs = {"gyr": rec.gyr[:n], "acc": rec.acc[:n], "mag": rec.mag[:n],
               "mag_valid": rec.mag_valid[:n], "dt": rec.dt[:n]}
     ref = runner.run(name, "ref", inputs)["q"]

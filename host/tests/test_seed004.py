@@ -50,7 +50,7 @@ def test_raw_rmse_equals_noise_without_latency():
 def test_bench_json_and_filters_beat_raw_noise():
     buf = io.StringIO()
     with redirect_stdout(buf):
-        code = cli.main(["bench", "seed004", "--json", "--takes", "2", "--duration-s", "20",
+        code = cli.main(["bench", "seed004", "--json", "--takes", "2", "--duration-s", "12",
                          "--latency-ms", "0", "--omegas", "1,10", "--bitexact"])
     assert code == 0
     text = buf.getvalue().strip()
