@@ -23,165 +23,165 @@
 
 void calib_apply_f32_default_params(calib_apply_f32_params *p)
 {
-    p->acc_m00 = 0x1.0000000000000p+0f;
+    p->acc_m00 = 0x1p+0f;
     p->acc_m01 = 0.0f;
     p->acc_m02 = 0.0f;
     p->acc_m10 = 0.0f;
-    p->acc_m11 = 0x1.0000000000000p+0f;
+    p->acc_m11 = 0x1p+0f;
     p->acc_m12 = 0.0f;
     p->acc_m20 = 0.0f;
     p->acc_m21 = 0.0f;
-    p->acc_m22 = 0x1.0000000000000p+0f;
+    p->acc_m22 = 0x1p+0f;
     p->acc_b0 = 0.0f;
     p->acc_b1 = 0.0f;
     p->acc_b2 = 0.0f;
-    p->acc_scale = 0x1.4158240000000p-7f;
-    p->gyr_m00 = 0x1.0000000000000p+0f;
+    p->acc_scale = 0x1.415824p-7f;
+    p->gyr_m00 = 0x1p+0f;
     p->gyr_m01 = 0.0f;
     p->gyr_m02 = 0.0f;
     p->gyr_m10 = 0.0f;
-    p->gyr_m11 = 0x1.0000000000000p+0f;
+    p->gyr_m11 = 0x1p+0f;
     p->gyr_m12 = 0.0f;
     p->gyr_m20 = 0.0f;
     p->gyr_m21 = 0.0f;
-    p->gyr_m22 = 0x1.0000000000000p+0f;
+    p->gyr_m22 = 0x1p+0f;
     p->gyr_b0 = 0.0f;
     p->gyr_b1 = 0.0f;
     p->gyr_b2 = 0.0f;
-    p->gyr_scale = 0x1.0624de0000000p-10f;
-    p->mag_m00 = 0x1.0000000000000p+0f;
+    p->gyr_scale = 0x1.0624dep-10f;
+    p->mag_m00 = 0x1p+0f;
     p->mag_m01 = 0.0f;
     p->mag_m02 = 0.0f;
     p->mag_m10 = 0.0f;
-    p->mag_m11 = 0x1.0000000000000p+0f;
+    p->mag_m11 = 0x1p+0f;
     p->mag_m12 = 0.0f;
     p->mag_m20 = 0.0f;
     p->mag_m21 = 0.0f;
-    p->mag_m22 = 0x1.0000000000000p+0f;
+    p->mag_m22 = 0x1p+0f;
     p->mag_b0 = 0.0f;
     p->mag_b1 = 0.0f;
     p->mag_b2 = 0.0f;
-    p->mag_scale = 0x1.99999a0000000p-4f;
+    p->mag_scale = 0x1.99999ap-4f;
 }
 
 int calib_apply_f32_init(calib_apply_f32_state *s, const calib_apply_f32_params *p)
 {
     int status = 0;
-    if (!((p->mag_scale >= 0x1.ad7f2a0000000p-24f) && (p->mag_scale <= 0x1.3333340000000p-3f))) {
+    if (!((p->mag_scale >= 0x1.ad7f2ap-24f) && (p->mag_scale <= 0x1.333334p-3f))) {
         status = -39;
     }
-    if (!((p->mag_b2 >= -0x1.f400000000000p+9f) && (p->mag_b2 <= 0x1.f400000000000p+9f))) {
+    if (!((p->mag_b2 >= -0x1.f4p+9f) && (p->mag_b2 <= 0x1.f4p+9f))) {
         status = -38;
     }
-    if (!((p->mag_b1 >= -0x1.f400000000000p+9f) && (p->mag_b1 <= 0x1.f400000000000p+9f))) {
+    if (!((p->mag_b1 >= -0x1.f4p+9f) && (p->mag_b1 <= 0x1.f4p+9f))) {
         status = -37;
     }
-    if (!((p->mag_b0 >= -0x1.f400000000000p+9f) && (p->mag_b0 <= 0x1.f400000000000p+9f))) {
+    if (!((p->mag_b0 >= -0x1.f4p+9f) && (p->mag_b0 <= 0x1.f4p+9f))) {
         status = -36;
     }
-    if (!((p->mag_m22 >= -0x1.0000000000000p+1f) && (p->mag_m22 <= 0x1.0000000000000p+1f))) {
+    if (!((p->mag_m22 >= -0x1p+1f) && (p->mag_m22 <= 0x1p+1f))) {
         status = -35;
     }
-    if (!((p->mag_m21 >= -0x1.0000000000000p+1f) && (p->mag_m21 <= 0x1.0000000000000p+1f))) {
+    if (!((p->mag_m21 >= -0x1p+1f) && (p->mag_m21 <= 0x1p+1f))) {
         status = -34;
     }
-    if (!((p->mag_m20 >= -0x1.0000000000000p+1f) && (p->mag_m20 <= 0x1.0000000000000p+1f))) {
+    if (!((p->mag_m20 >= -0x1p+1f) && (p->mag_m20 <= 0x1p+1f))) {
         status = -33;
     }
-    if (!((p->mag_m12 >= -0x1.0000000000000p+1f) && (p->mag_m12 <= 0x1.0000000000000p+1f))) {
+    if (!((p->mag_m12 >= -0x1p+1f) && (p->mag_m12 <= 0x1p+1f))) {
         status = -32;
     }
-    if (!((p->mag_m11 >= -0x1.0000000000000p+1f) && (p->mag_m11 <= 0x1.0000000000000p+1f))) {
+    if (!((p->mag_m11 >= -0x1p+1f) && (p->mag_m11 <= 0x1p+1f))) {
         status = -31;
     }
-    if (!((p->mag_m10 >= -0x1.0000000000000p+1f) && (p->mag_m10 <= 0x1.0000000000000p+1f))) {
+    if (!((p->mag_m10 >= -0x1p+1f) && (p->mag_m10 <= 0x1p+1f))) {
         status = -30;
     }
-    if (!((p->mag_m02 >= -0x1.0000000000000p+1f) && (p->mag_m02 <= 0x1.0000000000000p+1f))) {
+    if (!((p->mag_m02 >= -0x1p+1f) && (p->mag_m02 <= 0x1p+1f))) {
         status = -29;
     }
-    if (!((p->mag_m01 >= -0x1.0000000000000p+1f) && (p->mag_m01 <= 0x1.0000000000000p+1f))) {
+    if (!((p->mag_m01 >= -0x1p+1f) && (p->mag_m01 <= 0x1p+1f))) {
         status = -28;
     }
-    if (!((p->mag_m00 >= -0x1.0000000000000p+1f) && (p->mag_m00 <= 0x1.0000000000000p+1f))) {
+    if (!((p->mag_m00 >= -0x1p+1f) && (p->mag_m00 <= 0x1p+1f))) {
         status = -27;
     }
-    if (!((p->gyr_scale >= 0x1.ad7f2a0000000p-24f) && (p->gyr_scale <= 0x1.205bc00000000p-10f))) {
+    if (!((p->gyr_scale >= 0x1.ad7f2ap-24f) && (p->gyr_scale <= 0x1.205bcp-10f))) {
         status = -26;
     }
-    if (!((p->gyr_b2 >= -0x1.0000000000000p+0f) && (p->gyr_b2 <= 0x1.0000000000000p+0f))) {
+    if (!((p->gyr_b2 >= -0x1p+0f) && (p->gyr_b2 <= 0x1p+0f))) {
         status = -25;
     }
-    if (!((p->gyr_b1 >= -0x1.0000000000000p+0f) && (p->gyr_b1 <= 0x1.0000000000000p+0f))) {
+    if (!((p->gyr_b1 >= -0x1p+0f) && (p->gyr_b1 <= 0x1p+0f))) {
         status = -24;
     }
-    if (!((p->gyr_b0 >= -0x1.0000000000000p+0f) && (p->gyr_b0 <= 0x1.0000000000000p+0f))) {
+    if (!((p->gyr_b0 >= -0x1p+0f) && (p->gyr_b0 <= 0x1p+0f))) {
         status = -23;
     }
-    if (!((p->gyr_m22 >= -0x1.0000000000000p+1f) && (p->gyr_m22 <= 0x1.0000000000000p+1f))) {
+    if (!((p->gyr_m22 >= -0x1p+1f) && (p->gyr_m22 <= 0x1p+1f))) {
         status = -22;
     }
-    if (!((p->gyr_m21 >= -0x1.0000000000000p+1f) && (p->gyr_m21 <= 0x1.0000000000000p+1f))) {
+    if (!((p->gyr_m21 >= -0x1p+1f) && (p->gyr_m21 <= 0x1p+1f))) {
         status = -21;
     }
-    if (!((p->gyr_m20 >= -0x1.0000000000000p+1f) && (p->gyr_m20 <= 0x1.0000000000000p+1f))) {
+    if (!((p->gyr_m20 >= -0x1p+1f) && (p->gyr_m20 <= 0x1p+1f))) {
         status = -20;
     }
-    if (!((p->gyr_m12 >= -0x1.0000000000000p+1f) && (p->gyr_m12 <= 0x1.0000000000000p+1f))) {
+    if (!((p->gyr_m12 >= -0x1p+1f) && (p->gyr_m12 <= 0x1p+1f))) {
         status = -19;
     }
-    if (!((p->gyr_m11 >= -0x1.0000000000000p+1f) && (p->gyr_m11 <= 0x1.0000000000000p+1f))) {
+    if (!((p->gyr_m11 >= -0x1p+1f) && (p->gyr_m11 <= 0x1p+1f))) {
         status = -18;
     }
-    if (!((p->gyr_m10 >= -0x1.0000000000000p+1f) && (p->gyr_m10 <= 0x1.0000000000000p+1f))) {
+    if (!((p->gyr_m10 >= -0x1p+1f) && (p->gyr_m10 <= 0x1p+1f))) {
         status = -17;
     }
-    if (!((p->gyr_m02 >= -0x1.0000000000000p+1f) && (p->gyr_m02 <= 0x1.0000000000000p+1f))) {
+    if (!((p->gyr_m02 >= -0x1p+1f) && (p->gyr_m02 <= 0x1p+1f))) {
         status = -16;
     }
-    if (!((p->gyr_m01 >= -0x1.0000000000000p+1f) && (p->gyr_m01 <= 0x1.0000000000000p+1f))) {
+    if (!((p->gyr_m01 >= -0x1p+1f) && (p->gyr_m01 <= 0x1p+1f))) {
         status = -15;
     }
-    if (!((p->gyr_m00 >= -0x1.0000000000000p+1f) && (p->gyr_m00 <= 0x1.0000000000000p+1f))) {
+    if (!((p->gyr_m00 >= -0x1p+1f) && (p->gyr_m00 <= 0x1p+1f))) {
         status = -14;
     }
-    if (!((p->acc_scale >= 0x1.ad7f2a0000000p-24f) && (p->acc_scale <= 0x1.47ae140000000p-7f))) {
+    if (!((p->acc_scale >= 0x1.ad7f2ap-24f) && (p->acc_scale <= 0x1.47ae14p-7f))) {
         status = -13;
     }
-    if (!((p->acc_b2 >= -0x1.9000000000000p+5f) && (p->acc_b2 <= 0x1.9000000000000p+5f))) {
+    if (!((p->acc_b2 >= -0x1.9p+5f) && (p->acc_b2 <= 0x1.9p+5f))) {
         status = -12;
     }
-    if (!((p->acc_b1 >= -0x1.9000000000000p+5f) && (p->acc_b1 <= 0x1.9000000000000p+5f))) {
+    if (!((p->acc_b1 >= -0x1.9p+5f) && (p->acc_b1 <= 0x1.9p+5f))) {
         status = -11;
     }
-    if (!((p->acc_b0 >= -0x1.9000000000000p+5f) && (p->acc_b0 <= 0x1.9000000000000p+5f))) {
+    if (!((p->acc_b0 >= -0x1.9p+5f) && (p->acc_b0 <= 0x1.9p+5f))) {
         status = -10;
     }
-    if (!((p->acc_m22 >= -0x1.0000000000000p+1f) && (p->acc_m22 <= 0x1.0000000000000p+1f))) {
+    if (!((p->acc_m22 >= -0x1p+1f) && (p->acc_m22 <= 0x1p+1f))) {
         status = -9;
     }
-    if (!((p->acc_m21 >= -0x1.0000000000000p+1f) && (p->acc_m21 <= 0x1.0000000000000p+1f))) {
+    if (!((p->acc_m21 >= -0x1p+1f) && (p->acc_m21 <= 0x1p+1f))) {
         status = -8;
     }
-    if (!((p->acc_m20 >= -0x1.0000000000000p+1f) && (p->acc_m20 <= 0x1.0000000000000p+1f))) {
+    if (!((p->acc_m20 >= -0x1p+1f) && (p->acc_m20 <= 0x1p+1f))) {
         status = -7;
     }
-    if (!((p->acc_m12 >= -0x1.0000000000000p+1f) && (p->acc_m12 <= 0x1.0000000000000p+1f))) {
+    if (!((p->acc_m12 >= -0x1p+1f) && (p->acc_m12 <= 0x1p+1f))) {
         status = -6;
     }
-    if (!((p->acc_m11 >= -0x1.0000000000000p+1f) && (p->acc_m11 <= 0x1.0000000000000p+1f))) {
+    if (!((p->acc_m11 >= -0x1p+1f) && (p->acc_m11 <= 0x1p+1f))) {
         status = -5;
     }
-    if (!((p->acc_m10 >= -0x1.0000000000000p+1f) && (p->acc_m10 <= 0x1.0000000000000p+1f))) {
+    if (!((p->acc_m10 >= -0x1p+1f) && (p->acc_m10 <= 0x1p+1f))) {
         status = -4;
     }
-    if (!((p->acc_m02 >= -0x1.0000000000000p+1f) && (p->acc_m02 <= 0x1.0000000000000p+1f))) {
+    if (!((p->acc_m02 >= -0x1p+1f) && (p->acc_m02 <= 0x1p+1f))) {
         status = -3;
     }
-    if (!((p->acc_m01 >= -0x1.0000000000000p+1f) && (p->acc_m01 <= 0x1.0000000000000p+1f))) {
+    if (!((p->acc_m01 >= -0x1p+1f) && (p->acc_m01 <= 0x1p+1f))) {
         status = -2;
     }
-    if (!((p->acc_m00 >= -0x1.0000000000000p+1f) && (p->acc_m00 <= 0x1.0000000000000p+1f))) {
+    if (!((p->acc_m00 >= -0x1p+1f) && (p->acc_m00 <= 0x1p+1f))) {
         status = -1;
     }
     if (status != 0) {
@@ -254,22 +254,22 @@ void calib_apply_f32_update(calib_apply_f32_state *s, const kf_calib_input_f32 *
     const float t57 = (t55 + t56);  /* calib_apply.py:87 */
     const float t58 = (p_gyr_m02 * t54);  /* calib_apply.py:88 */
     const float t59 = (t57 + t58);  /* calib_apply.py:87 */
-    const float t61 = ((-0x1.1740b00000000p+6f < t59) ? t59 : -0x1.1740b00000000p+6f);  /* calib_apply.py:87 */
-    const float t63 = ((t61 < 0x1.1740b00000000p+6f) ? t61 : 0x1.1740b00000000p+6f);  /* calib_apply.py:87 */
+    const float t61 = ((-0x1.1740bp+6f < t59) ? t59 : -0x1.1740bp+6f);  /* calib_apply.py:87 */
+    const float t63 = ((t61 < 0x1.1740bp+6f) ? t61 : 0x1.1740bp+6f);  /* calib_apply.py:87 */
     const float t64 = (p_gyr_m10 * t50);  /* calib_apply.py:87 */
     const float t65 = (p_gyr_m11 * t52);  /* calib_apply.py:87 */
     const float t66 = (t64 + t65);  /* calib_apply.py:87 */
     const float t67 = (p_gyr_m12 * t54);  /* calib_apply.py:88 */
     const float t68 = (t66 + t67);  /* calib_apply.py:87 */
-    const float t69 = ((-0x1.1740b00000000p+6f < t68) ? t68 : -0x1.1740b00000000p+6f);  /* calib_apply.py:87 */
-    const float t70 = ((t69 < 0x1.1740b00000000p+6f) ? t69 : 0x1.1740b00000000p+6f);  /* calib_apply.py:87 */
+    const float t69 = ((-0x1.1740bp+6f < t68) ? t68 : -0x1.1740bp+6f);  /* calib_apply.py:87 */
+    const float t70 = ((t69 < 0x1.1740bp+6f) ? t69 : 0x1.1740bp+6f);  /* calib_apply.py:87 */
     const float t71 = (p_gyr_m20 * t50);  /* calib_apply.py:87 */
     const float t72 = (p_gyr_m21 * t52);  /* calib_apply.py:87 */
     const float t73 = (t71 + t72);  /* calib_apply.py:87 */
     const float t74 = (p_gyr_m22 * t54);  /* calib_apply.py:88 */
     const float t75 = (t73 + t74);  /* calib_apply.py:87 */
-    const float t76 = ((-0x1.1740b00000000p+6f < t75) ? t75 : -0x1.1740b00000000p+6f);  /* calib_apply.py:87 */
-    const float t77 = ((t76 < 0x1.1740b00000000p+6f) ? t76 : 0x1.1740b00000000p+6f);  /* calib_apply.py:87 */
+    const float t76 = ((-0x1.1740bp+6f < t75) ? t75 : -0x1.1740bp+6f);  /* calib_apply.py:87 */
+    const float t77 = ((t76 < 0x1.1740bp+6f) ? t76 : 0x1.1740bp+6f);  /* calib_apply.py:87 */
     const float t78 = (u_acc_raw0 * p_acc_scale);  /* calib_apply.py:84 */
     const float t79 = (t78 - p_acc_b0);  /* calib_apply.py:84 */
     const float t80 = (u_acc_raw1 * p_acc_scale);  /* calib_apply.py:84 */
@@ -281,22 +281,22 @@ void calib_apply_f32_update(calib_apply_f32_state *s, const kf_calib_input_f32 *
     const float t86 = (t84 + t85);  /* calib_apply.py:87 */
     const float t87 = (p_acc_m02 * t83);  /* calib_apply.py:88 */
     const float t88 = (t86 + t87);  /* calib_apply.py:87 */
-    const float t90 = ((-0x1.39d0140000000p+8f < t88) ? t88 : -0x1.39d0140000000p+8f);  /* calib_apply.py:87 */
-    const float t92 = ((t90 < 0x1.39d0140000000p+8f) ? t90 : 0x1.39d0140000000p+8f);  /* calib_apply.py:87 */
+    const float t90 = ((-0x1.39d014p+8f < t88) ? t88 : -0x1.39d014p+8f);  /* calib_apply.py:87 */
+    const float t92 = ((t90 < 0x1.39d014p+8f) ? t90 : 0x1.39d014p+8f);  /* calib_apply.py:87 */
     const float t93 = (p_acc_m10 * t79);  /* calib_apply.py:87 */
     const float t94 = (p_acc_m11 * t81);  /* calib_apply.py:87 */
     const float t95 = (t93 + t94);  /* calib_apply.py:87 */
     const float t96 = (p_acc_m12 * t83);  /* calib_apply.py:88 */
     const float t97 = (t95 + t96);  /* calib_apply.py:87 */
-    const float t98 = ((-0x1.39d0140000000p+8f < t97) ? t97 : -0x1.39d0140000000p+8f);  /* calib_apply.py:87 */
-    const float t99 = ((t98 < 0x1.39d0140000000p+8f) ? t98 : 0x1.39d0140000000p+8f);  /* calib_apply.py:87 */
+    const float t98 = ((-0x1.39d014p+8f < t97) ? t97 : -0x1.39d014p+8f);  /* calib_apply.py:87 */
+    const float t99 = ((t98 < 0x1.39d014p+8f) ? t98 : 0x1.39d014p+8f);  /* calib_apply.py:87 */
     const float t100 = (p_acc_m20 * t79);  /* calib_apply.py:87 */
     const float t101 = (p_acc_m21 * t81);  /* calib_apply.py:87 */
     const float t102 = (t100 + t101);  /* calib_apply.py:87 */
     const float t103 = (p_acc_m22 * t83);  /* calib_apply.py:88 */
     const float t104 = (t102 + t103);  /* calib_apply.py:87 */
-    const float t105 = ((-0x1.39d0140000000p+8f < t104) ? t104 : -0x1.39d0140000000p+8f);  /* calib_apply.py:87 */
-    const float t106 = ((t105 < 0x1.39d0140000000p+8f) ? t105 : 0x1.39d0140000000p+8f);  /* calib_apply.py:87 */
+    const float t105 = ((-0x1.39d014p+8f < t104) ? t104 : -0x1.39d014p+8f);  /* calib_apply.py:87 */
+    const float t106 = ((t105 < 0x1.39d014p+8f) ? t105 : 0x1.39d014p+8f);  /* calib_apply.py:87 */
     const float t107 = (u_mag_raw0 * p_mag_scale);  /* calib_apply.py:84 */
     const float t108 = (t107 - p_mag_b0);  /* calib_apply.py:84 */
     const float t109 = (u_mag_raw1 * p_mag_scale);  /* calib_apply.py:84 */
@@ -308,25 +308,25 @@ void calib_apply_f32_update(calib_apply_f32_state *s, const kf_calib_input_f32 *
     const float t115 = (t113 + t114);  /* calib_apply.py:87 */
     const float t116 = (p_mag_m02 * t112);  /* calib_apply.py:88 */
     const float t117 = (t115 + t116);  /* calib_apply.py:87 */
-    const float t119 = ((-0x1.3240000000000p+13f < t117) ? t117 : -0x1.3240000000000p+13f);  /* calib_apply.py:87 */
-    const float t121 = ((t119 < 0x1.3240000000000p+13f) ? t119 : 0x1.3240000000000p+13f);  /* calib_apply.py:87 */
+    const float t119 = ((-0x1.324p+13f < t117) ? t117 : -0x1.324p+13f);  /* calib_apply.py:87 */
+    const float t121 = ((t119 < 0x1.324p+13f) ? t119 : 0x1.324p+13f);  /* calib_apply.py:87 */
     const float t122 = (p_mag_m10 * t108);  /* calib_apply.py:87 */
     const float t123 = (p_mag_m11 * t110);  /* calib_apply.py:87 */
     const float t124 = (t122 + t123);  /* calib_apply.py:87 */
     const float t125 = (p_mag_m12 * t112);  /* calib_apply.py:88 */
     const float t126 = (t124 + t125);  /* calib_apply.py:87 */
-    const float t127 = ((-0x1.3240000000000p+13f < t126) ? t126 : -0x1.3240000000000p+13f);  /* calib_apply.py:87 */
-    const float t128 = ((t127 < 0x1.3240000000000p+13f) ? t127 : 0x1.3240000000000p+13f);  /* calib_apply.py:87 */
+    const float t127 = ((-0x1.324p+13f < t126) ? t126 : -0x1.324p+13f);  /* calib_apply.py:87 */
+    const float t128 = ((t127 < 0x1.324p+13f) ? t127 : 0x1.324p+13f);  /* calib_apply.py:87 */
     const float t129 = (p_mag_m20 * t108);  /* calib_apply.py:87 */
     const float t130 = (p_mag_m21 * t110);  /* calib_apply.py:87 */
     const float t131 = (t129 + t130);  /* calib_apply.py:87 */
     const float t132 = (p_mag_m22 * t112);  /* calib_apply.py:88 */
     const float t133 = (t131 + t132);  /* calib_apply.py:87 */
-    const float t134 = ((-0x1.3240000000000p+13f < t133) ? t133 : -0x1.3240000000000p+13f);  /* calib_apply.py:87 */
-    const float t135 = ((t134 < 0x1.3240000000000p+13f) ? t134 : 0x1.3240000000000p+13f);  /* calib_apply.py:87 */
+    const float t134 = ((-0x1.324p+13f < t133) ? t133 : -0x1.324p+13f);  /* calib_apply.py:87 */
+    const float t135 = ((t134 < 0x1.324p+13f) ? t134 : 0x1.324p+13f);  /* calib_apply.py:87 */
     const float t137 = ((0.0f < u_dt_us) ? u_dt_us : 0.0f);  /* calib_apply.py:90 */
-    const float t139 = ((t137 < 0x1.e848000000000p+19f) ? t137 : 0x1.e848000000000p+19f);  /* calib_apply.py:90 */
-    const float t141 = (t139 * 0x1.0c6f7a0000000p-20f);  /* calib_apply.py:90 */
+    const float t139 = ((t137 < 0x1.e848p+19f) ? t137 : 0x1.e848p+19f);  /* calib_apply.py:90 */
+    const float t141 = (t139 * 0x1.0c6f7ap-20f);  /* calib_apply.py:90 */
     out->gyr[0] = t63;
     out->gyr[1] = t70;
     out->gyr[2] = t77;
