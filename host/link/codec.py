@@ -59,6 +59,15 @@ class Encoder:
         self.sysid, self.compid = sysid, compid
         self.key, self.link_id = key, link_id
         self.seq = 0
+        self._last_ts = -1
+
+    def _timestamp(self) -> int | None:
+        """Signing timestamps strictly increase per link (MAVLink 2 signing: a receiver refuses
+        a repeated one as a replay), even for frames encoded within one 10 us tick."""
+        if self.key is None:
+            return None
+        self._last_ts = max(signing_timestamp(), self._last_ts + 1)
+        return self._last_ts
 
     def payload(self, name_or_id, fields: dict) -> tuple[MessageSpec, bytes]:
         spec = self.dialect[name_or_id]
@@ -82,7 +91,7 @@ class Encoder:
         spec, payload = self.payload(name_or_id, fields)
         frame = frame_from_payload(spec, payload, self.sysid if sysid is None else sysid,
                                    self.compid if compid is None else compid, self.seq,
-                                   key=self.key, link_id=self.link_id)
+                                   key=self.key, link_id=self.link_id, timestamp=self._timestamp())
         self.seq = (self.seq + 1) & 0xFF
         return frame
 
@@ -92,6 +101,6 @@ class Encoder:
         payload = spec.struct.pack(*spec.flatten(record))
         frame = frame_from_payload(spec, payload, self.sysid if sysid is None else sysid,
                                    self.compid if compid is None else compid, self.seq,
-                                   key=self.key, link_id=self.link_id)
+                                   key=self.key, link_id=self.link_id, timestamp=self._timestamp())
         self.seq = (self.seq + 1) & 0xFF
         return frame

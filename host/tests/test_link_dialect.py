@@ -332,3 +332,14 @@ def test_orientation_with_extension_both_ways(c_prog):
         assert back.split()[12:] == [f"{x:08x}" for x in np.frombuffer(cov.tobytes(), "<u4")]
         if case % 2 == 0:
             assert len(frame) < 12 + 61  # all-zero covariance costs no bytes on the wire
+
+
+def test_signed_frames_encoded_back_to_back_have_increasing_timestamps():
+    """Two frames within one 10 us tick must not share a signing timestamp (replay check)."""
+    from kinefuse.host.link.codec import Encoder
+    enc = Encoder(key=b"k" * 32)
+    stamps = []
+    for _ in range(200):
+        f = enc.encode("HEARTBEAT")
+        stamps.append(int.from_bytes(f[-12:-6], "little"))
+    assert all(b > a for a, b in zip(stamps, stamps[1:]))

@@ -409,8 +409,18 @@ KF_FILTER_EKF = 6
 enums["KF_FILTER"][6] = EnumEntry("KF_FILTER_EKF", """Extended Kalman filter on orientation (and gyro bias).""")
 KF_FILTER_DYNAMIC_EKF = 7
 enums["KF_FILTER"][7] = EnumEntry("KF_FILTER_DYNAMIC_EKF", """Dynamic multibody EKF (orientation, joint angles and efforts).""")
-KF_FILTER_ENUM_END = 8
-enums["KF_FILTER"][8] = EnumEntry("KF_FILTER_ENUM_END", """""")
+KF_FILTER_ECOMPASS = 8
+enums["KF_FILTER"][8] = EnumEntry("KF_FILTER_ECOMPASS", """Memoryless accelerometer + magnetometer orientation (e-compass).""")
+KF_FILTER_TRIAD = 9
+enums["KF_FILTER"][9] = EnumEntry("KF_FILTER_TRIAD", """Memoryless TRIAD orientation from gravity and the magnetic field.""")
+KF_FILTER_VAC = 10
+enums["KF_FILTER"][10] = EnumEntry("KF_FILTER_VAC", """Valenti's complementary filter (algebraic quaternion, adaptive gain).""")
+KF_FILTER_VAK = 11
+enums["KF_FILTER"][11] = EnumEntry("KF_FILTER_VAK", """Valenti's Kalman filter (algebraic measurement quaternion).""")
+KF_FILTER_GUO = 12
+enums["KF_FILTER"][12] = EnumEntry("KF_FILTER_GUO", """Guo's linear Kalman filter (fast Kalman filter).""")
+KF_FILTER_ENUM_END = 13
+enums["KF_FILTER"][13] = EnumEntry("KF_FILTER_ENUM_END", """""")
 
 # KF_NUMERIC_FORMAT
 enums["KF_NUMERIC_FORMAT"] = Enum()

@@ -74,7 +74,12 @@ typedef enum KF_FILTER
    KF_FILTER_VQF=5, /* VQF-style filter (inclination/heading split, rest detection, bias estimation). | */
    KF_FILTER_EKF=6, /* Extended Kalman filter on orientation (and gyro bias). | */
    KF_FILTER_DYNAMIC_EKF=7, /* Dynamic multibody EKF (orientation, joint angles and efforts). | */
-   KF_FILTER_ENUM_END=8, /*  | */
+   KF_FILTER_ECOMPASS=8, /* Memoryless accelerometer + magnetometer orientation (e-compass). | */
+   KF_FILTER_TRIAD=9, /* Memoryless TRIAD orientation from gravity and the magnetic field. | */
+   KF_FILTER_VAC=10, /* Valenti's complementary filter (algebraic quaternion, adaptive gain). | */
+   KF_FILTER_VAK=11, /* Valenti's Kalman filter (algebraic measurement quaternion). | */
+   KF_FILTER_GUO=12, /* Guo's linear Kalman filter (fast Kalman filter). | */
+   KF_FILTER_ENUM_END=13, /*  | */
 } KF_FILTER;
 #endif
 
