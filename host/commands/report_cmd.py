@@ -34,8 +34,10 @@ def register(subparsers) -> None:
         sp.add_argument("--out", required=True, metavar="DIR", help="output directory")
         sp.add_argument("--format", dest="fmt", help="recording format (default: detected)")
         sp.add_argument("--fs", type=float, help="sampling rate (Hz) for formats without time stamps")
-        sp.add_argument("--filter", default="complementary",
-                        help="orientation filter for raw recordings: 'complementary' or module:function")
+        sp.add_argument("--filter", default=None,
+                        help="orientation filter for raw recordings: a kinefuse filter (default: the "
+                             "default filter, flagship), name@q for fixed point, 'simple', or "
+                             "module:function")
         sp.add_argument("--orientation", choices=["auto", "device", "filter"], default="auto",
                         help="auto: device quaternions when present, else the filter")
         sp.add_argument("--drop-edge-cycles", type=int, default=0, metavar="N",

@@ -4,10 +4,10 @@ The reports take an orientation *filter* — a callable
 ``f(t [s], acc [m/s²], gyr [rad/s], mag [µT] or None) -> q_GS (N×4, w,x,y,z, sensor → ENU)``
 or the name of one:
 
-* ``"complementary"`` — :func:`complementary_filter` below: a small, documented stand-in used by
-  the tests until the project's filters exist.  It is *not* the project's estimator and makes
-  no accuracy claim beyond the simulated step-up figure reported by ``kinefuse bench
-  joint-angles``;
+* a kinefuse filter name (``flagship``, the default, ``madgwick``, ``eskf`` ...; ``name@q`` for
+  the fixed-point C): the generated float32 C run through :mod:`kinefuse.host.runner`;
+* ``"simple"`` — :func:`complementary_filter` below: a small, documented stand-in written before
+  the project's filters existed; kept as an independent cross-check;
 * ``"module.path:function"`` — any importable callable with the signature above (how the
   project's filters plug in).
 """
@@ -125,16 +125,49 @@ def complementary_filter(t, acc, gyr, mag=None, *, k_acc: float = 0.1, k_mag: fl
     return out
 
 
-FILTERS: dict[str, Callable] = {"complementary": complementary_filter}
+FILTERS: dict[str, Callable] = {"simple": complementary_filter}
+
+
+def generated_filter(name: str, impl: str = "f32") -> Callable:
+    """One of kinefuse's generated IMU filters (float32 C by default) as a report filter:
+    the per-sample time step comes from t, a magnetometer reading counts when it is finite."""
+    from types import SimpleNamespace
+
+    from kinefuse.host import runner
+
+    def run(t, acc, gyr, mag=None):
+        t = np.asarray(t, float)
+        n = len(t)
+        dt = np.diff(t, prepend=t[0] - (t[1] - t[0] if n > 1 else 0.01))
+        mag_arr = np.zeros((n, 3)) if mag is None else np.asarray(mag, float)
+        rec = SimpleNamespace(gyr=np.asarray(gyr, float), acc=np.asarray(acc, float), mag=mag_arr,
+                              dt=dt, rate_hz=1.0 / float(np.median(dt)),
+                              mag_valid=np.all(np.isfinite(mag_arr), axis=1) if mag is not None
+                              else np.zeros(n, bool))
+        return runner.run_filter(name, impl, rec).q
+
+    run.__name__ = f"kinefuse_{name}_{impl}"
+    return run
+
+
+def default_filter_name() -> str:
+    from kinefuse.host import runner
+    return runner.default_filter()
 
 
 def resolve_filter(spec) -> Callable:
-    """A callable filter from a callable, a registered name or ``"module:function"``."""
+    """A callable filter from a callable, a kinefuse filter name (``flagship``, ``madgwick`` ...,
+    optionally ``name@q`` for fixed point), ``simple`` (the stand-in below) or
+    ``"module:function"``."""
     if callable(spec):
         return spec
     if isinstance(spec, str):
         if spec in FILTERS:
             return FILTERS[spec]
+        from kinefuse.host import runner
+        name, _, impl = spec.partition("@")
+        if name in runner.imu_filter_names():
+            return generated_filter(name, impl or "f32")
         if ":" in spec:
             mod, _, fn = spec.partition(":")
             try:

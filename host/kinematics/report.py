@@ -122,7 +122,7 @@ def _first_still(rec: Recording, cfg: S.StaticConfig, other: Recording | None = 
     return slice(0, min(n_default, len(rec.t)))
 
 
-def sensor_orientation(rec: Recording, *, filter="complementary", orientation: str = "auto",
+def sensor_orientation(rec: Recording, *, filter=None, orientation: str = "auto",
                        mag: np.ndarray | None = None, gyro_bias=None) -> tuple[np.ndarray, str]:
     """q_GS for one recording: device quaternions or the filter; returns (q, description)."""
     if orientation not in ("auto", "device", "filter"):
@@ -132,7 +132,7 @@ def sensor_orientation(rec: Recording, *, filter="complementary", orientation: s
     if orientation == "device":
         raise KinefuseError(f"{rec.source}: no device quaternions in this {rec.fmt} recording")
     rec.require("acc", "gyr")
-    f = O.resolve_filter(filter)
+    f = O.resolve_filter(filter if filter is not None else O.default_filter_name())
     g = rec.gyr - (np.zeros(3) if gyro_bias is None else gyro_bias)
     q = np.asarray(f(rec.t, rec.acc, g, mag), dtype=float)
     if q.shape != (len(rec.t), 4) or not np.all(np.isfinite(q)):
@@ -144,7 +144,7 @@ def sensor_orientation(rec: Recording, *, filter="complementary", orientation: s
 
 def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, lying=None,
                          mag_recordings=None, mag_calibrations=None, unit_calibrations=None,
-                         filter="complementary", orientation: str = "auto", side: str = "right",
+                         filter=None, orientation: str = "auto", side: str = "right",
                          convention: str = "grood-suntay", field_norm: float | None = None,
                          mag_gate: float | None = None,
                          static_config: S.StaticConfig = S.StaticConfig(),
@@ -273,7 +273,7 @@ ELBOW_COLUMNS = ("flexion_deg", "abduction_deg", "internal_rotation_deg")
 ELBOW_INITS = joint.ELBOW_INITS
 
 
-def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter="complementary",
+def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter=None,
                           orientation: str = "auto", sequence: str = "XYZ",
                           init: str = "zero-at-start", unit_calibrations=None,
                           static_config: S.StaticConfig = S.StaticConfig(),

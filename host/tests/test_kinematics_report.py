@@ -116,7 +116,7 @@ def test_elbow_pipeline_flexion():
 
 
 def test_filter_parameter_resolution():
-    assert orientation.resolve_filter("complementary") is orientation.complementary_filter
+    assert orientation.resolve_filter("simple") is orientation.complementary_filter
     f = orientation.resolve_filter("kinefuse.host.kinematics.orientation:complementary_filter")
     assert f is orientation.complementary_filter
     with pytest.raises(KinefuseError, match="unknown orientation filter"):
