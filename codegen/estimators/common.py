@@ -82,8 +82,11 @@ def initial_quaternion(acc: Vec3, mag: Vec3, use_mag):
     accelerometer is too small or the field is (nearly) parallel to gravity.
     """
     up, a2 = acc.normalized(1e-6)
-    # heading reference: the magnetometer, or the sensor's y axis when there is none
-    ref = vselect(use_mag, mag, Vec3(0.0, 1.0, 0.0))
+    # heading reference: the magnetometer direction, or the sensor's y axis when there is none.
+    # The field is normalised first: in fixed point one format serves both choices, and the
+    # field's range (thousands of µT) would leave a unit vector's products a few bits.
+    m_dir, _ = mag.normalized(1e-12)
+    ref = vselect(use_mag, m_dir, Vec3(0.0, 1.0, 0.0))
     e_raw = ref.cross(up)
     e2 = e_raw.norm_sq()
     r2 = ref.norm_sq()

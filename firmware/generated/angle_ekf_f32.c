@@ -23,29 +23,29 @@
 
 void angle_ekf_f32_default_params(angle_ekf_f32_params *p)
 {
-    p->sigma_meas = 0x1.eb851e0000000p-6f;
-    p->q_acc = 0x1.0000000000000p+0f;
-    p->q_center = 0x1.47ae140000000p-7f;
-    p->q_omega = 0x1.0000000000000p+0f;
-    p->omega0 = 0x1.0000000000000p+3f;
+    p->sigma_meas = 0x1.eb851ep-6f;
+    p->q_acc = 0x1p+0f;
+    p->q_center = 0x1.47ae14p-7f;
+    p->q_omega = 0x1p+0f;
+    p->omega0 = 0x1p+3f;
 }
 
 int angle_ekf_f32_init(angle_ekf_f32_state *s, const angle_ekf_f32_params *p)
 {
     int status = 0;
-    if (!((p->omega0 >= 0x1.99999a0000000p-3f) && (p->omega0 <= 0x1.e000000000000p+4f))) {
+    if (!((p->omega0 >= 0x1.99999ap-3f) && (p->omega0 <= 0x1.ep+4f))) {
         status = -5;
     }
-    if (!((p->q_omega >= 0x1.0c6f7a0000000p-20f) && (p->q_omega <= 0x1.9000000000000p+6f))) {
+    if (!((p->q_omega >= 0x1.0c6f7ap-20f) && (p->q_omega <= 0x1.9p+6f))) {
         status = -4;
     }
-    if (!((p->q_center >= 0x1.5798ee0000000p-27f) && (p->q_center <= 0x1.4000000000000p+3f))) {
+    if (!((p->q_center >= 0x1.5798eep-27f) && (p->q_center <= 0x1.4p+3f))) {
         status = -3;
     }
-    if (!((p->q_acc >= 0x1.0c6f7a0000000p-20f) && (p->q_acc <= 0x1.3880000000000p+13f))) {
+    if (!((p->q_acc >= 0x1.0c6f7ap-20f) && (p->q_acc <= 0x1.388p+13f))) {
         status = -2;
     }
-    if (!((p->sigma_meas >= 0x1.0624de0000000p-10f) && (p->sigma_meas <= 0x1.0000000000000p+0f))) {
+    if (!((p->sigma_meas >= 0x1.0624dep-10f) && (p->sigma_meas <= 0x1p+0f))) {
         status = -1;
     }
     if (status != 0) {
@@ -56,19 +56,19 @@ int angle_ekf_f32_init(angle_ekf_f32_state *s, const angle_ekf_f32_params *p)
     s->theta = 0.0f;
     s->rate = 0.0f;
     s->center = 0.0f;
-    s->omega = 0x1.8000000000000p+1f;
+    s->omega = 0x1.8p+1f;
     s->initialised = 0;
     s->rejected = 0;
-    s->Ptt = 0x1.d7dbf40000000p-11f;
+    s->Ptt = 0x1.d7dbf4p-11f;
     s->Ptr = 0.0f;
     s->Ptc = 0.0f;
     s->Ptw = 0.0f;
-    s->Prr = 0x1.2000000000000p+3f;
+    s->Prr = 0x1.2p+3f;
     s->Prc = 0.0f;
     s->Prw = 0.0f;
-    s->Pcc = 0x1.0000000000000p-2f;
+    s->Pcc = 0x1p-2f;
     s->Pcw = 0.0f;
-    s->Pww = 0x1.9000000000000p+4f;
+    s->Pww = 0x1.9p+4f;
     return status;
 }
 
@@ -99,63 +99,63 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float x_Pcw = s->Pcw;
     const float x_Pww = s->Pww;
     const float t24 = fabsf(u_angle);  /* angle_kf.py:132 */
-    const int t26 = (t24 <= 0x1.99999a0000000p+1f);  /* angle_kf.py:132 */
+    const int t26 = (t24 <= 0x1.99999ap+1f);  /* angle_kf.py:132 */
     const int t28 = (0.0f < u_dt);  /* angle_kf.py:132 */
-    const int t30 = (u_dt <= 0x1.99999a0000000p-3f);  /* angle_kf.py:132 */
+    const int t30 = (u_dt <= 0x1.99999ap-3f);  /* angle_kf.py:132 */
     const int t31 = (t26 && t28);  /* angle_kf.py:132 */
     const int t32 = (t31 && t30);  /* angle_kf.py:132 */
     const int t33 = (t32 && u_angle_valid);  /* angle_kf.py:134 */
     const int t34 = (!t32);  /* angle_kf.py:135 */
     const float t35 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* angle_kf.py:136 */
-    const float t36 = ((t35 < 0x1.99999a0000000p-3f) ? t35 : 0x1.99999a0000000p-3f);  /* angle_kf.py:136 */
-    const float t37 = ((0x1.99999a0000000p-3f < x_omega) ? x_omega : 0x1.99999a0000000p-3f);  /* angle_kf.py:241 */
-    const float t39 = ((t37 < 0x1.e000000000000p+4f) ? t37 : 0x1.e000000000000p+4f);  /* angle_kf.py:241 */
+    const float t36 = ((t35 < 0x1.99999ap-3f) ? t35 : 0x1.99999ap-3f);  /* angle_kf.py:136 */
+    const float t37 = ((0x1.99999ap-3f < x_omega) ? x_omega : 0x1.99999ap-3f);  /* angle_kf.py:241 */
+    const float t39 = ((t37 < 0x1.ep+4f) ? t37 : 0x1.ep+4f);  /* angle_kf.py:241 */
     const float t40 = (t39 * t36);  /* angle_kf.py:242 */
-    const float t42 = (t40 * 0x1.45f3060000000p-1f);  /* angle_kf.py:224 */
-    const float t44 = (t42 + 0x1.0000000000000p-1f);  /* angle_kf.py:224 */
-    const float t45_a = ((-0x1.0000000000000p+30f < t44) ? t44 : -0x1.0000000000000p+30f);  /* angle_kf.py:224 */
-    const float t45_b = ((t45_a < 0x1.0000000000000p+30f) ? t45_a : 0x1.0000000000000p+30f);
+    const float t42 = (t40 * 0x1.45f306p-1f);  /* angle_kf.py:224 */
+    const float t44 = (t42 + 0x1p-1f);  /* angle_kf.py:224 */
+    const float t45_a = ((-0x1p+30f < t44) ? t44 : -0x1p+30f);  /* angle_kf.py:224 */
+    const float t45_b = ((t45_a < 0x1p+30f) ? t45_a : 0x1p+30f);
     const float t45_i = ((float)((int32_t)t45_b));
-    const float t45 = ((t45_b < t45_i) ? (t45_i - 0x1.0000000000000p+0f) : t45_i);
-    const float t47 = (t45 * 0x1.9200000000000p+0f);  /* angle_kf.py:224 */
+    const float t45 = ((t45_b < t45_i) ? (t45_i - 0x1p+0f) : t45_i);
+    const float t47 = (t45 * 0x1.92p+0f);  /* angle_kf.py:224 */
     const float t48 = (t40 - t47);  /* angle_kf.py:224 */
-    const float t50 = (t45 * 0x1.fb54440000000p-12f);  /* angle_kf.py:224 */
+    const float t50 = (t45 * 0x1.fb5444p-12f);  /* angle_kf.py:224 */
     const float t51 = (t48 - t50);  /* angle_kf.py:224 */
-    const float t54 = (t45 * 0x1.0000000000000p-2f);  /* angle_kf.py:224 */
-    const float t55_a = ((-0x1.0000000000000p+30f < t54) ? t54 : -0x1.0000000000000p+30f);  /* angle_kf.py:224 */
-    const float t55_b = ((t55_a < 0x1.0000000000000p+30f) ? t55_a : 0x1.0000000000000p+30f);
+    const float t54 = (t45 * 0x1p-2f);  /* angle_kf.py:224 */
+    const float t55_a = ((-0x1p+30f < t54) ? t54 : -0x1p+30f);  /* angle_kf.py:224 */
+    const float t55_b = ((t55_a < 0x1p+30f) ? t55_a : 0x1p+30f);
     const float t55_i = ((float)((int32_t)t55_b));
-    const float t55 = ((t55_b < t55_i) ? (t55_i - 0x1.0000000000000p+0f) : t55_i);
-    const float t57 = (0x1.0000000000000p+2f * t55);  /* angle_kf.py:224 */
+    const float t55 = ((t55_b < t55_i) ? (t55_i - 0x1p+0f) : t55_i);
+    const float t57 = (0x1p+2f * t55);  /* angle_kf.py:224 */
     const float t58 = (t45 - t57);  /* angle_kf.py:224 */
     const float t59 = (t51 * t51);  /* angle_kf.py:224 */
-    const float t61 = (-0x1.ae64560000000p-26f * t59);  /* angle_kf.py:224 */
-    const float t63 = (t61 + 0x1.71de3a0000000p-19f);  /* angle_kf.py:224 */
+    const float t61 = (-0x1.ae6456p-26f * t59);  /* angle_kf.py:224 */
+    const float t63 = (t61 + 0x1.71de3ap-19f);  /* angle_kf.py:224 */
     const float t64 = (t63 * t59);  /* angle_kf.py:224 */
-    const float t66 = (t64 + -0x1.a01a020000000p-13f);  /* angle_kf.py:224 */
+    const float t66 = (t64 + -0x1.a01a02p-13f);  /* angle_kf.py:224 */
     const float t67 = (t66 * t59);  /* angle_kf.py:224 */
-    const float t69 = (t67 + 0x1.1111120000000p-7f);  /* angle_kf.py:224 */
+    const float t69 = (t67 + 0x1.111112p-7f);  /* angle_kf.py:224 */
     const float t70 = (t69 * t59);  /* angle_kf.py:224 */
-    const float t72 = (t70 + -0x1.5555560000000p-3f);  /* angle_kf.py:224 */
+    const float t72 = (t70 + -0x1.555556p-3f);  /* angle_kf.py:224 */
     const float t73 = (t51 * t59);  /* angle_kf.py:224 */
     const float t74 = (t73 * t72);  /* angle_kf.py:224 */
     const float t75 = (t51 + t74);  /* angle_kf.py:224 */
-    const float t77 = (0x1.1eed8e0000000p-29f * t59);  /* angle_kf.py:224 */
-    const float t79 = (t77 + -0x1.27e4fc0000000p-22f);  /* angle_kf.py:224 */
+    const float t77 = (0x1.1eed8ep-29f * t59);  /* angle_kf.py:224 */
+    const float t79 = (t77 + -0x1.27e4fcp-22f);  /* angle_kf.py:224 */
     const float t80 = (t79 * t59);  /* angle_kf.py:224 */
-    const float t82 = (t80 + 0x1.a01a020000000p-16f);  /* angle_kf.py:224 */
+    const float t82 = (t80 + 0x1.a01a02p-16f);  /* angle_kf.py:224 */
     const float t83 = (t82 * t59);  /* angle_kf.py:224 */
-    const float t85 = (t83 + -0x1.6c16c20000000p-10f);  /* angle_kf.py:224 */
+    const float t85 = (t83 + -0x1.6c16c2p-10f);  /* angle_kf.py:224 */
     const float t86 = (t85 * t59);  /* angle_kf.py:224 */
-    const float t88 = (t86 + 0x1.5555560000000p-5f);  /* angle_kf.py:224 */
-    const float t89 = (0x1.0000000000000p-1f * t59);  /* angle_kf.py:224 */
-    const float t91 = (0x1.0000000000000p+0f - t89);  /* angle_kf.py:224 */
+    const float t88 = (t86 + 0x1.555556p-5f);  /* angle_kf.py:224 */
+    const float t89 = (0x1p-1f * t59);  /* angle_kf.py:224 */
+    const float t91 = (0x1p+0f - t89);  /* angle_kf.py:224 */
     const float t92 = (t59 * t59);  /* angle_kf.py:224 */
     const float t93 = (t92 * t88);  /* angle_kf.py:224 */
     const float t94 = (t91 + t93);  /* angle_kf.py:224 */
-    const int t95 = (t58 < 0x1.0000000000000p-1f);  /* angle_kf.py:224 */
-    const int t97 = (t58 < 0x1.8000000000000p+0f);  /* angle_kf.py:224 */
-    const int t99 = (t58 < 0x1.4000000000000p+1f);  /* angle_kf.py:224 */
+    const int t95 = (t58 < 0x1p-1f);  /* angle_kf.py:224 */
+    const int t97 = (t58 < 0x1.8p+0f);  /* angle_kf.py:224 */
+    const int t99 = (t58 < 0x1.4p+1f);  /* angle_kf.py:224 */
     const float t100 = (-t75);  /* angle_kf.py:224 */
     const float t101 = (-t94);  /* angle_kf.py:224 */
     const float t102 = (t99 ? t100 : t101);  /* angle_kf.py:224 */
@@ -165,21 +165,21 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t106 = (t97 ? t100 : t105);  /* angle_kf.py:224 */
     const float t107 = (t95 ? t94 : t106);  /* angle_kf.py:224 */
     const float t110 = (t40 * t40);  /* angle_kf.py:225 */
-    const int t111 = (t40 < 0x1.0000000000000p-1f);  /* angle_kf.py:226 */
-    const float t113 = (t110 * 0x1.a01a020000000p-13f);  /* angle_kf.py:227 */
-    const float t114 = (0x1.1111120000000p-7f - t113);  /* angle_kf.py:227 */
+    const int t111 = (t40 < 0x1p-1f);  /* angle_kf.py:226 */
+    const float t113 = (t110 * 0x1.a01a02p-13f);  /* angle_kf.py:227 */
+    const float t114 = (0x1.111112p-7f - t113);  /* angle_kf.py:227 */
     const float t115 = (t110 * t114);  /* angle_kf.py:227 */
-    const float t117 = (0x1.5555560000000p-3f - t115);  /* angle_kf.py:227 */
+    const float t117 = (0x1.555556p-3f - t115);  /* angle_kf.py:227 */
     const float t118 = (t110 * t117);  /* angle_kf.py:227 */
-    const float t119 = (0x1.0000000000000p+0f - t118);  /* angle_kf.py:227 */
-    const float t121 = (t110 * 0x1.71de3a0000000p-16f);  /* angle_kf.py:228 */
-    const float t123 = (0x1.3813820000000p-10f - t121);  /* angle_kf.py:228 */
+    const float t119 = (0x1p+0f - t118);  /* angle_kf.py:227 */
+    const float t121 = (t110 * 0x1.71de3ap-16f);  /* angle_kf.py:228 */
+    const float t123 = (0x1.381382p-10f - t121);  /* angle_kf.py:228 */
     const float t124 = (t110 * t123);  /* angle_kf.py:228 */
-    const float t126 = (0x1.1111120000000p-5f - t124);  /* angle_kf.py:228 */
+    const float t126 = (0x1.111112p-5f - t124);  /* angle_kf.py:228 */
     const float t127 = (t110 * t126);  /* angle_kf.py:228 */
-    const float t129 = (0x1.5555560000000p-2f - t127);  /* angle_kf.py:228 */
-    const float t130 = ((0x1.0000000000000p-1f < t40) ? t40 : 0x1.0000000000000p-1f);  /* angle_kf.py:229 */
-    const float t131 = (0x1.0000000000000p+0f / t130);  /* angle_kf.py:229 */
+    const float t129 = (0x1.555556p-2f - t127);  /* angle_kf.py:228 */
+    const float t130 = ((0x1p-1f < t40) ? t40 : 0x1p-1f);  /* angle_kf.py:229 */
+    const float t131 = (0x1p+0f / t130);  /* angle_kf.py:229 */
     const float t132 = (t104 * t131);  /* angle_kf.py:230 */
     const float t133 = (t132 - t107);  /* angle_kf.py:231 */
     const float t134 = (t131 * t131);  /* angle_kf.py:231 */
@@ -197,7 +197,7 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t148 = (t147 * t104);  /* angle_kf.py:246 */
     const float t149 = (x_rate * t107);  /* angle_kf.py:246 */
     const float t150 = (t148 + t149);  /* angle_kf.py:246 */
-    const float t151 = (0x1.0000000000000p+0f - t107);  /* angle_kf.py:256 */
+    const float t151 = (0x1p+0f - t107);  /* angle_kf.py:256 */
     const float t152 = (t146 * t36);  /* angle_kf.py:256 */
     const float t153 = (t152 * t104);  /* angle_kf.py:256 */
     const float t154 = (x_rate * t39);  /* angle_kf.py:256 */
@@ -273,8 +273,8 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t224 = (p_q_acc * t36);  /* angle_kf.py:141 */
     const float t225 = (t224 * t36);  /* angle_kf.py:142 */
     const float t226 = (t225 * t36);  /* angle_kf.py:142 */
-    const float t227 = (t226 * 0x1.5555560000000p-2f);  /* angle_kf.py:142 */
-    const float t228 = (t225 * 0x1.0000000000000p-1f);  /* angle_kf.py:142 */
+    const float t227 = (t226 * 0x1.555556p-2f);  /* angle_kf.py:142 */
+    const float t228 = (t225 * 0x1p-1f);  /* angle_kf.py:142 */
     const float t229 = (p_q_center * t36);  /* angle_kf.py:287 */
     const float t230 = (p_q_omega * t36);  /* angle_kf.py:288 */
     const float t231 = (t175 * t107);  /* angle_kf.py:349 */
@@ -303,19 +303,19 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t254 = (t253 + t224);  /* angle_kf.py:351 */
     const float t255 = (x_Pcc + t229);  /* angle_kf.py:351 */
     const float t256 = (x_Pww + t230);  /* angle_kf.py:351 */
-    const float t258 = ((-0x1.99999a0000000p+1f < t145) ? t145 : -0x1.99999a0000000p+1f);  /* angle_kf.py:292 */
-    const float t259 = ((t258 < 0x1.99999a0000000p+1f) ? t258 : 0x1.99999a0000000p+1f);  /* angle_kf.py:292 */
-    const float t261 = ((-0x1.e000000000000p+4f < t150) ? t150 : -0x1.e000000000000p+4f);  /* angle_kf.py:292 */
-    const float t262 = ((t261 < 0x1.e000000000000p+4f) ? t261 : 0x1.e000000000000p+4f);  /* angle_kf.py:292 */
-    const float t263 = ((-0x1.99999a0000000p+1f < x_center) ? x_center : -0x1.99999a0000000p+1f);  /* angle_kf.py:293 */
-    const float t264 = ((t263 < 0x1.99999a0000000p+1f) ? t263 : 0x1.99999a0000000p+1f);  /* angle_kf.py:293 */
-    const float t265 = ((0x1.99999a0000000p-3f < t39) ? t39 : 0x1.99999a0000000p-3f);  /* angle_kf.py:293 */
-    const float t266 = ((t265 < 0x1.e000000000000p+4f) ? t265 : 0x1.e000000000000p+4f);  /* angle_kf.py:293 */
+    const float t258 = ((-0x1.99999ap+1f < t145) ? t145 : -0x1.99999ap+1f);  /* angle_kf.py:292 */
+    const float t259 = ((t258 < 0x1.99999ap+1f) ? t258 : 0x1.99999ap+1f);  /* angle_kf.py:292 */
+    const float t261 = ((-0x1.ep+4f < t150) ? t150 : -0x1.ep+4f);  /* angle_kf.py:292 */
+    const float t262 = ((t261 < 0x1.ep+4f) ? t261 : 0x1.ep+4f);  /* angle_kf.py:292 */
+    const float t263 = ((-0x1.99999ap+1f < x_center) ? x_center : -0x1.99999ap+1f);  /* angle_kf.py:293 */
+    const float t264 = ((t263 < 0x1.99999ap+1f) ? t263 : 0x1.99999ap+1f);  /* angle_kf.py:293 */
+    const float t265 = ((0x1.99999ap-3f < t39) ? t39 : 0x1.99999ap-3f);  /* angle_kf.py:293 */
+    const float t266 = ((t265 < 0x1.ep+4f) ? t265 : 0x1.ep+4f);  /* angle_kf.py:293 */
     const float t267 = (p_sigma_meas * p_sigma_meas);  /* angle_kf.py:354 */
     const float t268 = (t238 + t267);  /* angle_kf.py:154 */
     const float t269 = ((t267 < t268) ? t268 : t267);  /* angle_kf.py:155 */
     const float t270_s = sqrtf(t269);  /* angle_kf.py:155 */
-    const float t270 = (0x1.0000000000000p+0f / t270_s);
+    const float t270 = (0x1p+0f / t270_s);
     const float t271 = (u_angle - t259);  /* angle_kf.py:156 */
     const float t272 = (t271 * t270);  /* angle_kf.py:157 */
     const float t274 = (t238 * t270);  /* angle_kf.py:158 */
@@ -375,14 +375,14 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t332 = (t325 ? u_angle : t331);  /* angle_kf.py:307 */
     const float t333 = (t326 ? t313 : x_omega);  /* angle_kf.py:307 */
     const float t334 = (t325 ? p_omega0 : t333);  /* angle_kf.py:307 */
-    const float t335 = ((-0x1.99999a0000000p+1f < t328) ? t328 : -0x1.99999a0000000p+1f);  /* angle_kf.py:292 */
-    const float t336 = ((t335 < 0x1.99999a0000000p+1f) ? t335 : 0x1.99999a0000000p+1f);  /* angle_kf.py:292 */
-    const float t337 = ((-0x1.e000000000000p+4f < t330) ? t330 : -0x1.e000000000000p+4f);  /* angle_kf.py:292 */
-    const float t338 = ((t337 < 0x1.e000000000000p+4f) ? t337 : 0x1.e000000000000p+4f);  /* angle_kf.py:292 */
-    const float t339 = ((-0x1.99999a0000000p+1f < t332) ? t332 : -0x1.99999a0000000p+1f);  /* angle_kf.py:293 */
-    const float t340 = ((t339 < 0x1.99999a0000000p+1f) ? t339 : 0x1.99999a0000000p+1f);  /* angle_kf.py:293 */
-    const float t341 = ((0x1.99999a0000000p-3f < t334) ? t334 : 0x1.99999a0000000p-3f);  /* angle_kf.py:293 */
-    const float t342 = ((t341 < 0x1.e000000000000p+4f) ? t341 : 0x1.e000000000000p+4f);  /* angle_kf.py:293 */
+    const float t335 = ((-0x1.99999ap+1f < t328) ? t328 : -0x1.99999ap+1f);  /* angle_kf.py:292 */
+    const float t336 = ((t335 < 0x1.99999ap+1f) ? t335 : 0x1.99999ap+1f);  /* angle_kf.py:292 */
+    const float t337 = ((-0x1.ep+4f < t330) ? t330 : -0x1.ep+4f);  /* angle_kf.py:292 */
+    const float t338 = ((t337 < 0x1.ep+4f) ? t337 : 0x1.ep+4f);  /* angle_kf.py:292 */
+    const float t339 = ((-0x1.99999ap+1f < t332) ? t332 : -0x1.99999ap+1f);  /* angle_kf.py:293 */
+    const float t340 = ((t339 < 0x1.99999ap+1f) ? t339 : 0x1.99999ap+1f);  /* angle_kf.py:293 */
+    const float t341 = ((0x1.99999ap-3f < t334) ? t334 : 0x1.99999ap-3f);  /* angle_kf.py:293 */
+    const float t342 = ((t341 < 0x1.ep+4f) ? t341 : 0x1.ep+4f);  /* angle_kf.py:293 */
     const float t343 = (t326 ? t314 : x_Ptt);  /* angle_kf.py:308 */
     const float t344 = (t325 ? t267 : t343);  /* angle_kf.py:308 */
     const float t345 = (t326 ? t315 : x_Ptr);  /* angle_kf.py:308 */
@@ -392,27 +392,27 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t349 = (t326 ? t317 : x_Ptw);  /* angle_kf.py:308 */
     const float t350 = (t325 ? 0.0f : t349);  /* angle_kf.py:308 */
     const float t351 = (t326 ? t318 : x_Prr);  /* angle_kf.py:308 */
-    const float t353 = (t325 ? 0x1.2000000000000p+3f : t351);  /* angle_kf.py:308 */
+    const float t353 = (t325 ? 0x1.2p+3f : t351);  /* angle_kf.py:308 */
     const float t354 = (t326 ? t319 : x_Prc);  /* angle_kf.py:308 */
     const float t355 = (t325 ? 0.0f : t354);  /* angle_kf.py:308 */
     const float t356 = (t326 ? t320 : x_Prw);  /* angle_kf.py:308 */
     const float t357 = (t325 ? 0.0f : t356);  /* angle_kf.py:308 */
     const float t358 = (t326 ? t321 : x_Pcc);  /* angle_kf.py:308 */
-    const float t359 = (t325 ? 0x1.0000000000000p-2f : t358);  /* angle_kf.py:308 */
+    const float t359 = (t325 ? 0x1p-2f : t358);  /* angle_kf.py:308 */
     const float t360 = (t326 ? t322 : x_Pcw);  /* angle_kf.py:308 */
     const float t361 = (t325 ? 0.0f : t360);  /* angle_kf.py:308 */
     const float t362 = (t326 ? t323 : x_Pww);  /* angle_kf.py:308 */
-    const float t364 = (t325 ? 0x1.9000000000000p+4f : t362);  /* angle_kf.py:308 */
+    const float t364 = (t325 ? 0x1.9p+4f : t362);  /* angle_kf.py:308 */
     const int32_t t365 = kf_inc_if(x_rejected, t34);  /* angle_kf.py:310 */
     const int t366 = (x_initialised || t325);  /* angle_kf.py:312 */
     const float t367 = ((0.0f < t344) ? t344 : 0.0f);  /* angle_kf.py:98 */
-    const float t368 = ((t367 < 0x1.0000000000000p-2f) ? t367 : 0x1.0000000000000p-2f);  /* angle_kf.py:98 */
+    const float t368 = ((t367 < 0x1p-2f) ? t367 : 0x1p-2f);  /* angle_kf.py:98 */
     const float t372 = ((0.0f < t353) ? t353 : 0.0f);  /* angle_kf.py:98 */
-    const float t374 = ((t372 < 0x1.0000000000000p+8f) ? t372 : 0x1.0000000000000p+8f);  /* angle_kf.py:98 */
+    const float t374 = ((t372 < 0x1p+8f) ? t372 : 0x1p+8f);  /* angle_kf.py:98 */
     const float t377 = ((0.0f < t359) ? t359 : 0.0f);  /* angle_kf.py:98 */
-    const float t378 = ((t377 < 0x1.0000000000000p-2f) ? t377 : 0x1.0000000000000p-2f);  /* angle_kf.py:98 */
+    const float t378 = ((t377 < 0x1p-2f) ? t377 : 0x1p-2f);  /* angle_kf.py:98 */
     const float t380 = ((0.0f < t364) ? t364 : 0.0f);  /* angle_kf.py:98 */
-    const float t381 = ((t380 < 0x1.0000000000000p+8f) ? t380 : 0x1.0000000000000p+8f);  /* angle_kf.py:98 */
+    const float t381 = ((t380 < 0x1p+8f) ? t380 : 0x1p+8f);  /* angle_kf.py:98 */
     s->theta = t336;
     s->rate = t338;
     s->center = t340;

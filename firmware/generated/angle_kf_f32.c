@@ -23,17 +23,17 @@
 
 void angle_kf_f32_default_params(angle_kf_f32_params *p)
 {
-    p->sigma_meas = 0x1.eb851e0000000p-6f;
-    p->q_acc = 0x1.9000000000000p+6f;
+    p->sigma_meas = 0x1.eb851ep-6f;
+    p->q_acc = 0x1.9p+6f;
 }
 
 int angle_kf_f32_init(angle_kf_f32_state *s, const angle_kf_f32_params *p)
 {
     int status = 0;
-    if (!((p->q_acc >= 0x1.a36e2e0000000p-14f) && (p->q_acc <= 0x1.86a0000000000p+16f))) {
+    if (!((p->q_acc >= 0x1.a36e2ep-14f) && (p->q_acc <= 0x1.86ap+16f))) {
         status = -2;
     }
-    if (!((p->sigma_meas >= 0x1.0624de0000000p-10f) && (p->sigma_meas <= 0x1.0000000000000p+0f))) {
+    if (!((p->sigma_meas >= 0x1.0624dep-10f) && (p->sigma_meas <= 0x1p+0f))) {
         status = -1;
     }
     if (status != 0) {
@@ -45,9 +45,9 @@ int angle_kf_f32_init(angle_kf_f32_state *s, const angle_kf_f32_params *p)
     s->rate = 0.0f;
     s->initialised = 0;
     s->rejected = 0;
-    s->Ptt = 0x1.47ae140000000p-7f;
+    s->Ptt = 0x1.47ae14p-7f;
     s->Ptr = 0.0f;
-    s->Prr = 0x1.9000000000000p+6f;
+    s->Prr = 0x1.9p+6f;
     return status;
 }
 
@@ -66,23 +66,23 @@ void angle_kf_f32_update(angle_kf_f32_state *s, const kf_angle_input_f32 *in, an
     const float x_Ptr = s->Ptr;
     const float x_Prr = s->Prr;
     const float t12 = fabsf(u_angle);  /* angle_kf.py:132 */
-    const int t14 = (t12 <= 0x1.99999a0000000p+1f);  /* angle_kf.py:132 */
+    const int t14 = (t12 <= 0x1.99999ap+1f);  /* angle_kf.py:132 */
     const int t16 = (0.0f < u_dt);  /* angle_kf.py:132 */
-    const int t18 = (u_dt <= 0x1.99999a0000000p-3f);  /* angle_kf.py:132 */
+    const int t18 = (u_dt <= 0x1.99999ap-3f);  /* angle_kf.py:132 */
     const int t19 = (t14 && t16);  /* angle_kf.py:132 */
     const int t20 = (t19 && t18);  /* angle_kf.py:132 */
     const int t21 = (t20 && u_angle_valid);  /* angle_kf.py:134 */
     const int t22 = (!t20);  /* angle_kf.py:135 */
     const float t23 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* angle_kf.py:136 */
-    const float t24 = ((t23 < 0x1.99999a0000000p-3f) ? t23 : 0x1.99999a0000000p-3f);  /* angle_kf.py:136 */
+    const float t24 = ((t23 < 0x1.99999ap-3f) ? t23 : 0x1.99999ap-3f);  /* angle_kf.py:136 */
     const float t25 = (x_rate * t24);  /* angle_kf.py:189 */
     const float t26 = (x_theta + t25);  /* angle_kf.py:189 */
     const float t27 = (p_q_acc * t24);  /* angle_kf.py:141 */
     const float t28 = (t27 * t24);  /* angle_kf.py:142 */
     const float t29 = (t28 * t24);  /* angle_kf.py:142 */
-    const float t31 = (t29 * 0x1.5555560000000p-2f);  /* angle_kf.py:142 */
-    const float t33 = (t28 * 0x1.0000000000000p-1f);  /* angle_kf.py:142 */
-    const float t35 = (0x1.0000000000000p+1f * t24);  /* angle_kf.py:191 */
+    const float t31 = (t29 * 0x1.555556p-2f);  /* angle_kf.py:142 */
+    const float t33 = (t28 * 0x1p-1f);  /* angle_kf.py:142 */
+    const float t35 = (0x1p+1f * t24);  /* angle_kf.py:191 */
     const float t36 = (t35 * x_Ptr);  /* angle_kf.py:191 */
     const float t37 = (x_Ptt + t36);  /* angle_kf.py:191 */
     const float t38 = (t24 * t24);  /* angle_kf.py:191 */
@@ -93,13 +93,13 @@ void angle_kf_f32_update(angle_kf_f32_state *s, const kf_angle_input_f32 *in, an
     const float t43 = (x_Ptr + t42);  /* angle_kf.py:192 */
     const float t44 = (t43 + t33);  /* angle_kf.py:192 */
     const float t45 = (x_Prr + t27);  /* angle_kf.py:193 */
-    const float t47 = ((-0x1.99999a0000000p+1f < t26) ? t26 : -0x1.99999a0000000p+1f);  /* angle_kf.py:195 */
-    const float t48 = ((t47 < 0x1.99999a0000000p+1f) ? t47 : 0x1.99999a0000000p+1f);  /* angle_kf.py:195 */
+    const float t47 = ((-0x1.99999ap+1f < t26) ? t26 : -0x1.99999ap+1f);  /* angle_kf.py:195 */
+    const float t48 = ((t47 < 0x1.99999ap+1f) ? t47 : 0x1.99999ap+1f);  /* angle_kf.py:195 */
     const float t49 = (p_sigma_meas * p_sigma_meas);  /* angle_kf.py:196 */
     const float t50 = (t41 + t49);  /* angle_kf.py:154 */
     const float t51 = ((t49 < t50) ? t50 : t49);  /* angle_kf.py:155 */
     const float t52_s = sqrtf(t51);  /* angle_kf.py:155 */
-    const float t52 = (0x1.0000000000000p+0f / t52_s);
+    const float t52 = (0x1p+0f / t52_s);
     const float t53 = (u_angle - t48);  /* angle_kf.py:156 */
     const float t54 = (t53 * t52);  /* angle_kf.py:157 */
     const float t56 = (t41 * t52);  /* angle_kf.py:158 */
@@ -131,17 +131,17 @@ void angle_kf_f32_update(angle_kf_f32_state *s, const kf_angle_input_f32 *in, an
     const float t84 = (t77 ? t73 : x_Ptr);  /* angle_kf.py:206 */
     const float t85 = (t76 ? 0.0f : t84);  /* angle_kf.py:206 */
     const float t86 = (t77 ? t74 : x_Prr);  /* angle_kf.py:206 */
-    const float t88 = (t76 ? 0x1.9000000000000p+6f : t86);  /* angle_kf.py:206 */
-    const float t89 = ((-0x1.99999a0000000p+1f < t79) ? t79 : -0x1.99999a0000000p+1f);  /* angle_kf.py:208 */
-    const float t90 = ((t89 < 0x1.99999a0000000p+1f) ? t89 : 0x1.99999a0000000p+1f);  /* angle_kf.py:208 */
-    const float t92 = ((-0x1.e000000000000p+4f < t81) ? t81 : -0x1.e000000000000p+4f);  /* angle_kf.py:209 */
-    const float t94 = ((t92 < 0x1.e000000000000p+4f) ? t92 : 0x1.e000000000000p+4f);  /* angle_kf.py:209 */
+    const float t88 = (t76 ? 0x1.9p+6f : t86);  /* angle_kf.py:206 */
+    const float t89 = ((-0x1.99999ap+1f < t79) ? t79 : -0x1.99999ap+1f);  /* angle_kf.py:208 */
+    const float t90 = ((t89 < 0x1.99999ap+1f) ? t89 : 0x1.99999ap+1f);  /* angle_kf.py:208 */
+    const float t92 = ((-0x1.ep+4f < t81) ? t81 : -0x1.ep+4f);  /* angle_kf.py:209 */
+    const float t94 = ((t92 < 0x1.ep+4f) ? t92 : 0x1.ep+4f);  /* angle_kf.py:209 */
     const int32_t t95 = kf_inc_if(x_rejected, t22);  /* angle_kf.py:210 */
     const int t96 = (x_initialised || t76);  /* angle_kf.py:211 */
     const float t97 = ((0.0f < t83) ? t83 : 0.0f);  /* angle_kf.py:98 */
-    const float t99 = ((t97 < 0x1.0000000000000p-2f) ? t97 : 0x1.0000000000000p-2f);  /* angle_kf.py:98 */
+    const float t99 = ((t97 < 0x1p-2f) ? t97 : 0x1p-2f);  /* angle_kf.py:98 */
     const float t101 = ((0.0f < t88) ? t88 : 0.0f);  /* angle_kf.py:98 */
-    const float t103 = ((t101 < 0x1.0000000000000p+8f) ? t101 : 0x1.0000000000000p+8f);  /* angle_kf.py:98 */
+    const float t103 = ((t101 < 0x1p+8f) ? t101 : 0x1p+8f);  /* angle_kf.py:98 */
     s->theta = t90;
     s->rate = t94;
     s->initialised = (uint8_t)(t96 ? 1u : 0u);

@@ -23,13 +23,13 @@
 
 void ecompass_f32_default_params(ecompass_f32_params *p)
 {
-    p->min_angle_deg = 0x1.4000000000000p+2f;
+    p->min_angle_deg = 0x1.4p+2f;
 }
 
 int ecompass_f32_init(ecompass_f32_state *s, const ecompass_f32_params *p)
 {
     int status = 0;
-    if (!((p->min_angle_deg >= 0x1.0000000000000p-1f) && (p->min_angle_deg <= 0x1.6800000000000p+5f))) {
+    if (!((p->min_angle_deg >= 0x1p-1f) && (p->min_angle_deg <= 0x1.68p+5f))) {
         status = -1;
     }
     if (status != 0) {
@@ -37,7 +37,7 @@ int ecompass_f32_init(ecompass_f32_state *s, const ecompass_f32_params *p)
     } else {
         s->params = *p;
     }
-    s->q[0] = 0x1.0000000000000p+0f;
+    s->q[0] = 0x1p+0f;
     s->q[1] = 0.0f;
     s->q[2] = 0.0f;
     s->q[3] = 0.0f;
@@ -67,32 +67,32 @@ void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecom
     const int x_valid = (s->valid != 0u);
     const int32_t x_rejected = s->rejected;
     const float t20 = fabsf(u_gyr0);  /* common.py:50 */
-    const int t22 = (t20 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t22 = (t20 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t23 = fabsf(u_gyr1);  /* common.py:50 */
-    const int t24 = (t23 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t24 = (t23 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t25 = fabsf(u_gyr2);  /* common.py:50 */
-    const int t26 = (t25 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t26 = (t25 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t27 = (t22 && t24);  /* common.py:50 */
     const int t28 = (t27 && t26);  /* common.py:50 */
     const float t29 = fabsf(u_acc0);  /* common.py:50 */
-    const int t31 = (t29 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t31 = (t29 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t32 = fabsf(u_acc1);  /* common.py:50 */
-    const int t33 = (t32 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t33 = (t32 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t34 = fabsf(u_acc2);  /* common.py:50 */
-    const int t35 = (t34 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t35 = (t34 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t36 = (t31 && t33);  /* common.py:50 */
     const int t37 = (t36 && t35);  /* common.py:50 */
     const int t38 = (0.0f < u_dt);  /* common.py:64 */
-    const int t39 = (u_dt <= 0x1.0000000000000p+0f);  /* common.py:64 */
+    const int t39 = (u_dt <= 0x1p+0f);  /* common.py:64 */
     const int t40 = (t28 && t37);  /* common.py:63 */
     const int t41 = (t40 && t38);  /* common.py:63 */
     const int t42 = (t41 && t39);  /* common.py:63 */
     const float t43 = fabsf(u_mag0);  /* common.py:50 */
-    const int t45 = (t43 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t45 = (t43 <= 0x1.324p+12f);  /* common.py:50 */
     const float t46 = fabsf(u_mag1);  /* common.py:50 */
-    const int t47 = (t46 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t47 = (t46 <= 0x1.324p+12f);  /* common.py:50 */
     const float t48 = fabsf(u_mag2);  /* common.py:50 */
-    const int t49 = (t48 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t49 = (t48 <= 0x1.324p+12f);  /* common.py:50 */
     const int t50 = (t45 && t47);  /* common.py:50 */
     const int t51 = (t50 && t49);  /* common.py:50 */
     const int t52 = (t42 && u_mag_valid);  /* common.py:67 */
@@ -107,9 +107,9 @@ void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecom
     const float t61 = (t59 + t60);  /* ecompass.py:50 */
     const float t62 = (u_acc2 * u_acc2);  /* ecompass.py:50 */
     const float t63 = (t61 + t62);  /* ecompass.py:50 */
-    const float t64_m = ((0x1.0c6f7a0000000p-20f < t63) ? t63 : 0x1.0c6f7a0000000p-20f);  /* ecompass.py:50 */
+    const float t64_m = ((0x1.0c6f7ap-20f < t63) ? t63 : 0x1.0c6f7ap-20f);  /* ecompass.py:50 */
     const float t64_s = sqrtf(t64_m);
-    const float t64 = (0x1.0000000000000p+0f / t64_s);
+    const float t64 = (0x1p+0f / t64_s);
     const float t65 = (u_acc0 * t64);  /* ecompass.py:50 */
     const float t67 = (u_acc1 * t64);  /* ecompass.py:50 */
     const float t69 = (u_acc2 * t64);  /* ecompass.py:50 */
@@ -118,23 +118,23 @@ void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecom
     const float t73 = (t71 + t72);  /* ecompass.py:51 */
     const float t74 = (u_mag2 * u_mag2);  /* ecompass.py:51 */
     const float t75 = (t73 + t74);  /* ecompass.py:51 */
-    const float t76_m = ((0x1.0c6f7a0000000p-20f < t75) ? t75 : 0x1.0c6f7a0000000p-20f);  /* ecompass.py:51 */
+    const float t76_m = ((0x1.0c6f7ap-20f < t75) ? t75 : 0x1.0c6f7ap-20f);  /* ecompass.py:51 */
     const float t76_s = sqrtf(t76_m);
-    const float t76 = (0x1.0000000000000p+0f / t76_s);
+    const float t76 = (0x1p+0f / t76_s);
     const float t77 = (u_mag0 * t76);  /* ecompass.py:51 */
     const float t79 = (u_mag1 * t76);  /* ecompass.py:51 */
     const float t81 = (u_mag2 * t76);  /* ecompass.py:51 */
     const int t83 = (0.0f <= t69);  /* algebraic.py:52 */
-    const float t84 = (0x1.0000000000000p+0f + t69);  /* algebraic.py:53 */
-    const float t86 = (0x1.0000000000000p-1f * t84);  /* algebraic.py:53 */
-    const float t87 = ((0x1.0000000000000p-1f < t86) ? t86 : 0x1.0000000000000p-1f);  /* algebraic.py:53 */
+    const float t84 = (0x1p+0f + t69);  /* algebraic.py:53 */
+    const float t86 = (0x1p-1f * t84);  /* algebraic.py:53 */
+    const float t87 = ((0x1p-1f < t86) ? t86 : 0x1p-1f);  /* algebraic.py:53 */
     const float t88 = sqrtf(t87);  /* algebraic.py:53 */
-    const float t89 = (0x1.0000000000000p+0f - t69);  /* algebraic.py:54 */
-    const float t90 = (0x1.0000000000000p-1f * t89);  /* algebraic.py:54 */
-    const float t91 = ((0x1.0000000000000p-1f < t90) ? t90 : 0x1.0000000000000p-1f);  /* algebraic.py:54 */
+    const float t89 = (0x1p+0f - t69);  /* algebraic.py:54 */
+    const float t90 = (0x1p-1f * t89);  /* algebraic.py:54 */
+    const float t91 = ((0x1p-1f < t90) ? t90 : 0x1p-1f);  /* algebraic.py:54 */
     const float t92 = sqrtf(t91);  /* algebraic.py:54 */
-    const float t93 = (0x1.0000000000000p-1f / t88);  /* algebraic.py:55 */
-    const float t94 = (0x1.0000000000000p-1f / t92);  /* algebraic.py:56 */
+    const float t93 = (0x1p-1f / t88);  /* algebraic.py:55 */
+    const float t94 = (0x1p-1f / t92);  /* algebraic.py:56 */
     const float t95 = (t67 * t93);  /* algebraic.py:57 */
     const float t97 = (-t65);  /* algebraic.py:57 */
     const float t98 = (t97 * t93);  /* algebraic.py:57 */
@@ -149,15 +149,15 @@ void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecom
     const float t110 = (t108 * t81);  /* algebraic.py:104 */
     const float t111 = (t109 * t79);  /* algebraic.py:104 */
     const float t112 = (t110 - t111);  /* algebraic.py:104 */
-    const float t114 = (0x1.0000000000000p+1f * t112);  /* algebraic.py:104 */
+    const float t114 = (0x1p+1f * t112);  /* algebraic.py:104 */
     const float t115 = (t109 * t77);  /* algebraic.py:104 */
     const float t116 = (t107 * t81);  /* algebraic.py:104 */
     const float t117 = (t115 - t116);  /* algebraic.py:104 */
-    const float t118 = (0x1.0000000000000p+1f * t117);  /* algebraic.py:104 */
+    const float t118 = (0x1p+1f * t117);  /* algebraic.py:104 */
     const float t119 = (t107 * t79);  /* algebraic.py:104 */
     const float t120 = (t108 * t77);  /* algebraic.py:104 */
     const float t121 = (t119 - t120);  /* algebraic.py:104 */
-    const float t122 = (0x1.0000000000000p+1f * t121);  /* algebraic.py:104 */
+    const float t122 = (0x1p+1f * t121);  /* algebraic.py:104 */
     const float t123 = (t106 * t114);  /* algebraic.py:104 */
     const float t124 = (t77 + t123);  /* algebraic.py:104 */
     const float t125 = (t108 * t122);  /* algebraic.py:104 */
@@ -173,28 +173,28 @@ void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecom
     const float t137 = (t128 * t128);  /* algebraic.py:84 */
     const float t138 = (t134 * t134);  /* algebraic.py:84 */
     const float t139 = (t137 + t138);  /* algebraic.py:84 */
-    const float t140_m = ((0x1.a36e2e0000000p-14f < t139) ? t139 : 0x1.a36e2e0000000p-14f);  /* algebraic.py:84 */
+    const float t140_m = ((0x1.a36e2ep-14f < t139) ? t139 : 0x1.a36e2ep-14f);  /* algebraic.py:84 */
     const float t140_s = sqrtf(t140_m);
-    const float t140 = (0x1.0000000000000p+0f / t140_s);
+    const float t140 = (0x1p+0f / t140_s);
     const float t141 = (t128 * t140);  /* algebraic.py:85 */
     const float t143 = (t134 * t140);  /* algebraic.py:86 */
     const int t145 = (0.0f <= t143);  /* algebraic.py:87 */
-    const float t146 = (0x1.0000000000000p+0f + t143);  /* algebraic.py:88 */
-    const float t147 = (0x1.0000000000000p-1f * t146);  /* algebraic.py:88 */
-    const float t148 = ((0x1.0000000000000p-1f < t147) ? t147 : 0x1.0000000000000p-1f);  /* algebraic.py:88 */
+    const float t146 = (0x1p+0f + t143);  /* algebraic.py:88 */
+    const float t147 = (0x1p-1f * t146);  /* algebraic.py:88 */
+    const float t148 = ((0x1p-1f < t147) ? t147 : 0x1p-1f);  /* algebraic.py:88 */
     const float t149 = sqrtf(t148);  /* algebraic.py:88 */
-    const float t150 = (0x1.0000000000000p+0f - t143);  /* algebraic.py:89 */
-    const float t151 = (0x1.0000000000000p-1f * t150);  /* algebraic.py:89 */
-    const float t152 = ((0x1.0000000000000p-1f < t151) ? t151 : 0x1.0000000000000p-1f);  /* algebraic.py:89 */
+    const float t150 = (0x1p+0f - t143);  /* algebraic.py:89 */
+    const float t151 = (0x1p-1f * t150);  /* algebraic.py:89 */
+    const float t152 = ((0x1p-1f < t151) ? t151 : 0x1p-1f);  /* algebraic.py:89 */
     const float t153 = sqrtf(t152);  /* algebraic.py:89 */
-    const float t154 = (0x1.0000000000000p-1f / t149);  /* algebraic.py:90 */
+    const float t154 = (0x1p-1f / t149);  /* algebraic.py:90 */
     const float t155 = (t141 * t154);  /* algebraic.py:90 */
-    const float t157 = (0x1.0000000000000p-1f / t153);  /* algebraic.py:91 */
+    const float t157 = (0x1p-1f / t153);  /* algebraic.py:91 */
     const float t158 = (t141 * t157);  /* algebraic.py:91 */
     const float t160 = (t145 ? t149 : t158);  /* algebraic.py:92 */
     const float t161 = (t145 ? t155 : t153);  /* algebraic.py:92 */
-    const int t163 = (0x1.a36e2e0000000p-14f < t139);  /* algebraic.py:93 */
-    const float t164 = (t163 ? t160 : 0x1.0000000000000p+0f);  /* algebraic.py:94 */
+    const int t163 = (0x1.a36e2ep-14f < t139);  /* algebraic.py:93 */
+    const float t164 = (t163 ? t160 : 0x1p+0f);  /* algebraic.py:94 */
     const float t165 = (t163 ? t161 : 0.0f);  /* algebraic.py:94 */
     const float t166 = (t164 * t106);  /* algebraic.py:107 */
     const float t167 = (0.0f * t107);  /* algebraic.py:107 */
@@ -220,59 +220,59 @@ void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecom
     const float t187 = (t186 - t167);  /* algebraic.py:107 */
     const float t188 = (t165 * t106);  /* algebraic.py:107 */
     const float t189 = (t187 + t188);  /* algebraic.py:107 */
-    const float t191 = (p_min_angle_deg * 0x1.1df46a0000000p-6f);  /* ecompass.py:54 */
-    const float t193 = (t191 * 0x1.45f3060000000p-1f);  /* ecompass.py:54 */
-    const float t194 = (t193 + 0x1.0000000000000p-1f);  /* ecompass.py:54 */
-    const float t195_a = ((-0x1.0000000000000p+30f < t194) ? t194 : -0x1.0000000000000p+30f);  /* ecompass.py:54 */
-    const float t195_b = ((t195_a < 0x1.0000000000000p+30f) ? t195_a : 0x1.0000000000000p+30f);
+    const float t191 = (p_min_angle_deg * 0x1.1df46ap-6f);  /* ecompass.py:54 */
+    const float t193 = (t191 * 0x1.45f306p-1f);  /* ecompass.py:54 */
+    const float t194 = (t193 + 0x1p-1f);  /* ecompass.py:54 */
+    const float t195_a = ((-0x1p+30f < t194) ? t194 : -0x1p+30f);  /* ecompass.py:54 */
+    const float t195_b = ((t195_a < 0x1p+30f) ? t195_a : 0x1p+30f);
     const float t195_i = ((float)((int32_t)t195_b));
-    const float t195 = ((t195_b < t195_i) ? (t195_i - 0x1.0000000000000p+0f) : t195_i);
-    const float t197 = (t195 * 0x1.9200000000000p+0f);  /* ecompass.py:54 */
+    const float t195 = ((t195_b < t195_i) ? (t195_i - 0x1p+0f) : t195_i);
+    const float t197 = (t195 * 0x1.92p+0f);  /* ecompass.py:54 */
     const float t198 = (t191 - t197);  /* ecompass.py:54 */
-    const float t200 = (t195 * 0x1.fb54440000000p-12f);  /* ecompass.py:54 */
+    const float t200 = (t195 * 0x1.fb5444p-12f);  /* ecompass.py:54 */
     const float t201 = (t198 - t200);  /* ecompass.py:54 */
-    const float t204 = (t195 * 0x1.0000000000000p-2f);  /* ecompass.py:54 */
-    const float t205_a = ((-0x1.0000000000000p+30f < t204) ? t204 : -0x1.0000000000000p+30f);  /* ecompass.py:54 */
-    const float t205_b = ((t205_a < 0x1.0000000000000p+30f) ? t205_a : 0x1.0000000000000p+30f);
+    const float t204 = (t195 * 0x1p-2f);  /* ecompass.py:54 */
+    const float t205_a = ((-0x1p+30f < t204) ? t204 : -0x1p+30f);  /* ecompass.py:54 */
+    const float t205_b = ((t205_a < 0x1p+30f) ? t205_a : 0x1p+30f);
     const float t205_i = ((float)((int32_t)t205_b));
-    const float t205 = ((t205_b < t205_i) ? (t205_i - 0x1.0000000000000p+0f) : t205_i);
-    const float t207 = (0x1.0000000000000p+2f * t205);  /* ecompass.py:54 */
+    const float t205 = ((t205_b < t205_i) ? (t205_i - 0x1p+0f) : t205_i);
+    const float t207 = (0x1p+2f * t205);  /* ecompass.py:54 */
     const float t208 = (t195 - t207);  /* ecompass.py:54 */
     const float t209 = (t201 * t201);  /* ecompass.py:54 */
-    const float t211 = (-0x1.ae64560000000p-26f * t209);  /* ecompass.py:54 */
-    const float t213 = (t211 + 0x1.71de3a0000000p-19f);  /* ecompass.py:54 */
+    const float t211 = (-0x1.ae6456p-26f * t209);  /* ecompass.py:54 */
+    const float t213 = (t211 + 0x1.71de3ap-19f);  /* ecompass.py:54 */
     const float t214 = (t213 * t209);  /* ecompass.py:54 */
-    const float t216 = (t214 + -0x1.a01a020000000p-13f);  /* ecompass.py:54 */
+    const float t216 = (t214 + -0x1.a01a02p-13f);  /* ecompass.py:54 */
     const float t217 = (t216 * t209);  /* ecompass.py:54 */
-    const float t219 = (t217 + 0x1.1111120000000p-7f);  /* ecompass.py:54 */
+    const float t219 = (t217 + 0x1.111112p-7f);  /* ecompass.py:54 */
     const float t220 = (t219 * t209);  /* ecompass.py:54 */
-    const float t222 = (t220 + -0x1.5555560000000p-3f);  /* ecompass.py:54 */
+    const float t222 = (t220 + -0x1.555556p-3f);  /* ecompass.py:54 */
     const float t223 = (t201 * t209);  /* ecompass.py:54 */
     const float t224 = (t223 * t222);  /* ecompass.py:54 */
     const float t225 = (t201 + t224);  /* ecompass.py:54 */
-    const float t227 = (0x1.1eed8e0000000p-29f * t209);  /* ecompass.py:54 */
-    const float t229 = (t227 + -0x1.27e4fc0000000p-22f);  /* ecompass.py:54 */
+    const float t227 = (0x1.1eed8ep-29f * t209);  /* ecompass.py:54 */
+    const float t229 = (t227 + -0x1.27e4fcp-22f);  /* ecompass.py:54 */
     const float t230 = (t229 * t209);  /* ecompass.py:54 */
-    const float t232 = (t230 + 0x1.a01a020000000p-16f);  /* ecompass.py:54 */
+    const float t232 = (t230 + 0x1.a01a02p-16f);  /* ecompass.py:54 */
     const float t233 = (t232 * t209);  /* ecompass.py:54 */
-    const float t235 = (t233 + -0x1.6c16c20000000p-10f);  /* ecompass.py:54 */
+    const float t235 = (t233 + -0x1.6c16c2p-10f);  /* ecompass.py:54 */
     const float t236 = (t235 * t209);  /* ecompass.py:54 */
-    const float t238 = (t236 + 0x1.5555560000000p-5f);  /* ecompass.py:54 */
-    const float t239 = (0x1.0000000000000p-1f * t209);  /* ecompass.py:54 */
-    const float t240 = (0x1.0000000000000p+0f - t239);  /* ecompass.py:54 */
+    const float t238 = (t236 + 0x1.555556p-5f);  /* ecompass.py:54 */
+    const float t239 = (0x1p-1f * t209);  /* ecompass.py:54 */
+    const float t240 = (0x1p+0f - t239);  /* ecompass.py:54 */
     const float t241 = (t209 * t209);  /* ecompass.py:54 */
     const float t242 = (t241 * t238);  /* ecompass.py:54 */
     const float t243 = (t240 + t242);  /* ecompass.py:54 */
-    const int t244 = (t208 < 0x1.0000000000000p-1f);  /* ecompass.py:54 */
-    const int t246 = (t208 < 0x1.8000000000000p+0f);  /* ecompass.py:54 */
-    const int t248 = (t208 < 0x1.4000000000000p+1f);  /* ecompass.py:54 */
+    const int t244 = (t208 < 0x1p-1f);  /* ecompass.py:54 */
+    const int t246 = (t208 < 0x1.8p+0f);  /* ecompass.py:54 */
+    const int t248 = (t208 < 0x1.4p+1f);  /* ecompass.py:54 */
     const float t249 = (-t225);  /* ecompass.py:54 */
     const float t250 = (-t243);  /* ecompass.py:54 */
     const float t251 = (t248 ? t249 : t250);  /* ecompass.py:54 */
     const float t252 = (t246 ? t243 : t251);  /* ecompass.py:54 */
     const float t253 = (t244 ? t225 : t252);  /* ecompass.py:54 */
-    const int t255 = (0x1.0000000000000p+0f <= t63);  /* ecompass.py:55 */
-    const int t256 = (0x1.0000000000000p+0f <= t75);  /* ecompass.py:55 */
+    const int t255 = (0x1p+0f <= t63);  /* ecompass.py:55 */
+    const int t256 = (0x1p+0f <= t75);  /* ecompass.py:55 */
     const float t257 = (t253 * t253);  /* ecompass.py:55 */
     const int t258 = (t257 <= t139);  /* ecompass.py:55 */
     const int t259 = (t53 && t255);  /* ecompass.py:55 */

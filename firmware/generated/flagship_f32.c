@@ -23,109 +23,109 @@
 
 void flagship_f32_default_params(flagship_f32_params *p)
 {
-    p->mode = 0x1.0000000000000p+0f;
-    p->tau_acc = 0x1.8000000000000p+1f;
-    p->tau_mag = 0x1.2000000000000p+3f;
-    p->heading_rw = 0x1.c987100000000p-9f;
-    p->tau_bias = 0x1.4000000000000p+5f;
-    p->bias_sigma_init = 0x1.1df46a0000000p-7f;
-    p->bias_forget_time = 0x1.f400000000000p+9f;
-    p->bias_sigma_rest = 0x1.12843c0000000p-11f;
-    p->bias_max = 0x1.1df46a0000000p-5f;
-    p->rest_th_gyr = 0x1.1df46a0000000p-5f;
-    p->rest_th_acc = 0x1.0000000000000p-1f;
-    p->rest_time = 0x1.8000000000000p+0f;
-    p->tau_rest = 0x1.0000000000000p-1f;
-    p->tau_mag_noise = 0x1.99999a0000000p-5f;
-    p->mag_th = 0x1.99999a0000000p-4f;
-    p->mag_dip_th = 0x1.63a1a80000000p-3f;
-    p->mag_gate = 0x1.0000000000000p+2f;
-    p->mag_sigma_gate = 0x1.6571840000000p-3f;
-    p->tau_mag_ref = 0x1.4000000000000p+4f;
-    p->mag_new_time = 0x1.4000000000000p+4f;
-    p->mag_new_min_rate = 0x1.6571840000000p-2f;
-    p->mag_reject_time = 0x1.e000000000000p+5f;
-    p->mag_min_undisturbed = 0x1.0000000000000p-1f;
-    p->gyr_range = 0x1.1740b00000000p+5f;
-    p->acc_range = 0x1.39d0140000000p+7f;
+    p->mode = 0x1p+0f;
+    p->tau_acc = 0x1.8p+1f;
+    p->tau_mag = 0x1.2p+3f;
+    p->heading_rw = 0x1.c9871p-9f;
+    p->tau_bias = 0x1.4p+5f;
+    p->bias_sigma_init = 0x1.1df46ap-7f;
+    p->bias_forget_time = 0x1.f4p+9f;
+    p->bias_sigma_rest = 0x1.12843cp-11f;
+    p->bias_max = 0x1.1df46ap-5f;
+    p->rest_th_gyr = 0x1.1df46ap-5f;
+    p->rest_th_acc = 0x1p-1f;
+    p->rest_time = 0x1.8p+0f;
+    p->tau_rest = 0x1p-1f;
+    p->tau_mag_noise = 0x1.99999ap-5f;
+    p->mag_th = 0x1.99999ap-4f;
+    p->mag_dip_th = 0x1.63a1a8p-3f;
+    p->mag_gate = 0x1p+2f;
+    p->mag_sigma_gate = 0x1.657184p-3f;
+    p->tau_mag_ref = 0x1.4p+4f;
+    p->mag_new_time = 0x1.4p+4f;
+    p->mag_new_min_rate = 0x1.657184p-2f;
+    p->mag_reject_time = 0x1.ep+5f;
+    p->mag_min_undisturbed = 0x1p-1f;
+    p->gyr_range = 0x1.1740bp+5f;
+    p->acc_range = 0x1.39d014p+7f;
 }
 
 int flagship_f32_init(flagship_f32_state *s, const flagship_f32_params *p)
 {
     int status = 0;
-    if (!((p->acc_range >= 0x1.0000000000000p+0f) && (p->acc_range <= 0x1.39d0140000000p+7f))) {
+    if (!((p->acc_range >= 0x1p+0f) && (p->acc_range <= 0x1.39d014p+7f))) {
         status = -25;
     }
-    if (!((p->gyr_range >= 0x1.99999a0000000p-4f) && (p->gyr_range <= 0x1.1740b00000000p+5f))) {
+    if (!((p->gyr_range >= 0x1.99999ap-4f) && (p->gyr_range <= 0x1.1740bp+5f))) {
         status = -24;
     }
-    if (!((p->mag_min_undisturbed >= 0.0f) && (p->mag_min_undisturbed <= 0x1.4000000000000p+3f))) {
+    if (!((p->mag_min_undisturbed >= 0.0f) && (p->mag_min_undisturbed <= 0x1.4p+3f))) {
         status = -23;
     }
-    if (!((p->mag_reject_time >= 0x1.0000000000000p+0f) && (p->mag_reject_time <= 0x1.c200000000000p+11f))) {
+    if (!((p->mag_reject_time >= 0x1p+0f) && (p->mag_reject_time <= 0x1.c2p+11f))) {
         status = -22;
     }
-    if (!((p->mag_new_min_rate >= 0.0f) && (p->mag_new_min_rate <= 0x1.921fb60000000p+2f))) {
+    if (!((p->mag_new_min_rate >= 0.0f) && (p->mag_new_min_rate <= 0x1.921fb6p+2f))) {
         status = -21;
     }
-    if (!((p->mag_new_time >= 0x1.0000000000000p+0f) && (p->mag_new_time <= 0x1.2c00000000000p+9f))) {
+    if (!((p->mag_new_time >= 0x1p+0f) && (p->mag_new_time <= 0x1.2cp+9f))) {
         status = -20;
     }
-    if (!((p->tau_mag_ref >= 0x1.0000000000000p+0f) && (p->tau_mag_ref <= 0x1.2c00000000000p+9f))) {
+    if (!((p->tau_mag_ref >= 0x1p+0f) && (p->tau_mag_ref <= 0x1.2cp+9f))) {
         status = -19;
     }
-    if (!((p->mag_sigma_gate >= 0x1.c987100000000p-10f) && (p->mag_sigma_gate <= 0x1.921fb60000000p+0f))) {
+    if (!((p->mag_sigma_gate >= 0x1.c9871p-10f) && (p->mag_sigma_gate <= 0x1.921fb6p+0f))) {
         status = -18;
     }
-    if (!((p->mag_gate >= 0x1.0000000000000p+0f) && (p->mag_gate <= 0x1.9000000000000p+6f))) {
+    if (!((p->mag_gate >= 0x1p+0f) && (p->mag_gate <= 0x1.9p+6f))) {
         status = -17;
     }
-    if (!((p->mag_dip_th >= 0x1.47ae140000000p-7f) && (p->mag_dip_th <= 0x1.0000000000000p+0f))) {
+    if (!((p->mag_dip_th >= 0x1.47ae14p-7f) && (p->mag_dip_th <= 0x1p+0f))) {
         status = -16;
     }
-    if (!((p->mag_th >= 0x1.47ae140000000p-7f) && (p->mag_th <= 0x1.0000000000000p+0f))) {
+    if (!((p->mag_th >= 0x1.47ae14p-7f) && (p->mag_th <= 0x1p+0f))) {
         status = -15;
     }
-    if (!((p->tau_mag_noise >= 0x1.0624de0000000p-10f) && (p->tau_mag_noise <= 0x1.4000000000000p+2f))) {
+    if (!((p->tau_mag_noise >= 0x1.0624dep-10f) && (p->tau_mag_noise <= 0x1.4p+2f))) {
         status = -14;
     }
-    if (!((p->tau_rest >= 0x1.99999a0000000p-5f) && (p->tau_rest <= 0x1.4000000000000p+2f))) {
+    if (!((p->tau_rest >= 0x1.99999ap-5f) && (p->tau_rest <= 0x1.4p+2f))) {
         status = -13;
     }
-    if (!((p->rest_time >= 0x1.99999a0000000p-4f) && (p->rest_time <= 0x1.e000000000000p+4f))) {
+    if (!((p->rest_time >= 0x1.99999ap-4f) && (p->rest_time <= 0x1.ep+4f))) {
         status = -12;
     }
-    if (!((p->rest_th_acc >= 0x1.99999a0000000p-5f) && (p->rest_th_acc <= 0x1.4000000000000p+2f))) {
+    if (!((p->rest_th_acc >= 0x1.99999ap-5f) && (p->rest_th_acc <= 0x1.4p+2f))) {
         status = -11;
     }
-    if (!((p->rest_th_gyr >= 0x1.c987100000000p-10f) && (p->rest_th_gyr <= 0x1.6571840000000p-2f))) {
+    if (!((p->rest_th_gyr >= 0x1.c9871p-10f) && (p->rest_th_gyr <= 0x1.657184p-2f))) {
         status = -10;
     }
-    if (!((p->bias_max >= 0x1.c987100000000p-10f) && (p->bias_max <= 0x1.6571840000000p-3f))) {
+    if (!((p->bias_max >= 0x1.c9871p-10f) && (p->bias_max <= 0x1.657184p-3f))) {
         status = -9;
     }
-    if (!((p->bias_sigma_rest >= 0x1.24d1520000000p-16f) && (p->bias_sigma_rest <= 0x1.1df46a0000000p-6f))) {
+    if (!((p->bias_sigma_rest >= 0x1.24d152p-16f) && (p->bias_sigma_rest <= 0x1.1df46ap-6f))) {
         status = -8;
     }
-    if (!((p->bias_forget_time >= 0x1.0000000000000p+0f) && (p->bias_forget_time <= 0x1.3880000000000p+13f))) {
+    if (!((p->bias_forget_time >= 0x1p+0f) && (p->bias_forget_time <= 0x1.388p+13f))) {
         status = -7;
     }
-    if (!((p->bias_sigma_init >= 0x1.6e05a60000000p-13f) && (p->bias_sigma_init <= 0x1.6571840000000p-4f))) {
+    if (!((p->bias_sigma_init >= 0x1.6e05a6p-13f) && (p->bias_sigma_init <= 0x1.657184p-4f))) {
         status = -6;
     }
-    if (!((p->tau_bias >= 0x1.4000000000000p+2f) && (p->tau_bias <= 0x1.f400000000000p+9f))) {
+    if (!((p->tau_bias >= 0x1.4p+2f) && (p->tau_bias <= 0x1.f4p+9f))) {
         status = -5;
     }
-    if (!((p->heading_rw >= 0x1.6e05a60000000p-13f) && (p->heading_rw <= 0x1.6571840000000p-4f))) {
+    if (!((p->heading_rw >= 0x1.6e05a6p-13f) && (p->heading_rw <= 0x1.657184p-4f))) {
         status = -4;
     }
-    if (!((p->tau_mag >= 0x1.0000000000000p+0f) && (p->tau_mag <= 0x1.e000000000000p+5f))) {
+    if (!((p->tau_mag >= 0x1p+0f) && (p->tau_mag <= 0x1.ep+5f))) {
         status = -3;
     }
-    if (!((p->tau_acc >= 0x1.0000000000000p-1f) && (p->tau_acc <= 0x1.4000000000000p+4f))) {
+    if (!((p->tau_acc >= 0x1p-1f) && (p->tau_acc <= 0x1.4p+4f))) {
         status = -2;
     }
-    if (!((p->mode >= 0.0f) && (p->mode <= 0x1.0000000000000p+0f))) {
+    if (!((p->mode >= 0.0f) && (p->mode <= 0x1p+0f))) {
         status = -1;
     }
     if (status != 0) {
@@ -133,20 +133,20 @@ int flagship_f32_init(flagship_f32_state *s, const flagship_f32_params *p)
     } else {
         s->params = *p;
     }
-    s->q_i[0] = 0x1.0000000000000p+0f;
+    s->q_i[0] = 0x1p+0f;
     s->q_i[1] = 0.0f;
     s->q_i[2] = 0.0f;
     s->q_i[3] = 0.0f;
-    s->q_a[0] = 0x1.0000000000000p+0f;
+    s->q_a[0] = 0x1p+0f;
     s->q_a[1] = 0.0f;
     s->q_a[2] = 0.0f;
     s->q_a[3] = 0.0f;
-    s->hd[0] = 0x1.0000000000000p+0f;
+    s->hd[0] = 0x1p+0f;
     s->hd[1] = 0.0f;
     s->bias[0] = 0.0f;
     s->bias[1] = 0.0f;
     s->bias[2] = 0.0f;
-    s->p_bias = 0x1.3f6a1e0000000p-14f;
+    s->p_bias = 0x1.3f6a1ep-14f;
     s->lp_x[0] = 0.0f;
     s->lp_x[1] = 0.0f;
     s->lp_x[2] = 0.0f;
@@ -163,7 +163,7 @@ int flagship_f32_init(flagship_f32_state *s, const flagship_f32_params *p)
     s->rest_acc[1] = 0.0f;
     s->rest_acc[2] = 0.0f;
     s->rest_t = 0.0f;
-    s->p_head = 0x1.0000000000000p+2f;
+    s->p_head = 0x1p+2f;
     s->t_mag = 0.0f;
     s->cur_n = 0.0f;
     s->cur_d[0] = 0.0f;
@@ -270,7 +270,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const int x_mag_flag = (s->mag_flag != 0u);
     const int x_initialised = (s->initialised != 0u);
     const int32_t x_rejected = s->rejected;
-    const int t85 = (0x1.0000000000000p-1f < p_mode);  /* flagship.py:223 */
+    const int t85 = (0x1p-1f < p_mode);  /* flagship.py:223 */
     const float t86 = fabsf(u_gyr0);  /* flagship.py:69 */
     const int t87 = (t86 < p_gyr_range);  /* flagship.py:69 */
     const float t88 = fabsf(u_gyr1);  /* flagship.py:69 */
@@ -280,7 +280,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const int t92 = (t87 && t89);  /* flagship.py:69 */
     const int t93 = (t92 && t91);  /* flagship.py:69 */
     const int t95 = (0.0f < u_dt);  /* flagship.py:225 */
-    const int t97 = (u_dt <= 0x1.0000000000000p+0f);  /* flagship.py:225 */
+    const int t97 = (u_dt <= 0x1p+0f);  /* flagship.py:225 */
     const int t98 = (t93 && t95);  /* flagship.py:225 */
     const int t99 = (t98 && t97);  /* flagship.py:225 */
     const float t100 = fabsf(u_acc0);  /* flagship.py:69 */
@@ -292,11 +292,11 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const int t106 = (t101 && t103);  /* flagship.py:69 */
     const int t107 = (t106 && t105);  /* flagship.py:69 */
     const float t108 = fabsf(u_mag0);  /* flagship.py:227 */
-    const int t110 = (t108 <= 0x1.3240000000000p+12f);  /* flagship.py:227 */
+    const int t110 = (t108 <= 0x1.324p+12f);  /* flagship.py:227 */
     const float t111 = fabsf(u_mag1);  /* flagship.py:227 */
-    const int t112 = (t111 <= 0x1.3240000000000p+12f);  /* flagship.py:227 */
+    const int t112 = (t111 <= 0x1.324p+12f);  /* flagship.py:227 */
     const float t113 = fabsf(u_mag2);  /* flagship.py:227 */
-    const int t114 = (t113 <= 0x1.3240000000000p+12f);  /* flagship.py:227 */
+    const int t114 = (t113 <= 0x1.324p+12f);  /* flagship.py:227 */
     const int t115 = (t110 && t112);  /* flagship.py:227 */
     const int t116 = (t115 && t114);  /* flagship.py:227 */
     const int t117 = (!t99);  /* flagship.py:228 */
@@ -305,24 +305,24 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const int t120 = (u_mag_valid && t119);  /* flagship.py:229 */
     const int t121 = (t117 || t118);  /* flagship.py:228 */
     const int t122 = (t121 || t120);  /* flagship.py:228 */
-    const float t124 = ((-0x1.1740b00000000p+5f < u_gyr0) ? u_gyr0 : -0x1.1740b00000000p+5f);  /* flagship.py:73 */
-    const float t126 = ((t124 < 0x1.1740b00000000p+5f) ? t124 : 0x1.1740b00000000p+5f);  /* flagship.py:73 */
-    const float t127 = ((-0x1.1740b00000000p+5f < u_gyr1) ? u_gyr1 : -0x1.1740b00000000p+5f);  /* flagship.py:73 */
-    const float t128 = ((t127 < 0x1.1740b00000000p+5f) ? t127 : 0x1.1740b00000000p+5f);  /* flagship.py:73 */
-    const float t129 = ((-0x1.1740b00000000p+5f < u_gyr2) ? u_gyr2 : -0x1.1740b00000000p+5f);  /* flagship.py:73 */
-    const float t130 = ((t129 < 0x1.1740b00000000p+5f) ? t129 : 0x1.1740b00000000p+5f);  /* flagship.py:73 */
-    const float t132 = ((-0x1.39d0140000000p+7f < u_acc0) ? u_acc0 : -0x1.39d0140000000p+7f);  /* flagship.py:73 */
-    const float t134 = ((t132 < 0x1.39d0140000000p+7f) ? t132 : 0x1.39d0140000000p+7f);  /* flagship.py:73 */
-    const float t135 = ((-0x1.39d0140000000p+7f < u_acc1) ? u_acc1 : -0x1.39d0140000000p+7f);  /* flagship.py:73 */
-    const float t136 = ((t135 < 0x1.39d0140000000p+7f) ? t135 : 0x1.39d0140000000p+7f);  /* flagship.py:73 */
-    const float t137 = ((-0x1.39d0140000000p+7f < u_acc2) ? u_acc2 : -0x1.39d0140000000p+7f);  /* flagship.py:73 */
-    const float t138 = ((t137 < 0x1.39d0140000000p+7f) ? t137 : 0x1.39d0140000000p+7f);  /* flagship.py:73 */
-    const float t140 = ((-0x1.3240000000000p+12f < u_mag0) ? u_mag0 : -0x1.3240000000000p+12f);  /* flagship.py:73 */
-    const float t141 = ((t140 < 0x1.3240000000000p+12f) ? t140 : 0x1.3240000000000p+12f);  /* flagship.py:73 */
-    const float t142 = ((-0x1.3240000000000p+12f < u_mag1) ? u_mag1 : -0x1.3240000000000p+12f);  /* flagship.py:73 */
-    const float t143 = ((t142 < 0x1.3240000000000p+12f) ? t142 : 0x1.3240000000000p+12f);  /* flagship.py:73 */
-    const float t144 = ((-0x1.3240000000000p+12f < u_mag2) ? u_mag2 : -0x1.3240000000000p+12f);  /* flagship.py:73 */
-    const float t145 = ((t144 < 0x1.3240000000000p+12f) ? t144 : 0x1.3240000000000p+12f);  /* flagship.py:73 */
+    const float t124 = ((-0x1.1740bp+5f < u_gyr0) ? u_gyr0 : -0x1.1740bp+5f);  /* flagship.py:73 */
+    const float t126 = ((t124 < 0x1.1740bp+5f) ? t124 : 0x1.1740bp+5f);  /* flagship.py:73 */
+    const float t127 = ((-0x1.1740bp+5f < u_gyr1) ? u_gyr1 : -0x1.1740bp+5f);  /* flagship.py:73 */
+    const float t128 = ((t127 < 0x1.1740bp+5f) ? t127 : 0x1.1740bp+5f);  /* flagship.py:73 */
+    const float t129 = ((-0x1.1740bp+5f < u_gyr2) ? u_gyr2 : -0x1.1740bp+5f);  /* flagship.py:73 */
+    const float t130 = ((t129 < 0x1.1740bp+5f) ? t129 : 0x1.1740bp+5f);  /* flagship.py:73 */
+    const float t132 = ((-0x1.39d014p+7f < u_acc0) ? u_acc0 : -0x1.39d014p+7f);  /* flagship.py:73 */
+    const float t134 = ((t132 < 0x1.39d014p+7f) ? t132 : 0x1.39d014p+7f);  /* flagship.py:73 */
+    const float t135 = ((-0x1.39d014p+7f < u_acc1) ? u_acc1 : -0x1.39d014p+7f);  /* flagship.py:73 */
+    const float t136 = ((t135 < 0x1.39d014p+7f) ? t135 : 0x1.39d014p+7f);  /* flagship.py:73 */
+    const float t137 = ((-0x1.39d014p+7f < u_acc2) ? u_acc2 : -0x1.39d014p+7f);  /* flagship.py:73 */
+    const float t138 = ((t137 < 0x1.39d014p+7f) ? t137 : 0x1.39d014p+7f);  /* flagship.py:73 */
+    const float t140 = ((-0x1.324p+12f < u_mag0) ? u_mag0 : -0x1.324p+12f);  /* flagship.py:73 */
+    const float t141 = ((t140 < 0x1.324p+12f) ? t140 : 0x1.324p+12f);  /* flagship.py:73 */
+    const float t142 = ((-0x1.324p+12f < u_mag1) ? u_mag1 : -0x1.324p+12f);  /* flagship.py:73 */
+    const float t143 = ((t142 < 0x1.324p+12f) ? t142 : 0x1.324p+12f);  /* flagship.py:73 */
+    const float t144 = ((-0x1.324p+12f < u_mag2) ? u_mag2 : -0x1.324p+12f);  /* flagship.py:73 */
+    const float t145 = ((t144 < 0x1.324p+12f) ? t144 : 0x1.324p+12f);  /* flagship.py:73 */
     const int t146 = (t99 && t107);  /* flagship.py:237 */
     const int t147 = (!x_initialised);  /* flagship.py:238 */
     const float t148 = (t134 * t134);  /* flagship.py:239 */
@@ -330,7 +330,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t150 = (t148 + t149);  /* flagship.py:239 */
     const float t151 = (t138 * t138);  /* flagship.py:239 */
     const float t152 = (t150 + t151);  /* flagship.py:239 */
-    const int t153 = (0x1.0000000000000p+0f <= t152);  /* flagship.py:239 */
+    const int t153 = (0x1p+0f <= t152);  /* flagship.py:239 */
     const int t154 = (t146 && t147);  /* flagship.py:238 */
     const int t155 = (t154 && t153);  /* flagship.py:238 */
     const int t156 = (x_initialised || t155);  /* flagship.py:240 */
@@ -341,13 +341,13 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const int t161 = (t160 && u_mag_valid);  /* flagship.py:243 */
     const int t162 = (t161 && t116);  /* flagship.py:243 */
     const float t163 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* flagship.py:244 */
-    const float t164 = ((t163 < 0x1.0000000000000p+0f) ? t163 : 0x1.0000000000000p+0f);  /* flagship.py:244 */
+    const float t164 = ((t163 < 0x1p+0f) ? t163 : 0x1p+0f);  /* flagship.py:244 */
     const float t165 = (t157 ? t164 : 0.0f);  /* flagship.py:244 */
-    const float t166 = (t155 ? 0x1.0000000000000p+0f : x_q_i0);  /* flagship.py:248 */
+    const float t166 = (t155 ? 0x1p+0f : x_q_i0);  /* flagship.py:248 */
     const float t167 = (t155 ? 0.0f : x_q_i1);  /* flagship.py:248 */
     const float t168 = (t155 ? 0.0f : x_q_i2);  /* flagship.py:248 */
     const float t169 = (t155 ? 0.0f : x_q_i3);  /* flagship.py:248 */
-    const float t170 = (t155 ? 0x1.0000000000000p+0f : x_q_a0);  /* flagship.py:249 */
+    const float t170 = (t155 ? 0x1p+0f : x_q_a0);  /* flagship.py:249 */
     const float t171 = (t155 ? 0.0f : x_q_a1);  /* flagship.py:249 */
     const float t172 = (t155 ? 0.0f : x_q_a2);  /* flagship.py:249 */
     const float t173 = (t155 ? 0.0f : x_q_a3);  /* flagship.py:249 */
@@ -360,7 +360,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t180 = (t155 ? 0.0f : x_th_prev0);  /* flagship.py:252 */
     const float t181 = (t155 ? 0.0f : x_th_prev1);  /* flagship.py:252 */
     const float t182 = (t155 ? 0.0f : x_th_prev2);  /* flagship.py:252 */
-    const float t183 = (t155 ? 0x1.0000000000000p+0f : x_hd0);  /* flagship.py:253 */
+    const float t183 = (t155 ? 0x1p+0f : x_hd0);  /* flagship.py:253 */
     const float t184 = (t155 ? 0.0f : x_hd1);  /* flagship.py:254 */
     const float t185 = (t126 - x_bias0);  /* flagship.py:256 */
     const float t186 = (t128 - x_bias1);  /* flagship.py:256 */
@@ -368,12 +368,12 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t188 = (t185 * t165);  /* flagship.py:260 */
     const float t189 = (t186 * t165);  /* flagship.py:260 */
     const float t190 = (t187 * t165);  /* flagship.py:260 */
-    const float t192 = ((-0x1.0000000000000p+1f < t188) ? t188 : -0x1.0000000000000p+1f);  /* flagship.py:73 */
-    const float t194 = ((t192 < 0x1.0000000000000p+1f) ? t192 : 0x1.0000000000000p+1f);  /* flagship.py:73 */
-    const float t195 = ((-0x1.0000000000000p+1f < t189) ? t189 : -0x1.0000000000000p+1f);  /* flagship.py:73 */
-    const float t196 = ((t195 < 0x1.0000000000000p+1f) ? t195 : 0x1.0000000000000p+1f);  /* flagship.py:73 */
-    const float t197 = ((-0x1.0000000000000p+1f < t190) ? t190 : -0x1.0000000000000p+1f);  /* flagship.py:73 */
-    const float t198 = ((t197 < 0x1.0000000000000p+1f) ? t197 : 0x1.0000000000000p+1f);  /* flagship.py:73 */
+    const float t192 = ((-0x1p+1f < t188) ? t188 : -0x1p+1f);  /* flagship.py:73 */
+    const float t194 = ((t192 < 0x1p+1f) ? t192 : 0x1p+1f);  /* flagship.py:73 */
+    const float t195 = ((-0x1p+1f < t189) ? t189 : -0x1p+1f);  /* flagship.py:73 */
+    const float t196 = ((t195 < 0x1p+1f) ? t195 : 0x1p+1f);  /* flagship.py:73 */
+    const float t197 = ((-0x1p+1f < t190) ? t190 : -0x1p+1f);  /* flagship.py:73 */
+    const float t198 = ((t197 < 0x1p+1f) ? t197 : 0x1p+1f);  /* flagship.py:73 */
     const float t199 = (t181 * t198);  /* flagship.py:261 */
     const float t200 = (t182 * t196);  /* flagship.py:261 */
     const float t201 = (t199 - t200);  /* flagship.py:261 */
@@ -383,9 +383,9 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t205 = (t180 * t196);  /* flagship.py:261 */
     const float t206 = (t181 * t194);  /* flagship.py:261 */
     const float t207 = (t205 - t206);  /* flagship.py:261 */
-    const float t209 = (t201 * 0x1.5555560000000p-4f);  /* flagship.py:261 */
-    const float t210 = (t204 * 0x1.5555560000000p-4f);  /* flagship.py:261 */
-    const float t211 = (t207 * 0x1.5555560000000p-4f);  /* flagship.py:261 */
+    const float t209 = (t201 * 0x1.555556p-4f);  /* flagship.py:261 */
+    const float t210 = (t204 * 0x1.555556p-4f);  /* flagship.py:261 */
+    const float t211 = (t207 * 0x1.555556p-4f);  /* flagship.py:261 */
     const float t212 = (t194 + t209);  /* flagship.py:261 */
     const float t213 = (t196 + t210);  /* flagship.py:261 */
     const float t214 = (t198 + t211);  /* flagship.py:261 */
@@ -394,11 +394,11 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t217 = (t215 + t216);  /* flagship.py:262 */
     const float t218 = (t214 * t214);  /* flagship.py:262 */
     const float t219 = (t217 + t218);  /* flagship.py:262 */
-    const float t221 = ((t219 < 0x1.0000000000000p+2f) ? t219 : 0x1.0000000000000p+2f);  /* flagship.py:262 */
-    const float t223 = (t221 * 0x1.5555560000000p-6f);  /* flagship.py:265 */
-    const float t224 = (0x1.0000000000000p-1f - t223);  /* flagship.py:265 */
-    const float t226 = (0x1.0000000000000p-3f * t221);  /* flagship.py:266 */
-    const float t227 = (0x1.0000000000000p+0f - t226);  /* flagship.py:266 */
+    const float t221 = ((t219 < 0x1p+2f) ? t219 : 0x1p+2f);  /* flagship.py:262 */
+    const float t223 = (t221 * 0x1.555556p-6f);  /* flagship.py:265 */
+    const float t224 = (0x1p-1f - t223);  /* flagship.py:265 */
+    const float t226 = (0x1p-3f * t221);  /* flagship.py:266 */
+    const float t227 = (0x1p+0f - t226);  /* flagship.py:266 */
     const float t228 = (t224 * t212);  /* flagship.py:266 */
     const float t229 = (t224 * t213);  /* flagship.py:266 */
     const float t230 = (t224 * t214);  /* flagship.py:266 */
@@ -437,29 +437,29 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t263 = (t261 + t262);  /* flagship.py:79 */
     const float t264 = (t258 * t258);  /* flagship.py:79 */
     const float t265 = (t263 + t264);  /* flagship.py:79 */
-    const float t266 = (0x1.0000000000000p-1f * t265);  /* flagship.py:79 */
-    const float t268 = (0x1.8000000000000p+0f - t266);  /* flagship.py:79 */
+    const float t266 = (0x1p-1f * t265);  /* flagship.py:79 */
+    const float t268 = (0x1.8p+0f - t266);  /* flagship.py:79 */
     const float t269 = (t237 * t268);  /* flagship.py:80 */
     const float t271 = (t244 * t268);  /* flagship.py:80 */
     const float t273 = (t251 * t268);  /* flagship.py:80 */
     const float t275 = (t258 * t268);  /* flagship.py:80 */
-    const float t277 = (0x1.0000000000000p+0f / p_tau_acc);  /* flagship.py:273 */
-    const float t278 = (0x1.0000000000000p+1f * t165);  /* flagship.py:274 */
+    const float t277 = (0x1p+0f / p_tau_acc);  /* flagship.py:273 */
+    const float t278 = (0x1p+1f * t165);  /* flagship.py:274 */
     const float t279 = (t278 * t277);  /* flagship.py:274 */
-    const float t280 = ((t279 < 0x1.0000000000000p+0f) ? t279 : 0x1.0000000000000p+0f);  /* flagship.py:274 */
+    const float t280 = ((t279 < 0x1p+0f) ? t279 : 0x1p+0f);  /* flagship.py:274 */
     const float t281 = (t280 * t277);  /* flagship.py:275 */
     const float t282 = (t273 * t138);  /* flagship.py:277 */
     const float t283 = (t275 * t136);  /* flagship.py:277 */
     const float t284 = (t282 - t283);  /* flagship.py:277 */
-    const float t285 = (0x1.0000000000000p+1f * t284);  /* flagship.py:277 */
+    const float t285 = (0x1p+1f * t284);  /* flagship.py:277 */
     const float t286 = (t275 * t134);  /* flagship.py:277 */
     const float t287 = (t271 * t138);  /* flagship.py:277 */
     const float t288 = (t286 - t287);  /* flagship.py:277 */
-    const float t289 = (0x1.0000000000000p+1f * t288);  /* flagship.py:277 */
+    const float t289 = (0x1p+1f * t288);  /* flagship.py:277 */
     const float t290 = (t271 * t136);  /* flagship.py:277 */
     const float t291 = (t273 * t134);  /* flagship.py:277 */
     const float t292 = (t290 - t291);  /* flagship.py:277 */
-    const float t293 = (0x1.0000000000000p+1f * t292);  /* flagship.py:277 */
+    const float t293 = (0x1p+1f * t292);  /* flagship.py:277 */
     const float t294 = (t269 * t285);  /* flagship.py:277 */
     const float t295 = (t134 + t294);  /* flagship.py:277 */
     const float t296 = (t273 * t293);  /* flagship.py:277 */
@@ -493,36 +493,36 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t327 = (t179 + t326);  /* flagship.py:278 */
     const float t328 = (t280 * t179);  /* flagship.py:278 */
     const float t329 = (t327 - t328);  /* flagship.py:278 */
-    const float t331 = ((-0x1.39d0140000000p+10f < t319) ? t319 : -0x1.39d0140000000p+10f);  /* flagship.py:73 */
-    const float t333 = ((t331 < 0x1.39d0140000000p+10f) ? t331 : 0x1.39d0140000000p+10f);  /* flagship.py:73 */
-    const float t334 = ((-0x1.39d0140000000p+10f < t324) ? t324 : -0x1.39d0140000000p+10f);  /* flagship.py:73 */
-    const float t335 = ((t334 < 0x1.39d0140000000p+10f) ? t334 : 0x1.39d0140000000p+10f);  /* flagship.py:73 */
-    const float t336 = ((-0x1.39d0140000000p+10f < t329) ? t329 : -0x1.39d0140000000p+10f);  /* flagship.py:73 */
-    const float t337 = ((t336 < 0x1.39d0140000000p+10f) ? t336 : 0x1.39d0140000000p+10f);  /* flagship.py:73 */
+    const float t331 = ((-0x1.39d014p+10f < t319) ? t319 : -0x1.39d014p+10f);  /* flagship.py:73 */
+    const float t333 = ((t331 < 0x1.39d014p+10f) ? t331 : 0x1.39d014p+10f);  /* flagship.py:73 */
+    const float t334 = ((-0x1.39d014p+10f < t324) ? t324 : -0x1.39d014p+10f);  /* flagship.py:73 */
+    const float t335 = ((t334 < 0x1.39d014p+10f) ? t334 : 0x1.39d014p+10f);  /* flagship.py:73 */
+    const float t336 = ((-0x1.39d014p+10f < t329) ? t329 : -0x1.39d014p+10f);  /* flagship.py:73 */
+    const float t337 = ((t336 < 0x1.39d014p+10f) ? t336 : 0x1.39d014p+10f);  /* flagship.py:73 */
     const float t338 = (t333 * t165);  /* flagship.py:280 */
     const float t339 = (t335 * t165);  /* flagship.py:280 */
     const float t340 = (t337 * t165);  /* flagship.py:280 */
     const float t341 = (t174 + t338);  /* flagship.py:280 */
     const float t342 = (t175 + t339);  /* flagship.py:280 */
     const float t343 = (t176 + t340);  /* flagship.py:280 */
-    const float t345 = ((-0x1.39d0140000000p+8f < t341) ? t341 : -0x1.39d0140000000p+8f);  /* flagship.py:73 */
-    const float t347 = ((t345 < 0x1.39d0140000000p+8f) ? t345 : 0x1.39d0140000000p+8f);  /* flagship.py:73 */
-    const float t348 = ((-0x1.39d0140000000p+8f < t342) ? t342 : -0x1.39d0140000000p+8f);  /* flagship.py:73 */
-    const float t349 = ((t348 < 0x1.39d0140000000p+8f) ? t348 : 0x1.39d0140000000p+8f);  /* flagship.py:73 */
-    const float t350 = ((-0x1.39d0140000000p+8f < t343) ? t343 : -0x1.39d0140000000p+8f);  /* flagship.py:73 */
-    const float t351 = ((t350 < 0x1.39d0140000000p+8f) ? t350 : 0x1.39d0140000000p+8f);  /* flagship.py:73 */
+    const float t345 = ((-0x1.39d014p+8f < t341) ? t341 : -0x1.39d014p+8f);  /* flagship.py:73 */
+    const float t347 = ((t345 < 0x1.39d014p+8f) ? t345 : 0x1.39d014p+8f);  /* flagship.py:73 */
+    const float t348 = ((-0x1.39d014p+8f < t342) ? t342 : -0x1.39d014p+8f);  /* flagship.py:73 */
+    const float t349 = ((t348 < 0x1.39d014p+8f) ? t348 : 0x1.39d014p+8f);  /* flagship.py:73 */
+    const float t350 = ((-0x1.39d014p+8f < t343) ? t343 : -0x1.39d014p+8f);  /* flagship.py:73 */
+    const float t351 = ((t350 < 0x1.39d014p+8f) ? t350 : 0x1.39d014p+8f);  /* flagship.py:73 */
     const float t352 = (t172 * t351);  /* flagship.py:282 */
     const float t353 = (t173 * t349);  /* flagship.py:282 */
     const float t354 = (t352 - t353);  /* flagship.py:282 */
-    const float t355 = (0x1.0000000000000p+1f * t354);  /* flagship.py:282 */
+    const float t355 = (0x1p+1f * t354);  /* flagship.py:282 */
     const float t356 = (t173 * t347);  /* flagship.py:282 */
     const float t357 = (t171 * t351);  /* flagship.py:282 */
     const float t358 = (t356 - t357);  /* flagship.py:282 */
-    const float t359 = (0x1.0000000000000p+1f * t358);  /* flagship.py:282 */
+    const float t359 = (0x1p+1f * t358);  /* flagship.py:282 */
     const float t360 = (t171 * t349);  /* flagship.py:282 */
     const float t361 = (t172 * t347);  /* flagship.py:282 */
     const float t362 = (t360 - t361);  /* flagship.py:282 */
-    const float t363 = (0x1.0000000000000p+1f * t362);  /* flagship.py:282 */
+    const float t363 = (0x1p+1f * t362);  /* flagship.py:282 */
     const float t364 = (t170 * t355);  /* flagship.py:282 */
     const float t365 = (t347 + t364);  /* flagship.py:282 */
     const float t366 = (t172 * t363);  /* flagship.py:282 */
@@ -546,9 +546,9 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t387 = (t385 + t386);  /* flagship.py:283 */
     const float t388 = (t381 * t381);  /* flagship.py:283 */
     const float t389 = (t387 + t388);  /* flagship.py:283 */
-    const float t390_m = ((0x1.0c6f7a0000000p-20f < t389) ? t389 : 0x1.0c6f7a0000000p-20f);  /* flagship.py:283 */
+    const float t390_m = ((0x1.0c6f7ap-20f < t389) ? t389 : 0x1.0c6f7ap-20f);  /* flagship.py:283 */
     const float t390_s = sqrtf(t390_m);
-    const float t390 = (0x1.0000000000000p+0f / t390_s);
+    const float t390 = (0x1p+0f / t390_s);
     const float t391 = (t369 * t390);  /* flagship.py:283 */
     const float t393 = (t375 * t390);  /* flagship.py:283 */
     const float t395 = (t381 * t390);  /* flagship.py:283 */
@@ -556,11 +556,11 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t398 = fabsf(t391);  /* flagship.py:289 */
     const float t399 = fabsf(t393);  /* flagship.py:289 */
     const float t400 = (t398 + t399);  /* flagship.py:289 */
-    const int t402 = (t400 < 0x1.0624de0000000p-10f);  /* flagship.py:289 */
+    const int t402 = (t400 < 0x1.0624dep-10f);  /* flagship.py:289 */
     const int t403 = (t397 && t402);  /* flagship.py:289 */
-    const float t404 = (t403 ? 0x1.0624de0000000p-10f : t393);  /* flagship.py:290 */
-    const float t405 = (0x1.0000000000000p-1f * t404);  /* flagship.py:291 */
-    const float t407 = (-0x1.0000000000000p-1f * t391);  /* flagship.py:291 */
+    const float t404 = (t403 ? 0x1.0624dep-10f : t393);  /* flagship.py:290 */
+    const float t405 = (0x1p-1f * t404);  /* flagship.py:291 */
+    const float t407 = (-0x1p-1f * t391);  /* flagship.py:291 */
     const float t408 = (t405 * t171);  /* flagship.py:291 */
     const float t409 = (t170 - t408);  /* flagship.py:291 */
     const float t410 = (t407 * t172);  /* flagship.py:291 */
@@ -592,8 +592,8 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t436 = (t434 + t435);  /* flagship.py:79 */
     const float t437 = (t431 * t431);  /* flagship.py:79 */
     const float t438 = (t436 + t437);  /* flagship.py:79 */
-    const float t439 = (0x1.0000000000000p-1f * t438);  /* flagship.py:79 */
-    const float t440 = (0x1.8000000000000p+0f - t439);  /* flagship.py:79 */
+    const float t439 = (0x1p-1f * t438);  /* flagship.py:79 */
+    const float t440 = (0x1.8p+0f - t439);  /* flagship.py:79 */
     const float t441 = (t413 * t440);  /* flagship.py:80 */
     const float t443 = (t419 * t440);  /* flagship.py:80 */
     const float t445 = (t425 * t440);  /* flagship.py:80 */
@@ -603,8 +603,8 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     float t464 = 0.0f;
     float t466 = 0.0f;
     if (t155) {
-        const float t449 = (0x1.0000000000000p+0f + t395);  /* flagship.py:293 */
-        const float t451 = ((0x1.12e0be0000000p-30f < t449) ? t449 : 0x1.12e0be0000000p-30f);  /* flagship.py:293 */
+        const float t449 = (0x1p+0f + t395);  /* flagship.py:293 */
+        const float t451 = ((0x1.12e0bep-30f < t449) ? t449 : 0x1.12e0bep-30f);  /* flagship.py:293 */
         const float t452 = (-t391);  /* flagship.py:293 */
         const float t453 = (t451 * t451);  /* flagship.py:293 */
         const float t454 = (t404 * t404);  /* flagship.py:293 */
@@ -612,9 +612,9 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         const float t456 = (t452 * t452);  /* flagship.py:293 */
         const float t457 = (t455 + t456);  /* flagship.py:293 */
         const float t458 = (t457 + 0.0f);  /* flagship.py:293 */
-        const float t459_m = ((0x1.1979980000000p-40f < t458) ? t458 : 0x1.1979980000000p-40f);  /* flagship.py:293 */
+        const float t459_m = ((0x1.197998p-40f < t458) ? t458 : 0x1.197998p-40f);  /* flagship.py:293 */
         const float t459_s = sqrtf(t459_m);
-        const float t459 = (0x1.0000000000000p+0f / t459_s);
+        const float t459 = (0x1p+0f / t459_s);
         t460 = (t451 * t459);  /* flagship.py:293 */
         t462 = (t404 * t459);  /* flagship.py:293 */
         t464 = (t452 * t459);  /* flagship.py:293 */
@@ -673,7 +673,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t518 = (t511 ? t514 : 0.0f);  /* flagship.py:302 */
     const float t519 = (t511 ? t517 : 0.0f);  /* flagship.py:302 */
     const float t520 = (t165 / p_tau_rest);  /* flagship.py:307 */
-    const float t521 = ((t520 < 0x1.0000000000000p+0f) ? t520 : 0x1.0000000000000p+0f);  /* flagship.py:307 */
+    const float t521 = ((t520 < 0x1p+0f) ? t520 : 0x1p+0f);  /* flagship.py:307 */
     const float t522 = (t126 - x_rest_gyr0);  /* flagship.py:308 */
     const float t523 = (t128 - x_rest_gyr1);  /* flagship.py:308 */
     const float t524 = (t130 - x_rest_gyr2);  /* flagship.py:308 */
@@ -701,12 +701,12 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t546 = (t126 - t531);  /* flagship.py:310 */
     const float t547 = (t128 - t532);  /* flagship.py:310 */
     const float t548 = (t130 - t533);  /* flagship.py:310 */
-    const float t550 = ((-0x1.0000000000000p+0f < t546) ? t546 : -0x1.0000000000000p+0f);  /* flagship.py:73 */
-    const float t551 = ((t550 < 0x1.0000000000000p+0f) ? t550 : 0x1.0000000000000p+0f);  /* flagship.py:73 */
-    const float t552 = ((-0x1.0000000000000p+0f < t547) ? t547 : -0x1.0000000000000p+0f);  /* flagship.py:73 */
-    const float t553 = ((t552 < 0x1.0000000000000p+0f) ? t552 : 0x1.0000000000000p+0f);  /* flagship.py:73 */
-    const float t554 = ((-0x1.0000000000000p+0f < t548) ? t548 : -0x1.0000000000000p+0f);  /* flagship.py:73 */
-    const float t555 = ((t554 < 0x1.0000000000000p+0f) ? t554 : 0x1.0000000000000p+0f);  /* flagship.py:73 */
+    const float t550 = ((-0x1p+0f < t546) ? t546 : -0x1p+0f);  /* flagship.py:73 */
+    const float t551 = ((t550 < 0x1p+0f) ? t550 : 0x1p+0f);  /* flagship.py:73 */
+    const float t552 = ((-0x1p+0f < t547) ? t547 : -0x1p+0f);  /* flagship.py:73 */
+    const float t553 = ((t552 < 0x1p+0f) ? t552 : 0x1p+0f);  /* flagship.py:73 */
+    const float t554 = ((-0x1p+0f < t548) ? t548 : -0x1p+0f);  /* flagship.py:73 */
+    const float t555 = ((t554 < 0x1p+0f) ? t554 : 0x1p+0f);  /* flagship.py:73 */
     const float t556 = (t551 * t551);  /* flagship.py:310 */
     const float t557 = (t553 * t553);  /* flagship.py:310 */
     const float t558 = (t556 + t557);  /* flagship.py:310 */
@@ -715,12 +715,12 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t561 = (t134 - t543);  /* flagship.py:311 */
     const float t562 = (t136 - t544);  /* flagship.py:311 */
     const float t563 = (t138 - t545);  /* flagship.py:311 */
-    const float t565 = ((-0x1.4000000000000p+3f < t561) ? t561 : -0x1.4000000000000p+3f);  /* flagship.py:73 */
-    const float t567 = ((t565 < 0x1.4000000000000p+3f) ? t565 : 0x1.4000000000000p+3f);  /* flagship.py:73 */
-    const float t568 = ((-0x1.4000000000000p+3f < t562) ? t562 : -0x1.4000000000000p+3f);  /* flagship.py:73 */
-    const float t569 = ((t568 < 0x1.4000000000000p+3f) ? t568 : 0x1.4000000000000p+3f);  /* flagship.py:73 */
-    const float t570 = ((-0x1.4000000000000p+3f < t563) ? t563 : -0x1.4000000000000p+3f);  /* flagship.py:73 */
-    const float t571 = ((t570 < 0x1.4000000000000p+3f) ? t570 : 0x1.4000000000000p+3f);  /* flagship.py:73 */
+    const float t565 = ((-0x1.4p+3f < t561) ? t561 : -0x1.4p+3f);  /* flagship.py:73 */
+    const float t567 = ((t565 < 0x1.4p+3f) ? t565 : 0x1.4p+3f);  /* flagship.py:73 */
+    const float t568 = ((-0x1.4p+3f < t562) ? t562 : -0x1.4p+3f);  /* flagship.py:73 */
+    const float t569 = ((t568 < 0x1.4p+3f) ? t568 : 0x1.4p+3f);  /* flagship.py:73 */
+    const float t570 = ((-0x1.4p+3f < t563) ? t563 : -0x1.4p+3f);  /* flagship.py:73 */
+    const float t571 = ((t570 < 0x1.4p+3f) ? t570 : 0x1.4p+3f);  /* flagship.py:73 */
     const float t572 = (t567 * t567);  /* flagship.py:311 */
     const float t573 = (t569 * t569);  /* flagship.py:311 */
     const float t574 = (t572 + t573);  /* flagship.py:311 */
@@ -742,7 +742,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const int t590 = (t589 && t584);  /* flagship.py:312 */
     const int t591 = (t590 && t586);  /* flagship.py:312 */
     const float t592 = (x_rest_t + t165);  /* flagship.py:315 */
-    const float t594 = ((t592 < 0x1.3880000000000p+13f) ? t592 : 0x1.3880000000000p+13f);  /* flagship.py:315 */
+    const float t594 = ((t592 < 0x1.388p+13f) ? t592 : 0x1.388p+13f);  /* flagship.py:315 */
     const float t595 = (t157 ? 0.0f : x_rest_t);  /* flagship.py:315 */
     const float t596 = (t591 ? t594 : t595);  /* flagship.py:315 */
     const int t597 = (p_rest_time <= t596);  /* flagship.py:316 */
@@ -752,10 +752,10 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t601 = (p_heading_rw * p_heading_rw);  /* flagship.py:323 */
     const float t602 = (t601 * t165);  /* flagship.py:323 */
     const float t603 = (x_p_head + t602);  /* flagship.py:323 */
-    const float t604 = ((t603 < 0x1.0000000000000p+2f) ? t603 : 0x1.0000000000000p+2f);  /* flagship.py:323 */
-    const float t605 = (t155 ? 0x1.0000000000000p+2f : t604);  /* flagship.py:322 */
+    const float t604 = ((t603 < 0x1p+2f) ? t603 : 0x1p+2f);  /* flagship.py:323 */
+    const float t605 = (t155 ? 0x1p+2f : t604);  /* flagship.py:322 */
     const float t606 = (x_t_mag + t165);  /* flagship.py:324 */
-    const float t607 = ((t606 < 0x1.0000000000000p+1f) ? t606 : 0x1.0000000000000p+1f);  /* flagship.py:324 */
+    const float t607 = ((t606 < 0x1p+1f) ? t606 : 0x1p+1f);  /* flagship.py:324 */
     float t691 = 0.0f;
     float t692 = 0.0f;
     float t693 = 0.0f;
@@ -780,9 +780,9 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         const float t610 = (t608 + t609);  /* flagship.py:330 */
         const float t611 = (t145 * t145);  /* flagship.py:330 */
         const float t612 = (t610 + t611);  /* flagship.py:330 */
-        const float t613_m = ((0x1.0c6f7a0000000p-20f < t612) ? t612 : 0x1.0c6f7a0000000p-20f);  /* flagship.py:330 */
+        const float t613_m = ((0x1.0c6f7ap-20f < t612) ? t612 : 0x1.0c6f7ap-20f);  /* flagship.py:330 */
         const float t613_s = sqrtf(t613_m);
-        const float t613 = (0x1.0000000000000p+0f / t613_s);
+        const float t613 = (0x1p+0f / t613_s);
         const float t614 = (t141 * t613);  /* flagship.py:331 */
         const float t615 = (t143 * t613);  /* flagship.py:331 */
         const float t616 = (t145 * t613);  /* flagship.py:331 */
@@ -794,15 +794,15 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         const float t626 = (t502 * t616);  /* flagship.py:333 */
         const float t627 = (t509 * t615);  /* flagship.py:333 */
         const float t628 = (t626 - t627);  /* flagship.py:333 */
-        const float t629 = (0x1.0000000000000p+1f * t628);  /* flagship.py:333 */
+        const float t629 = (0x1p+1f * t628);  /* flagship.py:333 */
         const float t630 = (t509 * t614);  /* flagship.py:333 */
         const float t631 = (t495 * t616);  /* flagship.py:333 */
         const float t632 = (t630 - t631);  /* flagship.py:333 */
-        const float t633 = (0x1.0000000000000p+1f * t632);  /* flagship.py:333 */
+        const float t633 = (0x1p+1f * t632);  /* flagship.py:333 */
         const float t634 = (t495 * t615);  /* flagship.py:333 */
         const float t635 = (t502 * t614);  /* flagship.py:333 */
         const float t636 = (t634 - t635);  /* flagship.py:333 */
-        const float t637 = (0x1.0000000000000p+1f * t636);  /* flagship.py:333 */
+        const float t637 = (0x1p+1f * t636);  /* flagship.py:333 */
         const float t638 = (t488 * t629);  /* flagship.py:333 */
         const float t639 = (t614 + t638);  /* flagship.py:333 */
         const float t640 = (t502 * t637);  /* flagship.py:333 */
@@ -824,7 +824,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         const float t659 = (t183 * t183);  /* flagship.py:334 */
         const float t660 = (t184 * t184);  /* flagship.py:334 */
         const float t661 = (t659 - t660);  /* flagship.py:334 */
-        const float t662 = (0x1.0000000000000p+1f * t183);  /* flagship.py:335 */
+        const float t662 = (0x1p+1f * t183);  /* flagship.py:335 */
         const float t663 = (t662 * t184);  /* flagship.py:335 */
         const float t664 = (t661 * t643);  /* flagship.py:336 */
         const float t665 = (t663 * t649);  /* flagship.py:336 */
@@ -835,15 +835,15 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         const float t672 = (t666 * t666);  /* flagship.py:338 */
         const float t673 = (t670 * t670);  /* flagship.py:338 */
         const float t674 = (t672 + t673);  /* flagship.py:338 */
-        const float t675_m = ((0x1.12e0be0000000p-30f < t674) ? t674 : 0x1.12e0be0000000p-30f);  /* flagship.py:338 */
+        const float t675_m = ((0x1.12e0bep-30f < t674) ? t674 : 0x1.12e0bep-30f);  /* flagship.py:338 */
         const float t675_s = sqrtf(t675_m);
-        const float t675 = (0x1.0000000000000p+0f / t675_s);
+        const float t675 = (0x1p+0f / t675_s);
         const float t676 = (t674 * t675);  /* flagship.py:339 */
         const float t678 = (t666 * t675);  /* flagship.py:343 */
         const float t680 = (t670 * t675);  /* flagship.py:344 */
         const float t682 = (t607 / p_tau_mag_noise);  /* flagship.py:347 */
-        const float t683 = ((t682 < 0x1.0000000000000p+0f) ? t682 : 0x1.0000000000000p+0f);  /* flagship.py:347 */
-        const float t684 = (t155 ? 0x1.0000000000000p+0f : t683);  /* flagship.py:347 */
+        const float t683 = ((t682 < 0x1p+0f) ? t682 : 0x1p+0f);  /* flagship.py:347 */
+        const float t684 = (t155 ? 0x1p+0f : t683);  /* flagship.py:347 */
         const float t685 = (t624 - x_cur_n);  /* flagship.py:348 */
         const float t686 = (t676 - x_cur_d0);  /* flagship.py:348 */
         const float t687 = (t655 - x_cur_d1);  /* flagship.py:348 */
@@ -895,7 +895,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         const float t733 = (p_mag_new_min_rate * p_mag_new_min_rate);  /* flagship.py:369 */
         const int t734 = (t733 <= t732);  /* flagship.py:369 */
         const float t735 = (t165 / p_tau_mag_ref);  /* flagship.py:370 */
-        const float t736 = ((t735 < 0x1.0000000000000p+0f) ? t735 : 0x1.0000000000000p+0f);  /* flagship.py:370 */
+        const float t736 = ((t735 < 0x1p+0f) ? t735 : 0x1p+0f);  /* flagship.py:370 */
         const float t737 = (t692 - x_cand_d0);  /* flagship.py:371 */
         const float t738 = (t693 - x_cand_d1);  /* flagship.py:371 */
         const float t739 = (t717 * t736);  /* flagship.py:371 */
@@ -908,7 +908,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         t746 = (t727 ? t692 : t743);  /* flagship.py:371 */
         t747 = (t727 ? t693 : t744);  /* flagship.py:371 */
         const float t748 = (x_cand_t + t165);  /* flagship.py:372 */
-        const float t749 = ((t748 < 0x1.3880000000000p+13f) ? t748 : 0x1.3880000000000p+13f);  /* flagship.py:372 */
+        const float t749 = ((t748 < 0x1.388p+13f) ? t748 : 0x1.388p+13f);  /* flagship.py:372 */
         const float t750 = (t734 ? t749 : x_cand_t);  /* flagship.py:372 */
         t751 = (t727 ? 0.0f : t750);  /* flagship.py:372 */
         const int t752 = (p_mag_min_undisturbed <= x_undist_t);  /* flagship.py:378 */
@@ -919,12 +919,12 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         const int t757 = (t708 || t756);  /* flagship.py:380 */
         const int t758 = (t707 && t757);  /* flagship.py:380 */
         const float t759 = (x_dist_t + t165);  /* flagship.py:382 */
-        const float t760 = ((t759 < 0x1.3880000000000p+13f) ? t759 : 0x1.3880000000000p+13f);  /* flagship.py:382 */
+        const float t760 = ((t759 < 0x1.388p+13f) ? t759 : 0x1.388p+13f);  /* flagship.py:382 */
         const float t761 = (x_dist_t - t278);  /* flagship.py:382 */
         const float t762 = ((0.0f < t761) ? t761 : 0.0f);  /* flagship.py:382 */
         const float t763 = (t758 ? t760 : t762);  /* flagship.py:382 */
         const float t764 = (x_undist_t + t165);  /* flagship.py:383 */
-        const float t765 = ((t764 < 0x1.3880000000000p+13f) ? t764 : 0x1.3880000000000p+13f);  /* flagship.py:383 */
+        const float t765 = ((t764 < 0x1.388p+13f) ? t764 : 0x1.388p+13f);  /* flagship.py:383 */
         const float t766 = (t708 ? 0.0f : t765);  /* flagship.py:383 */
         const int t767 = (p_mag_reject_time <= t763);  /* flagship.py:384 */
         const int t768 = (t758 && t767);  /* flagship.py:384 */
@@ -948,25 +948,25 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         const float t786 = (t785 * p_tau_mag);  /* flagship.py:395 */
         const float t787 = (t605 * t607);  /* flagship.py:396 */
         const float t788 = (t787 + t786);  /* flagship.py:398 */
-        const float t790 = ((0x1.1979980000000p-40f < t788) ? t788 : 0x1.1979980000000p-40f);  /* flagship.py:398 */
+        const float t790 = ((0x1.197998p-40f < t788) ? t788 : 0x1.197998p-40f);  /* flagship.py:398 */
         const float t791 = (t787 / t790);  /* flagship.py:398 */
         const float t793 = (t780 ? t791 : 0.0f);  /* flagship.py:398 */
-        const float t794 = (t773 ? 0x1.0000000000000p+0f : t793);  /* flagship.py:397 */
+        const float t794 = (t773 ? 0x1p+0f : t793);  /* flagship.py:397 */
         const float t795 = fabsf(t678);  /* flagship.py:403 */
-        const int t796 = (t795 < 0x1.0624de0000000p-10f);  /* flagship.py:403 */
+        const int t796 = (t795 < 0x1.0624dep-10f);  /* flagship.py:403 */
         const int t797 = (t713 && t796);  /* flagship.py:403 */
-        const float t798 = (t797 ? 0x1.0624de0000000p-10f : t678);  /* flagship.py:403 */
-        const float t799 = (0x1.0000000000000p+0f + t680);  /* flagship.py:404 */
-        const float t800 = ((0x1.12e0be0000000p-30f < t799) ? t799 : 0x1.12e0be0000000p-30f);  /* flagship.py:404 */
+        const float t798 = (t797 ? 0x1.0624dep-10f : t678);  /* flagship.py:403 */
+        const float t799 = (0x1p+0f + t680);  /* flagship.py:404 */
+        const float t800 = ((0x1.12e0bep-30f < t799) ? t799 : 0x1.12e0bep-30f);  /* flagship.py:404 */
         const float t801 = (t800 * t800);  /* flagship.py:404 */
         const float t802 = (t798 * t798);  /* flagship.py:404 */
         const float t803 = (t801 + t802);  /* flagship.py:404 */
-        const float t804_m = ((0x1.1979980000000p-40f < t803) ? t803 : 0x1.1979980000000p-40f);  /* flagship.py:404 */
+        const float t804_m = ((0x1.197998p-40f < t803) ? t803 : 0x1.197998p-40f);  /* flagship.py:404 */
         const float t804_s = sqrtf(t804_m);
-        const float t804 = (0x1.0000000000000p+0f / t804_s);
+        const float t804 = (0x1p+0f / t804_s);
         const float t805 = (t800 * t804);  /* flagship.py:405 */
         const float t807 = (t798 * t804);  /* flagship.py:406 */
-        const float t809 = (0x1.0000000000000p+0f - t794);  /* flagship.py:407 */
+        const float t809 = (0x1p+0f - t794);  /* flagship.py:407 */
         const float t810 = (t794 * t805);  /* flagship.py:407 */
         const float t811 = (t809 + t810);  /* flagship.py:407 */
         const float t812 = (t794 * t807);  /* flagship.py:408 */
@@ -979,23 +979,23 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         const float t819 = (t815 * t815);  /* flagship.py:411 */
         const float t820 = (t818 * t818);  /* flagship.py:411 */
         const float t821 = (t819 + t820);  /* flagship.py:411 */
-        const float t822_m = ((0x1.0c6f7a0000000p-20f < t821) ? t821 : 0x1.0c6f7a0000000p-20f);  /* flagship.py:411 */
+        const float t822_m = ((0x1.0c6f7ap-20f < t821) ? t821 : 0x1.0c6f7ap-20f);  /* flagship.py:411 */
         const float t822_s = sqrtf(t822_m);
-        const float t822 = (0x1.0000000000000p+0f / t822_s);
+        const float t822 = (0x1p+0f / t822_s);
         t823 = (t815 * t822);  /* flagship.py:412 */
         t825 = (t818 * t822);  /* flagship.py:412 */
-        t827 = (0x1.0000000000000p+1f * t812);  /* flagship.py:413 */
+        t827 = (0x1p+1f * t812);  /* flagship.py:413 */
         const float t828 = (t809 * t605);  /* flagship.py:415 */
         const float t829 = (t780 ? t828 : t605);  /* flagship.py:415 */
-        t830 = (t773 ? 0x1.0000000000000p+2f : t829);  /* flagship.py:414 */
+        t830 = (t773 ? 0x1p+2f : t829);  /* flagship.py:414 */
         const float t831 = (x_ref_t + t165);  /* flagship.py:418 */
-        const float t832 = ((t831 < 0x1.3880000000000p+13f) ? t831 : 0x1.3880000000000p+13f);  /* flagship.py:418 */
+        const float t832 = ((t831 < 0x1.388p+13f) ? t831 : 0x1.388p+13f);  /* flagship.py:418 */
         const float t833 = (t780 ? t832 : x_ref_t);  /* flagship.py:418 */
         const float t834 = ((t833 < p_tau_mag_ref) ? t833 : p_tau_mag_ref);  /* flagship.py:419 */
-        const float t835 = ((0x1.0624de0000000p-10f < t834) ? t834 : 0x1.0624de0000000p-10f);  /* flagship.py:419 */
-        const float t836 = (0x1.0000000000000p+0f / t835);  /* flagship.py:419 */
+        const float t835 = ((0x1.0624dep-10f < t834) ? t834 : 0x1.0624dep-10f);  /* flagship.py:419 */
+        const float t836 = (0x1p+0f / t835);  /* flagship.py:419 */
         const float t837 = (t165 * t836);  /* flagship.py:419 */
-        const float t838 = ((t837 < 0x1.0000000000000p+0f) ? t837 : 0x1.0000000000000p+0f);  /* flagship.py:419 */
+        const float t838 = ((t837 < 0x1p+0f) ? t837 : 0x1p+0f);  /* flagship.py:419 */
         const int t839 = (t780 && t696);  /* flagship.py:421 */
         const float t840 = (t692 - x_ref_d0);  /* flagship.py:421 */
         const float t841 = (t693 - x_ref_d1);  /* flagship.py:421 */
@@ -1015,7 +1015,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         t855 = (t755 ? t692 : t852);  /* flagship.py:420 */
         t856 = (t755 ? t693 : t853);  /* flagship.py:420 */
         const int t857 = (t755 || t771);  /* flagship.py:422 */
-        const float t858 = ((0x1.0624de0000000p-10f < t833) ? t833 : 0x1.0624de0000000p-10f);  /* flagship.py:422 */
+        const float t858 = ((0x1.0624dep-10f < t833) ? t833 : 0x1.0624dep-10f);  /* flagship.py:422 */
         t859 = (t857 ? t858 : t833);  /* flagship.py:422 */
         t860 = (t768 ? 0.0f : t763);  /* flagship.py:423 */
         t861 = (t857 ? p_mag_min_undisturbed : t766);  /* flagship.py:424 */
@@ -1048,7 +1048,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         t883 = (x_bias0 + t880);  /* flagship.py:439 */
         t884 = (x_bias1 + t881);  /* flagship.py:439 */
         t885 = (x_bias2 + t882);  /* flagship.py:439 */
-        const float t886 = (0x1.0000000000000p+0f - t875);  /* flagship.py:440 */
+        const float t886 = (0x1p+0f - t875);  /* flagship.py:440 */
         t887 = (t886 * t871);  /* flagship.py:440 */
     }
     const int t888 = (!t872);  /* flagship.py:441 */
@@ -1057,7 +1057,7 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     float t932 = 0.0f;
     if (t888) {
         const float t889 = (t871 / t867);  /* flagship.py:444 */
-        const float t891 = (0x1.0000000000000p+0f / p_tau_bias);  /* flagship.py:444 */
+        const float t891 = (0x1p+0f / p_tau_bias);  /* flagship.py:444 */
         const float t892 = (t889 * t891);  /* flagship.py:444 */
         const float t893 = (t157 ? t864 : 0.0f);  /* flagship.py:445 */
         const float t894 = (-t495);  /* flagship.py:445 */
@@ -1066,15 +1066,15 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
         const float t897 = (t895 * t893);  /* flagship.py:445 */
         const float t898 = (t896 * t519);  /* flagship.py:445 */
         const float t899 = (t897 - t898);  /* flagship.py:445 */
-        const float t900 = (0x1.0000000000000p+1f * t899);  /* flagship.py:445 */
+        const float t900 = (0x1p+1f * t899);  /* flagship.py:445 */
         const float t901 = (t896 * t518);  /* flagship.py:445 */
         const float t902 = (t894 * t893);  /* flagship.py:445 */
         const float t903 = (t901 - t902);  /* flagship.py:445 */
-        const float t904 = (0x1.0000000000000p+1f * t903);  /* flagship.py:445 */
+        const float t904 = (0x1p+1f * t903);  /* flagship.py:445 */
         const float t905 = (t894 * t519);  /* flagship.py:445 */
         const float t906 = (t895 * t518);  /* flagship.py:445 */
         const float t907 = (t905 - t906);  /* flagship.py:445 */
-        const float t908 = (0x1.0000000000000p+1f * t907);  /* flagship.py:445 */
+        const float t908 = (0x1p+1f * t907);  /* flagship.py:445 */
         const float t909 = (t488 * t900);  /* flagship.py:445 */
         const float t910 = (t518 + t909);  /* flagship.py:445 */
         const float t911 = (t895 * t908);  /* flagship.py:445 */
@@ -1144,29 +1144,29 @@ void flagship_f32_update(flagship_f32_state *s, const kf_imu_input_f32 *in, flag
     const float t974 = (t162 ? t692 : x_cur_d0);  /* flagship.py:457 */
     const float t975 = (t162 ? t693 : x_cur_d1);  /* flagship.py:457 */
     const float t976 = ((0.0f < t973) ? t973 : 0.0f);  /* flagship.py:90 */
-    const float t978 = ((t976 < 0x1.3240000000000p+13f) ? t976 : 0x1.3240000000000p+13f);  /* flagship.py:90 */
-    const float t979 = ((-0x1.0000000000000p+0f < t974) ? t974 : -0x1.0000000000000p+0f);  /* flagship.py:91 */
-    const float t980 = ((t979 < 0x1.0000000000000p+0f) ? t979 : 0x1.0000000000000p+0f);  /* flagship.py:91 */
-    const float t981 = ((-0x1.0000000000000p+0f < t975) ? t975 : -0x1.0000000000000p+0f);  /* flagship.py:91 */
-    const float t982 = ((t981 < 0x1.0000000000000p+0f) ? t981 : 0x1.0000000000000p+0f);  /* flagship.py:91 */
+    const float t978 = ((t976 < 0x1.324p+13f) ? t976 : 0x1.324p+13f);  /* flagship.py:90 */
+    const float t979 = ((-0x1p+0f < t974) ? t974 : -0x1p+0f);  /* flagship.py:91 */
+    const float t980 = ((t979 < 0x1p+0f) ? t979 : 0x1p+0f);  /* flagship.py:91 */
+    const float t981 = ((-0x1p+0f < t975) ? t975 : -0x1p+0f);  /* flagship.py:91 */
+    const float t982 = ((t981 < 0x1p+0f) ? t981 : 0x1p+0f);  /* flagship.py:91 */
     const float t983 = (t162 ? t854 : x_ref_n);  /* flagship.py:457 */
     const float t984 = (t162 ? t855 : x_ref_d0);  /* flagship.py:457 */
     const float t985 = (t162 ? t856 : x_ref_d1);  /* flagship.py:457 */
     const float t986 = ((0.0f < t983) ? t983 : 0.0f);  /* flagship.py:90 */
-    const float t987 = ((t986 < 0x1.3240000000000p+13f) ? t986 : 0x1.3240000000000p+13f);  /* flagship.py:90 */
-    const float t988 = ((-0x1.0000000000000p+0f < t984) ? t984 : -0x1.0000000000000p+0f);  /* flagship.py:91 */
-    const float t989 = ((t988 < 0x1.0000000000000p+0f) ? t988 : 0x1.0000000000000p+0f);  /* flagship.py:91 */
-    const float t990 = ((-0x1.0000000000000p+0f < t985) ? t985 : -0x1.0000000000000p+0f);  /* flagship.py:91 */
-    const float t991 = ((t990 < 0x1.0000000000000p+0f) ? t990 : 0x1.0000000000000p+0f);  /* flagship.py:91 */
+    const float t987 = ((t986 < 0x1.324p+13f) ? t986 : 0x1.324p+13f);  /* flagship.py:90 */
+    const float t988 = ((-0x1p+0f < t984) ? t984 : -0x1p+0f);  /* flagship.py:91 */
+    const float t989 = ((t988 < 0x1p+0f) ? t988 : 0x1p+0f);  /* flagship.py:91 */
+    const float t990 = ((-0x1p+0f < t985) ? t985 : -0x1p+0f);  /* flagship.py:91 */
+    const float t991 = ((t990 < 0x1p+0f) ? t990 : 0x1p+0f);  /* flagship.py:91 */
     const float t992 = (t162 ? t745 : x_cand_n);  /* flagship.py:457 */
     const float t993 = (t162 ? t746 : x_cand_d0);  /* flagship.py:457 */
     const float t994 = (t162 ? t747 : x_cand_d1);  /* flagship.py:457 */
     const float t995 = ((0.0f < t992) ? t992 : 0.0f);  /* flagship.py:90 */
-    const float t996 = ((t995 < 0x1.3240000000000p+13f) ? t995 : 0x1.3240000000000p+13f);  /* flagship.py:90 */
-    const float t997 = ((-0x1.0000000000000p+0f < t993) ? t993 : -0x1.0000000000000p+0f);  /* flagship.py:91 */
-    const float t998 = ((t997 < 0x1.0000000000000p+0f) ? t997 : 0x1.0000000000000p+0f);  /* flagship.py:91 */
-    const float t999 = ((-0x1.0000000000000p+0f < t994) ? t994 : -0x1.0000000000000p+0f);  /* flagship.py:91 */
-    const float t1000 = ((t999 < 0x1.0000000000000p+0f) ? t999 : 0x1.0000000000000p+0f);  /* flagship.py:91 */
+    const float t996 = ((t995 < 0x1.324p+13f) ? t995 : 0x1.324p+13f);  /* flagship.py:90 */
+    const float t997 = ((-0x1p+0f < t993) ? t993 : -0x1p+0f);  /* flagship.py:91 */
+    const float t998 = ((t997 < 0x1p+0f) ? t997 : 0x1p+0f);  /* flagship.py:91 */
+    const float t999 = ((-0x1p+0f < t994) ? t994 : -0x1p+0f);  /* flagship.py:91 */
+    const float t1000 = ((t999 < 0x1p+0f) ? t999 : 0x1p+0f);  /* flagship.py:91 */
     const float t1001 = (t162 ? t859 : x_ref_t);  /* flagship.py:454 */
     const float t1002 = (t162 ? t751 : x_cand_t);  /* flagship.py:454 */
     const float t1003 = (t162 ? t860 : x_dist_t);  /* flagship.py:454 */

@@ -23,21 +23,21 @@
 
 void guo_f32_default_params(guo_f32_params *p)
 {
-    p->var_acc = 0x1.47ae140000000p-7f;
-    p->var_gyr = 0x1.0624de0000000p-10f;
-    p->var_mag = 0x1.47ae140000000p-7f;
+    p->var_acc = 0x1.47ae14p-7f;
+    p->var_gyr = 0x1.0624dep-10f;
+    p->var_mag = 0x1.47ae14p-7f;
 }
 
 int guo_f32_init(guo_f32_state *s, const guo_f32_params *p)
 {
     int status = 0;
-    if (!((p->var_mag >= 0x1.0c6f7a0000000p-20f) && (p->var_mag <= 0x1.4000000000000p+3f))) {
+    if (!((p->var_mag >= 0x1.0c6f7ap-20f) && (p->var_mag <= 0x1.4p+3f))) {
         status = -3;
     }
-    if (!((p->var_gyr >= 0x1.5798ee0000000p-27f) && (p->var_gyr <= 0x1.4000000000000p+3f))) {
+    if (!((p->var_gyr >= 0x1.5798eep-27f) && (p->var_gyr <= 0x1.4p+3f))) {
         status = -2;
     }
-    if (!((p->var_acc >= 0x1.0c6f7a0000000p-20f) && (p->var_acc <= 0x1.0000000000000p+0f))) {
+    if (!((p->var_acc >= 0x1.0c6f7ap-20f) && (p->var_acc <= 0x1p+0f))) {
         status = -1;
     }
     if (status != 0) {
@@ -45,20 +45,20 @@ int guo_f32_init(guo_f32_state *s, const guo_f32_params *p)
     } else {
         s->params = *p;
     }
-    s->q[0] = 0x1.0000000000000p+0f;
+    s->q[0] = 0x1p+0f;
     s->q[1] = 0.0f;
     s->q[2] = 0.0f;
     s->q[3] = 0.0f;
-    s->P[0] = 0x1.0000000000000p+0f;
+    s->P[0] = 0x1p+0f;
     s->P[1] = 0.0f;
     s->P[2] = 0.0f;
     s->P[3] = 0.0f;
-    s->P[4] = 0x1.0000000000000p+0f;
+    s->P[4] = 0x1p+0f;
     s->P[5] = 0.0f;
     s->P[6] = 0.0f;
-    s->P[7] = 0x1.0000000000000p+0f;
+    s->P[7] = 0x1p+0f;
     s->P[8] = 0.0f;
-    s->P[9] = 0x1.0000000000000p+0f;
+    s->P[9] = 0x1p+0f;
     s->initialised = 0;
     s->heading_set = 0;
     s->rejected = 0;
@@ -99,34 +99,34 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const int x_heading_set = (s->heading_set != 0u);
     const int32_t x_rejected = s->rejected;
     const float t32 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* common.py:62 */
-    const float t34 = ((t32 < 0x1.0000000000000p+0f) ? t32 : 0x1.0000000000000p+0f);  /* common.py:62 */
+    const float t34 = ((t32 < 0x1p+0f) ? t32 : 0x1p+0f);  /* common.py:62 */
     const float t35 = fabsf(u_gyr0);  /* common.py:50 */
-    const int t37 = (t35 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t37 = (t35 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t38 = fabsf(u_gyr1);  /* common.py:50 */
-    const int t39 = (t38 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t39 = (t38 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t40 = fabsf(u_gyr2);  /* common.py:50 */
-    const int t41 = (t40 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t41 = (t40 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t42 = (t37 && t39);  /* common.py:50 */
     const int t43 = (t42 && t41);  /* common.py:50 */
     const float t44 = fabsf(u_acc0);  /* common.py:50 */
-    const int t46 = (t44 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t46 = (t44 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t47 = fabsf(u_acc1);  /* common.py:50 */
-    const int t48 = (t47 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t48 = (t47 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t49 = fabsf(u_acc2);  /* common.py:50 */
-    const int t50 = (t49 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t50 = (t49 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t51 = (t46 && t48);  /* common.py:50 */
     const int t52 = (t51 && t50);  /* common.py:50 */
     const int t53 = (0.0f < u_dt);  /* common.py:64 */
-    const int t54 = (u_dt <= 0x1.0000000000000p+0f);  /* common.py:64 */
+    const int t54 = (u_dt <= 0x1p+0f);  /* common.py:64 */
     const int t55 = (t43 && t52);  /* common.py:63 */
     const int t56 = (t55 && t53);  /* common.py:63 */
     const int t57 = (t56 && t54);  /* common.py:63 */
     const float t58 = fabsf(u_mag0);  /* common.py:50 */
-    const int t60 = (t58 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t60 = (t58 <= 0x1.324p+12f);  /* common.py:50 */
     const float t61 = fabsf(u_mag1);  /* common.py:50 */
-    const int t62 = (t61 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t62 = (t61 <= 0x1.324p+12f);  /* common.py:50 */
     const float t63 = fabsf(u_mag2);  /* common.py:50 */
-    const int t64 = (t63 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t64 = (t63 <= 0x1.324p+12f);  /* common.py:50 */
     const int t65 = (t60 && t62);  /* common.py:50 */
     const int t66 = (t65 && t64);  /* common.py:50 */
     const int t67 = (t57 && u_mag_valid);  /* common.py:67 */
@@ -141,9 +141,9 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t76 = (t74 + t75);  /* guo.py:131 */
     const float t77 = (u_acc2 * u_acc2);  /* guo.py:131 */
     const float t78 = (t76 + t77);  /* guo.py:131 */
-    const float t79_m = ((0x1.0c6f7a0000000p-20f < t78) ? t78 : 0x1.0c6f7a0000000p-20f);  /* guo.py:131 */
+    const float t79_m = ((0x1.0c6f7ap-20f < t78) ? t78 : 0x1.0c6f7ap-20f);  /* guo.py:131 */
     const float t79_s = sqrtf(t79_m);
-    const float t79 = (0x1.0000000000000p+0f / t79_s);
+    const float t79 = (0x1p+0f / t79_s);
     const float t80 = (u_acc0 * t79);  /* guo.py:131 */
     const float t82 = (u_acc1 * t79);  /* guo.py:131 */
     const float t84 = (u_acc2 * t79);  /* guo.py:131 */
@@ -152,50 +152,50 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t88 = (t86 + t87);  /* guo.py:132 */
     const float t89 = (u_mag2 * u_mag2);  /* guo.py:132 */
     const float t90 = (t88 + t89);  /* guo.py:132 */
-    const float t91_m = ((0x1.0c6f7a0000000p-20f < t90) ? t90 : 0x1.0c6f7a0000000p-20f);  /* guo.py:132 */
+    const float t91_m = ((0x1.0c6f7ap-20f < t90) ? t90 : 0x1.0c6f7ap-20f);  /* guo.py:132 */
     const float t91_s = sqrtf(t91_m);
-    const float t91 = (0x1.0000000000000p+0f / t91_s);
+    const float t91 = (0x1p+0f / t91_s);
     const float t92 = (u_mag0 * t91);  /* guo.py:132 */
     const float t94 = (u_mag1 * t91);  /* guo.py:132 */
     const float t96 = (u_mag2 * t91);  /* guo.py:132 */
-    const int t98 = (0x1.0000000000000p+0f <= t78);  /* guo.py:133 */
+    const int t98 = (0x1p+0f <= t78);  /* guo.py:133 */
     const float t99 = (t80 * t92);  /* guo.py:134 */
     const float t100 = (t82 * t94);  /* guo.py:134 */
     const float t101 = (t99 + t100);  /* guo.py:134 */
     const float t102 = (t84 * t96);  /* guo.py:134 */
     const float t103 = (t101 + t102);  /* guo.py:134 */
-    const int t104 = (0x1.0000000000000p+0f <= t90);  /* guo.py:135 */
+    const int t104 = (0x1p+0f <= t90);  /* guo.py:135 */
     const float t105 = (t103 * t103);  /* guo.py:135 */
-    const float t106 = (0x1.0000000000000p+0f - t105);  /* guo.py:135 */
-    const int t108 = (0x1.f212d80000000p-8f <= t106);  /* guo.py:135 */
+    const float t106 = (0x1p+0f - t105);  /* guo.py:135 */
+    const int t108 = (0x1.f212d8p-8f <= t106);  /* guo.py:135 */
     const int t109 = (t68 && t104);  /* guo.py:135 */
     const int t110 = (t109 && t108);  /* guo.py:135 */
     const float t111 = (p_var_mag / p_var_acc);  /* guo.py:138 */
     const float t112 = ((0.0f < t111) ? t111 : 0.0f);  /* guo.py:138 */
-    const float t114 = ((t112 < 0x1.3880000000000p+13f) ? t112 : 0x1.3880000000000p+13f);  /* guo.py:138 */
-    const float t116 = (t114 * 0x1.0000000000000p-4f);  /* guo.py:139 */
-    const float t117 = ((t116 < 0x1.0000000000000p+0f) ? 0x1.0000000000000p+0f : t116);  /* guo.py:139 */
-    const float t118 = (0x1.0000000000000p+0f / t117);  /* guo.py:139 */
+    const float t114 = ((t112 < 0x1.388p+13f) ? t112 : 0x1.388p+13f);  /* guo.py:138 */
+    const float t116 = (t114 * 0x1p-4f);  /* guo.py:139 */
+    const float t117 = ((t116 < 0x1p+0f) ? 0x1p+0f : t116);  /* guo.py:139 */
+    const float t118 = (0x1p+0f / t117);  /* guo.py:139 */
     const float t119 = (p_var_gyr / p_var_acc);  /* guo.py:140 */
     const float t120 = (t119 * t118);  /* guo.py:140 */
     const float t121 = ((0.0f < t120) ? t120 : 0.0f);  /* guo.py:140 */
-    const float t123 = ((t121 < 0x1.e848000000000p+19f) ? t121 : 0x1.e848000000000p+19f);  /* guo.py:140 */
+    const float t123 = ((t121 < 0x1.e848p+19f) ? t121 : 0x1.e848p+19f);  /* guo.py:140 */
     const float t124 = sqrtf(t123);  /* guo.py:140 */
     const float t125 = (t34 * t124);  /* guo.py:140 */
     const float t126 = ((0.0f < t125) ? t125 : 0.0f);  /* guo.py:140 */
-    const float t128 = ((t126 < 0x1.0000000000000p+2f) ? t126 : 0x1.0000000000000p+2f);  /* guo.py:140 */
+    const float t128 = ((t126 < 0x1p+2f) ? t126 : 0x1p+2f);  /* guo.py:140 */
     const float t129 = (t128 * t128);  /* guo.py:141 */
     const int t130 = (0.0f <= t84);  /* algebraic.py:52 */
-    const float t131 = (0x1.0000000000000p+0f + t84);  /* algebraic.py:53 */
-    const float t133 = (0x1.0000000000000p-1f * t131);  /* algebraic.py:53 */
-    const float t134 = ((0x1.0000000000000p-1f < t133) ? t133 : 0x1.0000000000000p-1f);  /* algebraic.py:53 */
+    const float t131 = (0x1p+0f + t84);  /* algebraic.py:53 */
+    const float t133 = (0x1p-1f * t131);  /* algebraic.py:53 */
+    const float t134 = ((0x1p-1f < t133) ? t133 : 0x1p-1f);  /* algebraic.py:53 */
     const float t135 = sqrtf(t134);  /* algebraic.py:53 */
-    const float t136 = (0x1.0000000000000p+0f - t84);  /* algebraic.py:54 */
-    const float t137 = (0x1.0000000000000p-1f * t136);  /* algebraic.py:54 */
-    const float t138 = ((0x1.0000000000000p-1f < t137) ? t137 : 0x1.0000000000000p-1f);  /* algebraic.py:54 */
+    const float t136 = (0x1p+0f - t84);  /* algebraic.py:54 */
+    const float t137 = (0x1p-1f * t136);  /* algebraic.py:54 */
+    const float t138 = ((0x1p-1f < t137) ? t137 : 0x1p-1f);  /* algebraic.py:54 */
     const float t139 = sqrtf(t138);  /* algebraic.py:54 */
-    const float t140 = (0x1.0000000000000p-1f / t135);  /* algebraic.py:55 */
-    const float t141 = (0x1.0000000000000p-1f / t139);  /* algebraic.py:56 */
+    const float t140 = (0x1p-1f / t135);  /* algebraic.py:55 */
+    const float t141 = (0x1p-1f / t139);  /* algebraic.py:56 */
     const float t142 = (t82 * t140);  /* algebraic.py:57 */
     const float t144 = (-t80);  /* algebraic.py:57 */
     const float t145 = (t144 * t140);  /* algebraic.py:57 */
@@ -210,15 +210,15 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t157 = (t155 * t96);  /* algebraic.py:104 */
     const float t158 = (t156 * t94);  /* algebraic.py:104 */
     const float t159 = (t157 - t158);  /* algebraic.py:104 */
-    const float t161 = (0x1.0000000000000p+1f * t159);  /* algebraic.py:104 */
+    const float t161 = (0x1p+1f * t159);  /* algebraic.py:104 */
     const float t162 = (t156 * t92);  /* algebraic.py:104 */
     const float t163 = (t154 * t96);  /* algebraic.py:104 */
     const float t164 = (t162 - t163);  /* algebraic.py:104 */
-    const float t165 = (0x1.0000000000000p+1f * t164);  /* algebraic.py:104 */
+    const float t165 = (0x1p+1f * t164);  /* algebraic.py:104 */
     const float t166 = (t154 * t94);  /* algebraic.py:104 */
     const float t167 = (t155 * t92);  /* algebraic.py:104 */
     const float t168 = (t166 - t167);  /* algebraic.py:104 */
-    const float t169 = (0x1.0000000000000p+1f * t168);  /* algebraic.py:104 */
+    const float t169 = (0x1p+1f * t168);  /* algebraic.py:104 */
     const float t170 = (t153 * t161);  /* algebraic.py:104 */
     const float t171 = (t92 + t170);  /* algebraic.py:104 */
     const float t172 = (t155 * t169);  /* algebraic.py:104 */
@@ -234,28 +234,28 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t184 = (t175 * t175);  /* algebraic.py:84 */
     const float t185 = (t181 * t181);  /* algebraic.py:84 */
     const float t186 = (t184 + t185);  /* algebraic.py:84 */
-    const float t187_m = ((0x1.a36e2e0000000p-14f < t186) ? t186 : 0x1.a36e2e0000000p-14f);  /* algebraic.py:84 */
+    const float t187_m = ((0x1.a36e2ep-14f < t186) ? t186 : 0x1.a36e2ep-14f);  /* algebraic.py:84 */
     const float t187_s = sqrtf(t187_m);
-    const float t187 = (0x1.0000000000000p+0f / t187_s);
+    const float t187 = (0x1p+0f / t187_s);
     const float t188 = (t175 * t187);  /* algebraic.py:85 */
     const float t190 = (t181 * t187);  /* algebraic.py:86 */
     const int t192 = (0.0f <= t190);  /* algebraic.py:87 */
-    const float t193 = (0x1.0000000000000p+0f + t190);  /* algebraic.py:88 */
-    const float t194 = (0x1.0000000000000p-1f * t193);  /* algebraic.py:88 */
-    const float t195 = ((0x1.0000000000000p-1f < t194) ? t194 : 0x1.0000000000000p-1f);  /* algebraic.py:88 */
+    const float t193 = (0x1p+0f + t190);  /* algebraic.py:88 */
+    const float t194 = (0x1p-1f * t193);  /* algebraic.py:88 */
+    const float t195 = ((0x1p-1f < t194) ? t194 : 0x1p-1f);  /* algebraic.py:88 */
     const float t196 = sqrtf(t195);  /* algebraic.py:88 */
-    const float t197 = (0x1.0000000000000p+0f - t190);  /* algebraic.py:89 */
-    const float t198 = (0x1.0000000000000p-1f * t197);  /* algebraic.py:89 */
-    const float t199 = ((0x1.0000000000000p-1f < t198) ? t198 : 0x1.0000000000000p-1f);  /* algebraic.py:89 */
+    const float t197 = (0x1p+0f - t190);  /* algebraic.py:89 */
+    const float t198 = (0x1p-1f * t197);  /* algebraic.py:89 */
+    const float t199 = ((0x1p-1f < t198) ? t198 : 0x1p-1f);  /* algebraic.py:89 */
     const float t200 = sqrtf(t199);  /* algebraic.py:89 */
-    const float t201 = (0x1.0000000000000p-1f / t196);  /* algebraic.py:90 */
+    const float t201 = (0x1p-1f / t196);  /* algebraic.py:90 */
     const float t202 = (t188 * t201);  /* algebraic.py:90 */
-    const float t204 = (0x1.0000000000000p-1f / t200);  /* algebraic.py:91 */
+    const float t204 = (0x1p-1f / t200);  /* algebraic.py:91 */
     const float t205 = (t188 * t204);  /* algebraic.py:91 */
     const float t207 = (t192 ? t196 : t205);  /* algebraic.py:92 */
     const float t208 = (t192 ? t202 : t200);  /* algebraic.py:92 */
-    const int t210 = (0x1.a36e2e0000000p-14f < t186);  /* algebraic.py:93 */
-    const float t211 = (t210 ? t207 : 0x1.0000000000000p+0f);  /* algebraic.py:94 */
+    const int t210 = (0x1.a36e2ep-14f < t186);  /* algebraic.py:93 */
+    const float t211 = (t210 ? t207 : 0x1p+0f);  /* algebraic.py:94 */
     const float t212 = (t210 ? t208 : 0.0f);  /* algebraic.py:94 */
     const float t213 = (t211 * t153);  /* algebraic.py:107 */
     const float t214 = (0.0f * t154);  /* algebraic.py:107 */
@@ -301,14 +301,14 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t254 = (x_initialised ? x_q1 : t245);  /* guo.py:147 */
     const float t255 = (x_initialised ? x_q2 : t247);  /* guo.py:147 */
     const float t256 = (x_initialised ? x_q3 : t249);  /* guo.py:147 */
-    const float t258 = ((-0x1.0000000000000p+0f < t103) ? t103 : -0x1.0000000000000p+0f);  /* guo.py:72 */
-    const float t259 = ((t258 < 0x1.0000000000000p+0f) ? t258 : 0x1.0000000000000p+0f);  /* guo.py:72 */
+    const float t258 = ((-0x1p+0f < t103) ? t103 : -0x1p+0f);  /* guo.py:72 */
+    const float t259 = ((t258 < 0x1p+0f) ? t258 : 0x1p+0f);  /* guo.py:72 */
     const float t260 = (t259 * t259);  /* guo.py:73 */
-    const float t261 = (0x1.0000000000000p+0f - t260);  /* guo.py:73 */
+    const float t261 = (0x1p+0f - t260);  /* guo.py:73 */
     const float t262 = ((0.0f < t261) ? t261 : 0.0f);  /* guo.py:73 */
     const float t263 = sqrtf(t262);  /* guo.py:73 */
-    const float t265 = ((0x1.6514bc0000000p-4f < t263) ? t263 : 0x1.6514bc0000000p-4f);  /* guo.py:74 */
-    const float t266 = (0x1.0000000000000p+0f / t265);  /* guo.py:74 */
+    const float t265 = ((0x1.6514bcp-4f < t263) ? t263 : 0x1.6514bcp-4f);  /* guo.py:74 */
+    const float t266 = (0x1p+0f / t265);  /* guo.py:74 */
     const float t267 = (-t259);  /* guo.py:76 */
     const float t268 = (t267 * t266);  /* guo.py:76 */
     const float t270 = (0.0f * t253);  /* guo.py:77 */
@@ -367,10 +367,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t323 = (t254 - t307);  /* guo.py:78 */
     const float t324 = (t255 - t314);  /* guo.py:78 */
     const float t325 = (t256 - t321);  /* guo.py:78 */
-    const float t326 = (t322 * 0x1.0000000000000p-1f);  /* guo.py:78 */
-    const float t327 = (t323 * 0x1.0000000000000p-1f);  /* guo.py:78 */
-    const float t328 = (t324 * 0x1.0000000000000p-1f);  /* guo.py:78 */
-    const float t329 = (t325 * 0x1.0000000000000p-1f);  /* guo.py:78 */
+    const float t326 = (t322 * 0x1p-1f);  /* guo.py:78 */
+    const float t327 = (t323 * 0x1p-1f);  /* guo.py:78 */
+    const float t328 = (t324 * 0x1p-1f);  /* guo.py:78 */
+    const float t329 = (t325 * 0x1p-1f);  /* guo.py:78 */
     const float t330 = (t110 ? t326 : t253);  /* guo.py:79 */
     const float t331 = (t110 ? t327 : t254);  /* guo.py:79 */
     const float t332 = (t110 ? t328 : t255);  /* guo.py:79 */
@@ -423,10 +423,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t379 = (t331 - t363);  /* guo.py:80 */
     const float t380 = (t332 - t370);  /* guo.py:80 */
     const float t381 = (t333 - t377);  /* guo.py:80 */
-    const float t382 = (t378 * 0x1.0000000000000p-1f);  /* guo.py:80 */
-    const float t383 = (t379 * 0x1.0000000000000p-1f);  /* guo.py:80 */
-    const float t384 = (t380 * 0x1.0000000000000p-1f);  /* guo.py:80 */
-    const float t385 = (t381 * 0x1.0000000000000p-1f);  /* guo.py:80 */
+    const float t382 = (t378 * 0x1p-1f);  /* guo.py:80 */
+    const float t383 = (t379 * 0x1p-1f);  /* guo.py:80 */
+    const float t384 = (t380 * 0x1p-1f);  /* guo.py:80 */
+    const float t385 = (t381 * 0x1p-1f);  /* guo.py:80 */
     const float t386 = (t382 * t382);  /* guo.py:81 */
     const float t387 = (t383 * t383);  /* guo.py:81 */
     const float t388 = (t386 + t387);  /* guo.py:81 */
@@ -434,9 +434,9 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t390 = (t388 + t389);  /* guo.py:81 */
     const float t391 = (t385 * t385);  /* guo.py:81 */
     const float t392 = (t390 + t391);  /* guo.py:81 */
-    const float t393_m = ((0x1.0c6f7a0000000p-20f < t392) ? t392 : 0x1.0c6f7a0000000p-20f);  /* guo.py:81 */
+    const float t393_m = ((0x1.0c6f7ap-20f < t392) ? t392 : 0x1.0c6f7ap-20f);  /* guo.py:81 */
     const float t393_s = sqrtf(t393_m);
-    const float t393 = (0x1.0000000000000p+0f / t393_s);
+    const float t393 = (0x1p+0f / t393_s);
     const float t394 = (t382 * t393);  /* guo.py:81 */
     const float t396 = (t383 * t393);  /* guo.py:81 */
     const float t398 = (t384 * t393);  /* guo.py:81 */
@@ -481,7 +481,7 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t439 = (t437 - t438);  /* guo.py:83 */
     const float t440 = (t413 * 0.0f);  /* guo.py:83 */
     const float t441 = (t439 + t440);  /* guo.py:83 */
-    const float t443 = (-0x1.0000000000000p-1f * t92);  /* guo.py:93 */
+    const float t443 = (-0x1p-1f * t92);  /* guo.py:93 */
     const float t444 = (t420 * t443);  /* guo.py:93 */
     const float t445 = (t427 * t443);  /* guo.py:93 */
     const float t446 = (t434 * t443);  /* guo.py:93 */
@@ -554,10 +554,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t513 = (t497 - t505);  /* guo.py:94 */
     const float t514 = (t498 - t508);  /* guo.py:94 */
     const float t515 = (t499 - t511);  /* guo.py:94 */
-    const float t516 = (t512 * 0x1.0000000000000p-1f);  /* guo.py:94 */
-    const float t517 = (t513 * 0x1.0000000000000p-1f);  /* guo.py:94 */
-    const float t518 = (t514 * 0x1.0000000000000p-1f);  /* guo.py:94 */
-    const float t519 = (t515 * 0x1.0000000000000p-1f);  /* guo.py:94 */
+    const float t516 = (t512 * 0x1p-1f);  /* guo.py:94 */
+    const float t517 = (t513 * 0x1p-1f);  /* guo.py:94 */
+    const float t518 = (t514 * 0x1p-1f);  /* guo.py:94 */
+    const float t519 = (t515 * 0x1p-1f);  /* guo.py:94 */
     const float t520 = (t420 * t80);  /* guo.py:95 */
     const float t521 = (t427 * t80);  /* guo.py:95 */
     const float t522 = (t434 * t80);  /* guo.py:95 */
@@ -578,10 +578,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t537 = (t521 + t529);  /* guo.py:95 */
     const float t538 = (t522 + t532);  /* guo.py:95 */
     const float t539 = (t523 + t535);  /* guo.py:95 */
-    const float t540 = (t536 * -0x1.0000000000000p-1f);  /* guo.py:95 */
-    const float t541 = (t537 * -0x1.0000000000000p-1f);  /* guo.py:95 */
-    const float t542 = (t538 * -0x1.0000000000000p-1f);  /* guo.py:95 */
-    const float t543 = (t539 * -0x1.0000000000000p-1f);  /* guo.py:95 */
+    const float t540 = (t536 * -0x1p-1f);  /* guo.py:95 */
+    const float t541 = (t537 * -0x1p-1f);  /* guo.py:95 */
+    const float t542 = (t538 * -0x1p-1f);  /* guo.py:95 */
+    const float t543 = (t539 * -0x1p-1f);  /* guo.py:95 */
     const float t544 = (0.0f * t540);  /* guo.py:96 */
     const float t545 = (0.0f * t541);  /* guo.py:96 */
     const float t546 = (t544 - t545);  /* guo.py:96 */
@@ -630,10 +630,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t589 = (t541 - t573);  /* guo.py:96 */
     const float t590 = (t542 - t580);  /* guo.py:96 */
     const float t591 = (t543 - t587);  /* guo.py:96 */
-    const float t592 = (t588 * 0x1.0000000000000p-1f);  /* guo.py:96 */
-    const float t593 = (t589 * 0x1.0000000000000p-1f);  /* guo.py:96 */
-    const float t594 = (t590 * 0x1.0000000000000p-1f);  /* guo.py:96 */
-    const float t595 = (t591 * 0x1.0000000000000p-1f);  /* guo.py:96 */
+    const float t592 = (t588 * 0x1p-1f);  /* guo.py:96 */
+    const float t593 = (t589 * 0x1p-1f);  /* guo.py:96 */
+    const float t594 = (t590 * 0x1p-1f);  /* guo.py:96 */
+    const float t595 = (t591 * 0x1p-1f);  /* guo.py:96 */
     const float t596 = (t394 * t516);  /* guo.py:87 */
     const float t597 = (t396 * t517);  /* guo.py:87 */
     const float t598 = (t596 + t597);  /* guo.py:87 */
@@ -664,7 +664,7 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t629 = (t594 - t628);  /* guo.py:88 */
     const float t631 = (t400 * t621);  /* guo.py:88 */
     const float t632 = (t595 - t631);  /* guo.py:88 */
-    const float t634 = (-0x1.0000000000000p-1f * t94);  /* guo.py:93 */
+    const float t634 = (-0x1p-1f * t94);  /* guo.py:93 */
     const float t635 = (t420 * t634);  /* guo.py:93 */
     const float t636 = (t427 * t634);  /* guo.py:93 */
     const float t637 = (t434 * t634);  /* guo.py:93 */
@@ -735,10 +735,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t702 = (t688 - t694);  /* guo.py:94 */
     const float t703 = (t689 - t697);  /* guo.py:94 */
     const float t704 = (t690 - t700);  /* guo.py:94 */
-    const float t705 = (t701 * 0x1.0000000000000p-1f);  /* guo.py:94 */
-    const float t706 = (t702 * 0x1.0000000000000p-1f);  /* guo.py:94 */
-    const float t707 = (t703 * 0x1.0000000000000p-1f);  /* guo.py:94 */
-    const float t708 = (t704 * 0x1.0000000000000p-1f);  /* guo.py:94 */
+    const float t705 = (t701 * 0x1p-1f);  /* guo.py:94 */
+    const float t706 = (t702 * 0x1p-1f);  /* guo.py:94 */
+    const float t707 = (t703 * 0x1p-1f);  /* guo.py:94 */
+    const float t708 = (t704 * 0x1p-1f);  /* guo.py:94 */
     const float t709 = (t420 * t82);  /* guo.py:95 */
     const float t710 = (t427 * t82);  /* guo.py:95 */
     const float t711 = (t434 * t82);  /* guo.py:95 */
@@ -757,10 +757,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t724 = (t710 + t716);  /* guo.py:95 */
     const float t725 = (t711 + t719);  /* guo.py:95 */
     const float t726 = (t712 + t722);  /* guo.py:95 */
-    const float t727 = (t723 * -0x1.0000000000000p-1f);  /* guo.py:95 */
-    const float t728 = (t724 * -0x1.0000000000000p-1f);  /* guo.py:95 */
-    const float t729 = (t725 * -0x1.0000000000000p-1f);  /* guo.py:95 */
-    const float t730 = (t726 * -0x1.0000000000000p-1f);  /* guo.py:95 */
+    const float t727 = (t723 * -0x1p-1f);  /* guo.py:95 */
+    const float t728 = (t724 * -0x1p-1f);  /* guo.py:95 */
+    const float t729 = (t725 * -0x1p-1f);  /* guo.py:95 */
+    const float t730 = (t726 * -0x1p-1f);  /* guo.py:95 */
     const float t731 = (0.0f * t727);  /* guo.py:96 */
     const float t732 = (0.0f * t728);  /* guo.py:96 */
     const float t733 = (t731 - t732);  /* guo.py:96 */
@@ -809,10 +809,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t776 = (t728 - t760);  /* guo.py:96 */
     const float t777 = (t729 - t767);  /* guo.py:96 */
     const float t778 = (t730 - t774);  /* guo.py:96 */
-    const float t779 = (t775 * 0x1.0000000000000p-1f);  /* guo.py:96 */
-    const float t780 = (t776 * 0x1.0000000000000p-1f);  /* guo.py:96 */
-    const float t781 = (t777 * 0x1.0000000000000p-1f);  /* guo.py:96 */
-    const float t782 = (t778 * 0x1.0000000000000p-1f);  /* guo.py:96 */
+    const float t779 = (t775 * 0x1p-1f);  /* guo.py:96 */
+    const float t780 = (t776 * 0x1p-1f);  /* guo.py:96 */
+    const float t781 = (t777 * 0x1p-1f);  /* guo.py:96 */
+    const float t782 = (t778 * 0x1p-1f);  /* guo.py:96 */
     const float t783 = (t394 * t705);  /* guo.py:87 */
     const float t784 = (t396 * t706);  /* guo.py:87 */
     const float t785 = (t783 + t784);  /* guo.py:87 */
@@ -843,7 +843,7 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t816 = (t781 - t815);  /* guo.py:88 */
     const float t818 = (t400 * t808);  /* guo.py:88 */
     const float t819 = (t782 - t818);  /* guo.py:88 */
-    const float t821 = (-0x1.0000000000000p-1f * t96);  /* guo.py:93 */
+    const float t821 = (-0x1p-1f * t96);  /* guo.py:93 */
     const float t822 = (t420 * t821);  /* guo.py:93 */
     const float t823 = (t427 * t821);  /* guo.py:93 */
     const float t824 = (t434 * t821);  /* guo.py:93 */
@@ -912,10 +912,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t887 = (t875 - t881);  /* guo.py:94 */
     const float t888 = (t876 - t883);  /* guo.py:94 */
     const float t889 = (t877 - t885);  /* guo.py:94 */
-    const float t890 = (t886 * 0x1.0000000000000p-1f);  /* guo.py:94 */
-    const float t891 = (t887 * 0x1.0000000000000p-1f);  /* guo.py:94 */
-    const float t892 = (t888 * 0x1.0000000000000p-1f);  /* guo.py:94 */
-    const float t893 = (t889 * 0x1.0000000000000p-1f);  /* guo.py:94 */
+    const float t890 = (t886 * 0x1p-1f);  /* guo.py:94 */
+    const float t891 = (t887 * 0x1p-1f);  /* guo.py:94 */
+    const float t892 = (t888 * 0x1p-1f);  /* guo.py:94 */
+    const float t893 = (t889 * 0x1p-1f);  /* guo.py:94 */
     const float t894 = (t420 * t84);  /* guo.py:95 */
     const float t895 = (t427 * t84);  /* guo.py:95 */
     const float t896 = (t434 * t84);  /* guo.py:95 */
@@ -932,10 +932,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t907 = (t895 + t901);  /* guo.py:95 */
     const float t908 = (t896 + t903);  /* guo.py:95 */
     const float t909 = (t897 + t905);  /* guo.py:95 */
-    const float t910 = (t906 * -0x1.0000000000000p-1f);  /* guo.py:95 */
-    const float t911 = (t907 * -0x1.0000000000000p-1f);  /* guo.py:95 */
-    const float t912 = (t908 * -0x1.0000000000000p-1f);  /* guo.py:95 */
-    const float t913 = (t909 * -0x1.0000000000000p-1f);  /* guo.py:95 */
+    const float t910 = (t906 * -0x1p-1f);  /* guo.py:95 */
+    const float t911 = (t907 * -0x1p-1f);  /* guo.py:95 */
+    const float t912 = (t908 * -0x1p-1f);  /* guo.py:95 */
+    const float t913 = (t909 * -0x1p-1f);  /* guo.py:95 */
     const float t914 = (0.0f * t910);  /* guo.py:96 */
     const float t915 = (0.0f * t911);  /* guo.py:96 */
     const float t916 = (t914 - t915);  /* guo.py:96 */
@@ -984,10 +984,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t959 = (t911 - t943);  /* guo.py:96 */
     const float t960 = (t912 - t950);  /* guo.py:96 */
     const float t961 = (t913 - t957);  /* guo.py:96 */
-    const float t962 = (t958 * 0x1.0000000000000p-1f);  /* guo.py:96 */
-    const float t963 = (t959 * 0x1.0000000000000p-1f);  /* guo.py:96 */
-    const float t964 = (t960 * 0x1.0000000000000p-1f);  /* guo.py:96 */
-    const float t965 = (t961 * 0x1.0000000000000p-1f);  /* guo.py:96 */
+    const float t962 = (t958 * 0x1p-1f);  /* guo.py:96 */
+    const float t963 = (t959 * 0x1p-1f);  /* guo.py:96 */
+    const float t964 = (t960 * 0x1p-1f);  /* guo.py:96 */
+    const float t965 = (t961 * 0x1p-1f);  /* guo.py:96 */
     const float t966 = (t394 * t890);  /* guo.py:87 */
     const float t967 = (t396 * t891);  /* guo.py:87 */
     const float t968 = (t966 + t967);  /* guo.py:87 */
@@ -1018,9 +1018,9 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t999 = (t964 - t998);  /* guo.py:88 */
     const float t1001 = (t400 * t991);  /* guo.py:88 */
     const float t1002 = (t965 - t1001);  /* guo.py:88 */
-    const float t1004 = ((0x1.0000000000000p-4f < t392) ? t392 : 0x1.0000000000000p-4f);  /* guo.py:151 */
-    const float t1005 = (0x1.0000000000000p+0f / t1004);  /* guo.py:151 */
-    const float t1006 = (0x1.0000000000000p+2f * t118);  /* guo.py:152 */
+    const float t1004 = ((0x1p-4f < t392) ? t392 : 0x1p-4f);  /* guo.py:151 */
+    const float t1005 = (0x1p+0f / t1004);  /* guo.py:151 */
+    const float t1006 = (0x1p+2f * t118);  /* guo.py:152 */
     const float t1007 = (t1006 * t1005);  /* guo.py:152 */
     const float t1008 = (t604 * t604);  /* algebraic.py:387 */
     const float t1009 = (t607 * t607);  /* algebraic.py:387 */
@@ -1046,8 +1046,8 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1029 = (t1027 + t1028);  /* algebraic.py:192 */
     const float t1030 = (t1022 + t1029);  /* algebraic.py:192 */
     const float t1031 = (t1007 * t1030);  /* algebraic.py:388 */
-    const float t1033 = (t1031 * 0x1.0000000000000p-6f);  /* algebraic.py:388 */
-    const float t1034 = ((t1033 < 0x1.0000000000000p+0f) ? 0x1.0000000000000p+0f : t1033);  /* algebraic.py:388 */
+    const float t1033 = (t1031 * 0x1p-6f);  /* algebraic.py:388 */
+    const float t1034 = ((t1033 < 0x1p+0f) ? 0x1p+0f : t1033);  /* algebraic.py:388 */
     const float t1035 = (t1007 / t1034);  /* algebraic.py:388 */
     const float t1036 = (t1008 + t1015);  /* algebraic.py:192 */
     const float t1037 = (t1036 + t1023);  /* algebraic.py:192 */
@@ -1099,8 +1099,8 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1092 = (t1035 * t1091);  /* algebraic.py:392 */
     const float t1094 = (t114 * t118);  /* guo.py:153 */
     const float t1095 = ((0.0f < t1094) ? t1094 : 0.0f);  /* guo.py:153 */
-    const float t1097 = ((t1095 < 0x1.0000000000000p+4f) ? t1095 : 0x1.0000000000000p+4f);  /* guo.py:153 */
-    const float t1098 = (0x1.0000000000000p+2f * t1097);  /* guo.py:153 */
+    const float t1097 = ((t1095 < 0x1p+4f) ? t1095 : 0x1p+4f);  /* guo.py:153 */
+    const float t1098 = (0x1p+2f * t1097);  /* guo.py:153 */
     const float t1099 = (t1098 * t1005);  /* guo.py:153 */
     const float t1100 = (t623 * t623);  /* algebraic.py:387 */
     const float t1101 = (t626 * t626);  /* algebraic.py:387 */
@@ -1126,8 +1126,8 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1121 = (t1119 + t1120);  /* algebraic.py:192 */
     const float t1122 = (t1114 + t1121);  /* algebraic.py:192 */
     const float t1123 = (t1099 * t1122);  /* algebraic.py:388 */
-    const float t1125 = (t1123 * 0x1.0000000000000p-7f);  /* algebraic.py:388 */
-    const float t1126 = ((t1125 < 0x1.0000000000000p+0f) ? 0x1.0000000000000p+0f : t1125);  /* algebraic.py:388 */
+    const float t1125 = (t1123 * 0x1p-7f);  /* algebraic.py:388 */
+    const float t1126 = ((t1125 < 0x1p+0f) ? 0x1p+0f : t1125);  /* algebraic.py:388 */
     const float t1127 = (t1099 / t1126);  /* algebraic.py:388 */
     const float t1128 = (t1100 + t1107);  /* algebraic.py:192 */
     const float t1129 = (t1128 + t1115);  /* algebraic.py:192 */
@@ -1183,83 +1183,83 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1189 = (t118 * t1188);  /* guo.py:158 */
     const float t1190 = (t1038 + t1189);  /* guo.py:158 */
     const float t1191 = (t1187 * t1187);  /* guo.py:159 */
-    const float t1193 = (0x1.0000000000000p+7f * t1191);  /* guo.py:159 */
+    const float t1193 = (0x1p+7f * t1191);  /* guo.py:159 */
     const float t1194 = (t110 ? t1130 : t1193);  /* guo.py:158 */
     const float t1195 = (t1190 + t1194);  /* guo.py:158 */
-    const float t1197 = (t1195 + 0x1.0000000000000p-12f);  /* guo.py:161 */
+    const float t1197 = (t1195 + 0x1p-12f);  /* guo.py:161 */
     const float t1199 = (t394 * t396);  /* guo.py:158 */
     const float t1200 = (t118 * t1199);  /* guo.py:158 */
     const float t1201 = (t1045 + t1200);  /* guo.py:158 */
     const float t1202 = (t1187 * t1186);  /* guo.py:159 */
-    const float t1203 = (0x1.0000000000000p+7f * t1202);  /* guo.py:159 */
+    const float t1203 = (0x1p+7f * t1202);  /* guo.py:159 */
     const float t1204 = (t110 ? t1137 : t1203);  /* guo.py:158 */
     const float t1205 = (t1201 + t1204);  /* guo.py:158 */
     const float t1207 = (t394 * t398);  /* guo.py:158 */
     const float t1208 = (t118 * t1207);  /* guo.py:158 */
     const float t1209 = (t1052 + t1208);  /* guo.py:158 */
     const float t1210 = (t1187 * t396);  /* guo.py:159 */
-    const float t1211 = (0x1.0000000000000p+7f * t1210);  /* guo.py:159 */
+    const float t1211 = (0x1p+7f * t1210);  /* guo.py:159 */
     const float t1212 = (t110 ? t1144 : t1211);  /* guo.py:158 */
     const float t1213 = (t1209 + t1212);  /* guo.py:158 */
     const float t1215 = (t394 * t400);  /* guo.py:158 */
     const float t1216 = (t118 * t1215);  /* guo.py:158 */
     const float t1217 = (t1059 + t1216);  /* guo.py:158 */
     const float t1218 = (t1187 * t394);  /* guo.py:159 */
-    const float t1219 = (0x1.0000000000000p+7f * t1218);  /* guo.py:159 */
+    const float t1219 = (0x1p+7f * t1218);  /* guo.py:159 */
     const float t1220 = (t110 ? t1151 : t1219);  /* guo.py:158 */
     const float t1221 = (t1217 + t1220);  /* guo.py:158 */
     const float t1223 = (t396 * t396);  /* guo.py:158 */
     const float t1224 = (t118 * t1223);  /* guo.py:158 */
     const float t1225 = (t1063 + t1224);  /* guo.py:158 */
     const float t1226 = (t1186 * t1186);  /* guo.py:159 */
-    const float t1227 = (0x1.0000000000000p+7f * t1226);  /* guo.py:159 */
+    const float t1227 = (0x1p+7f * t1226);  /* guo.py:159 */
     const float t1228 = (t110 ? t1155 : t1227);  /* guo.py:158 */
     const float t1229 = (t1225 + t1228);  /* guo.py:158 */
-    const float t1230 = (t1229 + 0x1.0000000000000p-12f);  /* guo.py:161 */
+    const float t1230 = (t1229 + 0x1p-12f);  /* guo.py:161 */
     const float t1232 = (t396 * t398);  /* guo.py:158 */
     const float t1233 = (t118 * t1232);  /* guo.py:158 */
     const float t1234 = (t1070 + t1233);  /* guo.py:158 */
     const float t1235 = (t1186 * t396);  /* guo.py:159 */
-    const float t1236 = (0x1.0000000000000p+7f * t1235);  /* guo.py:159 */
+    const float t1236 = (0x1p+7f * t1235);  /* guo.py:159 */
     const float t1237 = (t110 ? t1162 : t1236);  /* guo.py:158 */
     const float t1238 = (t1234 + t1237);  /* guo.py:158 */
     const float t1240 = (t396 * t400);  /* guo.py:158 */
     const float t1241 = (t118 * t1240);  /* guo.py:158 */
     const float t1242 = (t1077 + t1241);  /* guo.py:158 */
     const float t1243 = (t1186 * t394);  /* guo.py:159 */
-    const float t1244 = (0x1.0000000000000p+7f * t1243);  /* guo.py:159 */
+    const float t1244 = (0x1p+7f * t1243);  /* guo.py:159 */
     const float t1245 = (t110 ? t1169 : t1244);  /* guo.py:158 */
     const float t1246 = (t1242 + t1245);  /* guo.py:158 */
     const float t1248 = (t398 * t398);  /* guo.py:158 */
     const float t1249 = (t118 * t1248);  /* guo.py:158 */
     const float t1250 = (t1081 + t1249);  /* guo.py:158 */
-    const float t1251 = (0x1.0000000000000p+7f * t1223);  /* guo.py:159 */
+    const float t1251 = (0x1p+7f * t1223);  /* guo.py:159 */
     const float t1252 = (t110 ? t1173 : t1251);  /* guo.py:158 */
     const float t1253 = (t1250 + t1252);  /* guo.py:158 */
-    const float t1254 = (t1253 + 0x1.0000000000000p-12f);  /* guo.py:161 */
+    const float t1254 = (t1253 + 0x1p-12f);  /* guo.py:161 */
     const float t1256 = (t398 * t400);  /* guo.py:158 */
     const float t1257 = (t118 * t1256);  /* guo.py:158 */
     const float t1258 = (t1088 + t1257);  /* guo.py:158 */
-    const float t1259 = (0x1.0000000000000p+7f * t1199);  /* guo.py:159 */
+    const float t1259 = (0x1p+7f * t1199);  /* guo.py:159 */
     const float t1260 = (t110 ? t1180 : t1259);  /* guo.py:158 */
     const float t1261 = (t1258 + t1260);  /* guo.py:158 */
     const float t1263 = (t400 * t400);  /* guo.py:158 */
     const float t1264 = (t118 * t1263);  /* guo.py:158 */
     const float t1265 = (t1092 + t1264);  /* guo.py:158 */
-    const float t1266 = (0x1.0000000000000p+7f * t1188);  /* guo.py:159 */
+    const float t1266 = (0x1p+7f * t1188);  /* guo.py:159 */
     const float t1267 = (t110 ? t1184 : t1266);  /* guo.py:158 */
     const float t1268 = (t1265 + t1267);  /* guo.py:158 */
-    const float t1269 = (t1268 + 0x1.0000000000000p-12f);  /* guo.py:161 */
-    const float t1271 = (0x1.0000000000000p-1f * t34);  /* algebraic.py:268 */
+    const float t1269 = (t1268 + 0x1p-12f);  /* guo.py:161 */
+    const float t1271 = (0x1p-1f * t34);  /* algebraic.py:268 */
     const float t1272 = (u_gyr0 * t1271);  /* algebraic.py:268 */
-    const float t1273 = ((-0x1.0000000000000p-1f < t1272) ? t1272 : -0x1.0000000000000p-1f);  /* algebraic.py:268 */
-    const float t1274 = ((t1273 < 0x1.0000000000000p-1f) ? t1273 : 0x1.0000000000000p-1f);  /* algebraic.py:268 */
+    const float t1273 = ((-0x1p-1f < t1272) ? t1272 : -0x1p-1f);  /* algebraic.py:268 */
+    const float t1274 = ((t1273 < 0x1p-1f) ? t1273 : 0x1p-1f);  /* algebraic.py:268 */
     const float t1275 = (u_gyr1 * t1271);  /* algebraic.py:268 */
-    const float t1276 = ((-0x1.0000000000000p-1f < t1275) ? t1275 : -0x1.0000000000000p-1f);  /* algebraic.py:268 */
-    const float t1277 = ((t1276 < 0x1.0000000000000p-1f) ? t1276 : 0x1.0000000000000p-1f);  /* algebraic.py:268 */
+    const float t1276 = ((-0x1p-1f < t1275) ? t1275 : -0x1p-1f);  /* algebraic.py:268 */
+    const float t1277 = ((t1276 < 0x1p-1f) ? t1276 : 0x1p-1f);  /* algebraic.py:268 */
     const float t1278 = (u_gyr2 * t1271);  /* algebraic.py:268 */
-    const float t1279 = ((-0x1.0000000000000p-1f < t1278) ? t1278 : -0x1.0000000000000p-1f);  /* algebraic.py:268 */
-    const float t1280 = ((t1279 < 0x1.0000000000000p-1f) ? t1279 : 0x1.0000000000000p-1f);  /* algebraic.py:268 */
+    const float t1279 = ((-0x1p-1f < t1278) ? t1278 : -0x1p-1f);  /* algebraic.py:268 */
+    const float t1280 = ((t1279 < 0x1p-1f) ? t1279 : 0x1p-1f);  /* algebraic.py:268 */
     const float t1281 = (x_q0 * 0.0f);  /* algebraic.py:273 */
     const float t1282 = (x_q1 * t1274);  /* algebraic.py:273 */
     const float t1283 = (t1281 - t1282);  /* algebraic.py:273 */
@@ -1299,9 +1299,9 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1317 = (t1315 + t1316);  /* algebraic.py:273 */
     const float t1318 = (t1312 * t1312);  /* algebraic.py:273 */
     const float t1319 = (t1317 + t1318);  /* algebraic.py:273 */
-    const float t1320_m = ((0x1.0c6f7a0000000p-20f < t1319) ? t1319 : 0x1.0c6f7a0000000p-20f);  /* algebraic.py:273 */
+    const float t1320_m = ((0x1.0c6f7ap-20f < t1319) ? t1319 : 0x1.0c6f7ap-20f);  /* algebraic.py:273 */
     const float t1320_s = sqrtf(t1320_m);
-    const float t1320 = (0x1.0000000000000p+0f / t1320_s);
+    const float t1320 = (0x1p+0f / t1320_s);
     const float t1321 = (t1309 * t1320);  /* algebraic.py:273 */
     const float t1323 = (t1310 * t1320);  /* algebraic.py:273 */
     const float t1325 = (t1311 * t1320);  /* algebraic.py:273 */
@@ -1318,10 +1318,10 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1338 = (t400 * t1327);  /* guo.py:168 */
     const float t1339 = (t1337 + t1338);  /* guo.py:168 */
     const int t1340 = (t1339 < 0.0f);  /* guo.py:168 */
-    const float t1341 = (t394 * -0x1.0000000000000p+0f);  /* guo.py:168 */
-    const float t1342 = (t396 * -0x1.0000000000000p+0f);  /* guo.py:168 */
-    const float t1343 = (t398 * -0x1.0000000000000p+0f);  /* guo.py:168 */
-    const float t1344 = (t400 * -0x1.0000000000000p+0f);  /* guo.py:168 */
+    const float t1341 = (t394 * -0x1p+0f);  /* guo.py:168 */
+    const float t1342 = (t396 * -0x1p+0f);  /* guo.py:168 */
+    const float t1343 = (t398 * -0x1p+0f);  /* guo.py:168 */
+    const float t1344 = (t400 * -0x1p+0f);  /* guo.py:168 */
     const float t1345 = (t1340 ? t1341 : t394);  /* guo.py:168 */
     const float t1346 = (t1340 ? t1342 : t396);  /* guo.py:168 */
     const float t1347 = (t1340 ? t1343 : t398);  /* guo.py:168 */
@@ -1554,17 +1554,17 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1594 = (t1570 + t1254);  /* algebraic.py:241 */
     const float t1595 = (t1578 + t1261);  /* algebraic.py:241 */
     const float t1596 = (t1585 + t1269);  /* algebraic.py:241 */
-    const float t1597 = ((0x1.0000000000000p-12f < t1587) ? t1587 : 0x1.0000000000000p-12f);  /* algebraic.py:207 */
+    const float t1597 = ((0x1p-12f < t1587) ? t1587 : 0x1p-12f);  /* algebraic.py:207 */
     const float t1598 = sqrtf(t1597);  /* algebraic.py:207 */
-    const float t1600 = (0x1.0000000000000p+0f / t1598);  /* algebraic.py:209 */
+    const float t1600 = (0x1p+0f / t1598);  /* algebraic.py:209 */
     const float t1602 = (t1588 * t1600);  /* algebraic.py:214 */
     const float t1604 = (t1589 * t1600);  /* algebraic.py:214 */
     const float t1606 = (t1590 * t1600);  /* algebraic.py:214 */
     const float t1608 = (t1602 * t1602);  /* algebraic.py:206 */
     const float t1609 = (t1591 - t1608);  /* algebraic.py:206 */
-    const float t1610 = ((0x1.0000000000000p-12f < t1609) ? t1609 : 0x1.0000000000000p-12f);  /* algebraic.py:207 */
+    const float t1610 = ((0x1p-12f < t1609) ? t1609 : 0x1p-12f);  /* algebraic.py:207 */
     const float t1611 = sqrtf(t1610);  /* algebraic.py:207 */
-    const float t1613 = (0x1.0000000000000p+0f / t1611);  /* algebraic.py:209 */
+    const float t1613 = (0x1p+0f / t1611);  /* algebraic.py:209 */
     const float t1615 = (t1604 * t1602);  /* algebraic.py:213 */
     const float t1616 = (t1592 - t1615);  /* algebraic.py:213 */
     const float t1617 = (t1616 * t1613);  /* algebraic.py:214 */
@@ -1575,9 +1575,9 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1624 = (t1594 - t1623);  /* algebraic.py:206 */
     const float t1625 = (t1617 * t1617);  /* algebraic.py:206 */
     const float t1626 = (t1624 - t1625);  /* algebraic.py:206 */
-    const float t1627 = ((0x1.0000000000000p-12f < t1626) ? t1626 : 0x1.0000000000000p-12f);  /* algebraic.py:207 */
+    const float t1627 = ((0x1p-12f < t1626) ? t1626 : 0x1p-12f);  /* algebraic.py:207 */
     const float t1628 = sqrtf(t1627);  /* algebraic.py:207 */
-    const float t1630 = (0x1.0000000000000p+0f / t1628);  /* algebraic.py:209 */
+    const float t1630 = (0x1p+0f / t1628);  /* algebraic.py:209 */
     const float t1632 = (t1606 * t1604);  /* algebraic.py:213 */
     const float t1633 = (t1595 - t1632);  /* algebraic.py:213 */
     const float t1634 = (t1621 * t1617);  /* algebraic.py:213 */
@@ -1589,9 +1589,9 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1641 = (t1639 - t1640);  /* algebraic.py:206 */
     const float t1642 = (t1636 * t1636);  /* algebraic.py:206 */
     const float t1643 = (t1641 - t1642);  /* algebraic.py:206 */
-    const float t1644 = ((0x1.0000000000000p-12f < t1643) ? t1643 : 0x1.0000000000000p-12f);  /* algebraic.py:207 */
+    const float t1644 = ((0x1p-12f < t1643) ? t1643 : 0x1p-12f);  /* algebraic.py:207 */
     const float t1645 = sqrtf(t1644);  /* algebraic.py:207 */
-    const float t1647 = (0x1.0000000000000p+0f / t1645);  /* algebraic.py:209 */
+    const float t1647 = (0x1p+0f / t1645);  /* algebraic.py:209 */
     const float t1649 = (t1512 * t1600);  /* algebraic.py:226 */
     const float t1651 = (t1602 * t1649);  /* algebraic.py:225 */
     const float t1652 = (t1521 - t1651);  /* algebraic.py:225 */
@@ -1684,8 +1684,8 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1758 = (t1667 * t1751);  /* algebraic.py:249 */
     const float t1759 = (t1757 + t1758);  /* algebraic.py:192 */
     const float t1760 = (t1321 + t1759);  /* algebraic.py:249 */
-    const float t1762 = ((-0x1.0000000000000p+1f < t1760) ? t1760 : -0x1.0000000000000p+1f);  /* algebraic.py:249 */
-    const float t1763 = ((t1762 < 0x1.0000000000000p+1f) ? t1762 : 0x1.0000000000000p+1f);  /* algebraic.py:249 */
+    const float t1762 = ((-0x1p+1f < t1760) ? t1760 : -0x1p+1f);  /* algebraic.py:249 */
+    const float t1763 = ((t1762 < 0x1p+1f) ? t1762 : 0x1p+1f);  /* algebraic.py:249 */
     const float t1764 = (t1669 * t1733);  /* algebraic.py:249 */
     const float t1765 = (t1673 * t1737);  /* algebraic.py:249 */
     const float t1766 = (t1764 + t1765);  /* algebraic.py:192 */
@@ -1694,8 +1694,8 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1769 = (t1687 * t1751);  /* algebraic.py:249 */
     const float t1770 = (t1768 + t1769);  /* algebraic.py:192 */
     const float t1771 = (t1323 + t1770);  /* algebraic.py:249 */
-    const float t1772 = ((-0x1.0000000000000p+1f < t1771) ? t1771 : -0x1.0000000000000p+1f);  /* algebraic.py:249 */
-    const float t1773 = ((t1772 < 0x1.0000000000000p+1f) ? t1772 : 0x1.0000000000000p+1f);  /* algebraic.py:249 */
+    const float t1772 = ((-0x1p+1f < t1771) ? t1771 : -0x1p+1f);  /* algebraic.py:249 */
+    const float t1773 = ((t1772 < 0x1p+1f) ? t1772 : 0x1p+1f);  /* algebraic.py:249 */
     const float t1774 = (t1689 * t1733);  /* algebraic.py:249 */
     const float t1775 = (t1693 * t1737);  /* algebraic.py:249 */
     const float t1776 = (t1774 + t1775);  /* algebraic.py:192 */
@@ -1704,8 +1704,8 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1779 = (t1707 * t1751);  /* algebraic.py:249 */
     const float t1780 = (t1778 + t1779);  /* algebraic.py:192 */
     const float t1781 = (t1325 + t1780);  /* algebraic.py:249 */
-    const float t1782 = ((-0x1.0000000000000p+1f < t1781) ? t1781 : -0x1.0000000000000p+1f);  /* algebraic.py:249 */
-    const float t1783 = ((t1782 < 0x1.0000000000000p+1f) ? t1782 : 0x1.0000000000000p+1f);  /* algebraic.py:249 */
+    const float t1782 = ((-0x1p+1f < t1781) ? t1781 : -0x1p+1f);  /* algebraic.py:249 */
+    const float t1783 = ((t1782 < 0x1p+1f) ? t1782 : 0x1p+1f);  /* algebraic.py:249 */
     const float t1784 = (t1709 * t1733);  /* algebraic.py:249 */
     const float t1785 = (t1713 * t1737);  /* algebraic.py:249 */
     const float t1786 = (t1784 + t1785);  /* algebraic.py:192 */
@@ -1714,8 +1714,8 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1789 = (t1727 * t1751);  /* algebraic.py:249 */
     const float t1790 = (t1788 + t1789);  /* algebraic.py:192 */
     const float t1791 = (t1327 + t1790);  /* algebraic.py:249 */
-    const float t1792 = ((-0x1.0000000000000p+1f < t1791) ? t1791 : -0x1.0000000000000p+1f);  /* algebraic.py:249 */
-    const float t1793 = ((t1792 < 0x1.0000000000000p+1f) ? t1792 : 0x1.0000000000000p+1f);  /* algebraic.py:249 */
+    const float t1792 = ((-0x1p+1f < t1791) ? t1791 : -0x1p+1f);  /* algebraic.py:249 */
+    const float t1793 = ((t1792 < 0x1p+1f) ? t1792 : 0x1p+1f);  /* algebraic.py:249 */
     const float t1794 = (t1649 * t1649);  /* algebraic.py:254 */
     const float t1795 = (t1653 * t1653);  /* algebraic.py:254 */
     const float t1796 = (t1794 + t1795);  /* algebraic.py:192 */
@@ -1807,9 +1807,9 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1892 = (t1890 + t1891);  /* algebraic.py:368 */
     const float t1893 = (t1793 * t1793);  /* algebraic.py:368 */
     const float t1894 = (t1892 + t1893);  /* algebraic.py:368 */
-    const float t1895_m = ((0x1.0c6f7a0000000p-20f < t1894) ? t1894 : 0x1.0c6f7a0000000p-20f);  /* algebraic.py:368 */
+    const float t1895_m = ((0x1.0c6f7ap-20f < t1894) ? t1894 : 0x1.0c6f7ap-20f);  /* algebraic.py:368 */
     const float t1895_s = sqrtf(t1895_m);
-    const float t1895 = (0x1.0000000000000p+0f / t1895_s);
+    const float t1895 = (0x1p+0f / t1895_s);
     const float t1896 = (t1763 * t1895);  /* algebraic.py:368 */
     const float t1898 = (t1773 * t1895);  /* algebraic.py:368 */
     const float t1900 = (t1783 * t1895);  /* algebraic.py:368 */
@@ -1831,9 +1831,9 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1918 = (t1197 + t1230);  /* algebraic.py:379 */
     const float t1919 = (t1918 + t1254);  /* algebraic.py:379 */
     const float t1920 = (t1919 + t1269);  /* algebraic.py:379 */
-    const float t1922 = (t1920 * 0x1.0000000000000p-3f);  /* algebraic.py:380 */
-    const float t1923 = ((t1922 < 0x1.0000000000000p+0f) ? 0x1.0000000000000p+0f : t1922);  /* algebraic.py:380 */
-    const float t1924 = (0x1.0000000000000p+0f / t1923);  /* algebraic.py:380 */
+    const float t1922 = (t1920 * 0x1p-3f);  /* algebraic.py:380 */
+    const float t1923 = ((t1922 < 0x1p+0f) ? 0x1p+0f : t1922);  /* algebraic.py:380 */
+    const float t1924 = (0x1p+0f / t1923);  /* algebraic.py:380 */
     const float t1925 = (t1924 * t1197);  /* algebraic.py:381 */
     const float t1927 = (t1924 * t1205);  /* algebraic.py:381 */
     const float t1929 = (t1924 * t1213);  /* algebraic.py:381 */

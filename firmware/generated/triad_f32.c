@@ -24,20 +24,20 @@
 void triad_f32_default_params(triad_f32_params *p)
 {
     p->primary = 0.0f;
-    p->dip_deg = 0x1.0000000000000p+6f;
-    p->min_angle_deg = 0x1.4000000000000p+2f;
+    p->dip_deg = 0x1p+6f;
+    p->min_angle_deg = 0x1.4p+2f;
 }
 
 int triad_f32_init(triad_f32_state *s, const triad_f32_params *p)
 {
     int status = 0;
-    if (!((p->min_angle_deg >= 0x1.0000000000000p-1f) && (p->min_angle_deg <= 0x1.6800000000000p+5f))) {
+    if (!((p->min_angle_deg >= 0x1p-1f) && (p->min_angle_deg <= 0x1.68p+5f))) {
         status = -3;
     }
-    if (!((p->dip_deg >= -0x1.6800000000000p+6f) && (p->dip_deg <= 0x1.6800000000000p+6f))) {
+    if (!((p->dip_deg >= -0x1.68p+6f) && (p->dip_deg <= 0x1.68p+6f))) {
         status = -2;
     }
-    if (!((p->primary >= 0.0f) && (p->primary <= 0x1.0000000000000p+0f))) {
+    if (!((p->primary >= 0.0f) && (p->primary <= 0x1p+0f))) {
         status = -1;
     }
     if (status != 0) {
@@ -45,7 +45,7 @@ int triad_f32_init(triad_f32_state *s, const triad_f32_params *p)
     } else {
         s->params = *p;
     }
-    s->q[0] = 0x1.0000000000000p+0f;
+    s->q[0] = 0x1p+0f;
     s->q[1] = 0.0f;
     s->q[2] = 0.0f;
     s->q[3] = 0.0f;
@@ -77,32 +77,32 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const int x_valid = (s->valid != 0u);
     const int32_t x_rejected = s->rejected;
     const float t22 = fabsf(u_gyr0);  /* common.py:50 */
-    const int t24 = (t22 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t24 = (t22 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t25 = fabsf(u_gyr1);  /* common.py:50 */
-    const int t26 = (t25 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t26 = (t25 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t27 = fabsf(u_gyr2);  /* common.py:50 */
-    const int t28 = (t27 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t28 = (t27 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t29 = (t24 && t26);  /* common.py:50 */
     const int t30 = (t29 && t28);  /* common.py:50 */
     const float t31 = fabsf(u_acc0);  /* common.py:50 */
-    const int t33 = (t31 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t33 = (t31 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t34 = fabsf(u_acc1);  /* common.py:50 */
-    const int t35 = (t34 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t35 = (t34 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t36 = fabsf(u_acc2);  /* common.py:50 */
-    const int t37 = (t36 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t37 = (t36 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t38 = (t33 && t35);  /* common.py:50 */
     const int t39 = (t38 && t37);  /* common.py:50 */
     const int t40 = (0.0f < u_dt);  /* common.py:64 */
-    const int t41 = (u_dt <= 0x1.0000000000000p+0f);  /* common.py:64 */
+    const int t41 = (u_dt <= 0x1p+0f);  /* common.py:64 */
     const int t42 = (t30 && t39);  /* common.py:63 */
     const int t43 = (t42 && t40);  /* common.py:63 */
     const int t44 = (t43 && t41);  /* common.py:63 */
     const float t45 = fabsf(u_mag0);  /* common.py:50 */
-    const int t47 = (t45 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t47 = (t45 <= 0x1.324p+12f);  /* common.py:50 */
     const float t48 = fabsf(u_mag1);  /* common.py:50 */
-    const int t49 = (t48 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t49 = (t48 <= 0x1.324p+12f);  /* common.py:50 */
     const float t50 = fabsf(u_mag2);  /* common.py:50 */
-    const int t51 = (t50 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t51 = (t50 <= 0x1.324p+12f);  /* common.py:50 */
     const int t52 = (t47 && t49);  /* common.py:50 */
     const int t53 = (t52 && t51);  /* common.py:50 */
     const int t54 = (t44 && u_mag_valid);  /* common.py:67 */
@@ -117,9 +117,9 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t63 = (t61 + t62);  /* triad.py:75 */
     const float t64 = (u_acc2 * u_acc2);  /* triad.py:75 */
     const float t65 = (t63 + t64);  /* triad.py:75 */
-    const float t66_m = ((0x1.0c6f7a0000000p-20f < t65) ? t65 : 0x1.0c6f7a0000000p-20f);  /* triad.py:75 */
+    const float t66_m = ((0x1.0c6f7ap-20f < t65) ? t65 : 0x1.0c6f7ap-20f);  /* triad.py:75 */
     const float t66_s = sqrtf(t66_m);
-    const float t66 = (0x1.0000000000000p+0f / t66_s);
+    const float t66 = (0x1p+0f / t66_s);
     const float t67 = (u_acc0 * t66);  /* triad.py:75 */
     const float t69 = (u_acc1 * t66);  /* triad.py:75 */
     const float t71 = (u_acc2 * t66);  /* triad.py:75 */
@@ -128,58 +128,58 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t75 = (t73 + t74);  /* triad.py:76 */
     const float t76 = (u_mag2 * u_mag2);  /* triad.py:76 */
     const float t77 = (t75 + t76);  /* triad.py:76 */
-    const float t78_m = ((0x1.0c6f7a0000000p-20f < t77) ? t77 : 0x1.0c6f7a0000000p-20f);  /* triad.py:76 */
+    const float t78_m = ((0x1.0c6f7ap-20f < t77) ? t77 : 0x1.0c6f7ap-20f);  /* triad.py:76 */
     const float t78_s = sqrtf(t78_m);
-    const float t78 = (0x1.0000000000000p+0f / t78_s);
+    const float t78 = (0x1p+0f / t78_s);
     const float t79 = (u_mag0 * t78);  /* triad.py:76 */
     const float t81 = (u_mag1 * t78);  /* triad.py:76 */
     const float t83 = (u_mag2 * t78);  /* triad.py:76 */
-    const float t86 = (p_dip_deg * 0x1.1df46a0000000p-6f);  /* triad.py:78 */
-    const float t88 = (t86 * 0x1.45f3060000000p-1f);  /* triad.py:78 */
-    const float t90 = (t88 + 0x1.0000000000000p-1f);  /* triad.py:78 */
-    const float t91_a = ((-0x1.0000000000000p+30f < t90) ? t90 : -0x1.0000000000000p+30f);  /* triad.py:78 */
-    const float t91_b = ((t91_a < 0x1.0000000000000p+30f) ? t91_a : 0x1.0000000000000p+30f);
+    const float t86 = (p_dip_deg * 0x1.1df46ap-6f);  /* triad.py:78 */
+    const float t88 = (t86 * 0x1.45f306p-1f);  /* triad.py:78 */
+    const float t90 = (t88 + 0x1p-1f);  /* triad.py:78 */
+    const float t91_a = ((-0x1p+30f < t90) ? t90 : -0x1p+30f);  /* triad.py:78 */
+    const float t91_b = ((t91_a < 0x1p+30f) ? t91_a : 0x1p+30f);
     const float t91_i = ((float)((int32_t)t91_b));
-    const float t91 = ((t91_b < t91_i) ? (t91_i - 0x1.0000000000000p+0f) : t91_i);
-    const float t93 = (t91 * 0x1.9200000000000p+0f);  /* triad.py:78 */
+    const float t91 = ((t91_b < t91_i) ? (t91_i - 0x1p+0f) : t91_i);
+    const float t93 = (t91 * 0x1.92p+0f);  /* triad.py:78 */
     const float t94 = (t86 - t93);  /* triad.py:78 */
-    const float t96 = (t91 * 0x1.fb54440000000p-12f);  /* triad.py:78 */
+    const float t96 = (t91 * 0x1.fb5444p-12f);  /* triad.py:78 */
     const float t97 = (t94 - t96);  /* triad.py:78 */
-    const float t100 = (t91 * 0x1.0000000000000p-2f);  /* triad.py:78 */
-    const float t101_a = ((-0x1.0000000000000p+30f < t100) ? t100 : -0x1.0000000000000p+30f);  /* triad.py:78 */
-    const float t101_b = ((t101_a < 0x1.0000000000000p+30f) ? t101_a : 0x1.0000000000000p+30f);
+    const float t100 = (t91 * 0x1p-2f);  /* triad.py:78 */
+    const float t101_a = ((-0x1p+30f < t100) ? t100 : -0x1p+30f);  /* triad.py:78 */
+    const float t101_b = ((t101_a < 0x1p+30f) ? t101_a : 0x1p+30f);
     const float t101_i = ((float)((int32_t)t101_b));
-    const float t101 = ((t101_b < t101_i) ? (t101_i - 0x1.0000000000000p+0f) : t101_i);
-    const float t103 = (0x1.0000000000000p+2f * t101);  /* triad.py:78 */
+    const float t101 = ((t101_b < t101_i) ? (t101_i - 0x1p+0f) : t101_i);
+    const float t103 = (0x1p+2f * t101);  /* triad.py:78 */
     const float t104 = (t91 - t103);  /* triad.py:78 */
     const float t105 = (t97 * t97);  /* triad.py:78 */
-    const float t107 = (-0x1.ae64560000000p-26f * t105);  /* triad.py:78 */
-    const float t109 = (t107 + 0x1.71de3a0000000p-19f);  /* triad.py:78 */
+    const float t107 = (-0x1.ae6456p-26f * t105);  /* triad.py:78 */
+    const float t109 = (t107 + 0x1.71de3ap-19f);  /* triad.py:78 */
     const float t110 = (t109 * t105);  /* triad.py:78 */
-    const float t112 = (t110 + -0x1.a01a020000000p-13f);  /* triad.py:78 */
+    const float t112 = (t110 + -0x1.a01a02p-13f);  /* triad.py:78 */
     const float t113 = (t112 * t105);  /* triad.py:78 */
-    const float t115 = (t113 + 0x1.1111120000000p-7f);  /* triad.py:78 */
+    const float t115 = (t113 + 0x1.111112p-7f);  /* triad.py:78 */
     const float t116 = (t115 * t105);  /* triad.py:78 */
-    const float t118 = (t116 + -0x1.5555560000000p-3f);  /* triad.py:78 */
+    const float t118 = (t116 + -0x1.555556p-3f);  /* triad.py:78 */
     const float t119 = (t97 * t105);  /* triad.py:78 */
     const float t120 = (t119 * t118);  /* triad.py:78 */
     const float t121 = (t97 + t120);  /* triad.py:78 */
-    const float t123 = (0x1.1eed8e0000000p-29f * t105);  /* triad.py:78 */
-    const float t125 = (t123 + -0x1.27e4fc0000000p-22f);  /* triad.py:78 */
+    const float t123 = (0x1.1eed8ep-29f * t105);  /* triad.py:78 */
+    const float t125 = (t123 + -0x1.27e4fcp-22f);  /* triad.py:78 */
     const float t126 = (t125 * t105);  /* triad.py:78 */
-    const float t128 = (t126 + 0x1.a01a020000000p-16f);  /* triad.py:78 */
+    const float t128 = (t126 + 0x1.a01a02p-16f);  /* triad.py:78 */
     const float t129 = (t128 * t105);  /* triad.py:78 */
-    const float t131 = (t129 + -0x1.6c16c20000000p-10f);  /* triad.py:78 */
+    const float t131 = (t129 + -0x1.6c16c2p-10f);  /* triad.py:78 */
     const float t132 = (t131 * t105);  /* triad.py:78 */
-    const float t134 = (t132 + 0x1.5555560000000p-5f);  /* triad.py:78 */
-    const float t135 = (0x1.0000000000000p-1f * t105);  /* triad.py:78 */
-    const float t136 = (0x1.0000000000000p+0f - t135);  /* triad.py:78 */
+    const float t134 = (t132 + 0x1.555556p-5f);  /* triad.py:78 */
+    const float t135 = (0x1p-1f * t105);  /* triad.py:78 */
+    const float t136 = (0x1p+0f - t135);  /* triad.py:78 */
     const float t137 = (t105 * t105);  /* triad.py:78 */
     const float t138 = (t137 * t134);  /* triad.py:78 */
     const float t139 = (t136 + t138);  /* triad.py:78 */
-    const int t140 = (t104 < 0x1.0000000000000p-1f);  /* triad.py:78 */
-    const int t142 = (t104 < 0x1.8000000000000p+0f);  /* triad.py:78 */
-    const int t144 = (t104 < 0x1.4000000000000p+1f);  /* triad.py:78 */
+    const int t140 = (t104 < 0x1p-1f);  /* triad.py:78 */
+    const int t142 = (t104 < 0x1.8p+0f);  /* triad.py:78 */
+    const int t144 = (t104 < 0x1.4p+1f);  /* triad.py:78 */
     const float t145 = (-t121);  /* triad.py:78 */
     const float t146 = (-t139);  /* triad.py:78 */
     const float t147 = (t144 ? t145 : t146);  /* triad.py:78 */
@@ -189,7 +189,7 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t151 = (t142 ? t145 : t150);  /* triad.py:78 */
     const float t152 = (t140 ? t139 : t151);  /* triad.py:78 */
     const float t155 = (-t149);  /* triad.py:79 */
-    const int t156 = (0x1.0000000000000p-1f < p_primary);  /* triad.py:80 */
+    const int t156 = (0x1p-1f < p_primary);  /* triad.py:80 */
     const float t157 = (t156 ? t79 : t67);  /* triad.py:81 */
     const float t158 = (t156 ? t81 : t69);  /* triad.py:81 */
     const float t159 = (t156 ? t83 : t71);  /* triad.py:81 */
@@ -197,9 +197,9 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t161 = (t156 ? t69 : t81);  /* triad.py:82 */
     const float t162 = (t156 ? t71 : t83);  /* triad.py:82 */
     const float t163 = (t156 ? t152 : 0.0f);  /* triad.py:83 */
-    const float t164 = (t156 ? t155 : 0x1.0000000000000p+0f);  /* triad.py:83 */
+    const float t164 = (t156 ? t155 : 0x1p+0f);  /* triad.py:83 */
     const float t165 = (t156 ? 0.0f : t152);  /* triad.py:84 */
-    const float t166 = (t156 ? 0x1.0000000000000p+0f : t155);  /* triad.py:84 */
+    const float t166 = (t156 ? 0x1p+0f : t155);  /* triad.py:84 */
     const float t167 = (t158 * t162);  /* triad.py:29 */
     const float t168 = (t159 * t161);  /* triad.py:29 */
     const float t169 = (t167 - t168);  /* triad.py:29 */
@@ -214,9 +214,9 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t181 = (t179 + t180);  /* triad.py:31 */
     const float t182 = (t175 * t175);  /* triad.py:31 */
     const float t183 = (t181 + t182);  /* triad.py:31 */
-    const float t184_m = ((0x1.1979980000000p-40f < t183) ? t183 : 0x1.1979980000000p-40f);  /* triad.py:31 */
+    const float t184_m = ((0x1.197998p-40f < t183) ? t183 : 0x1.197998p-40f);  /* triad.py:31 */
     const float t184_s = sqrtf(t184_m);
-    const float t184 = (0x1.0000000000000p+0f / t184_s);
+    const float t184 = (0x1p+0f / t184_s);
     const float t185 = (t169 * t184);  /* triad.py:31 */
     const float t187 = (t172 * t184);  /* triad.py:31 */
     const float t189 = (t175 * t184);  /* triad.py:31 */
@@ -234,9 +234,9 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t205 = (t203 + t204);  /* triad.py:31 */
     const float t206 = (t199 * t199);  /* triad.py:31 */
     const float t207 = (t205 + t206);  /* triad.py:31 */
-    const float t208_m = ((0x1.1979980000000p-40f < t207) ? t207 : 0x1.1979980000000p-40f);  /* triad.py:31 */
+    const float t208_m = ((0x1.197998p-40f < t207) ? t207 : 0x1.197998p-40f);  /* triad.py:31 */
     const float t208_s = sqrtf(t208_m);
-    const float t208 = (0x1.0000000000000p+0f / t208_s);
+    const float t208 = (0x1p+0f / t208_s);
     const float t209 = (t193 * t208);  /* triad.py:31 */
     const float t211 = (t196 * t208);  /* triad.py:31 */
     const float t213 = (t199 * t208);  /* triad.py:31 */
@@ -303,129 +303,129 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t283 = (t281 + t282);  /* triad.py:44 */
     const float t284 = (t232 * t223);  /* triad.py:44 */
     const float t285 = (t283 + t284);  /* triad.py:44 */
-    const float t287 = (t237 + t261);  /* common.py:106 */
-    const float t288 = (t287 + t285);  /* common.py:106 */
-    const float t289 = (0x1.0000000000000p+0f + t288);  /* common.py:108 */
-    const float t290 = (0x1.0000000000000p+0f + t237);  /* common.py:109 */
-    const float t291 = (t290 - t261);  /* common.py:109 */
-    const float t292 = (t291 - t285);  /* common.py:109 */
-    const float t293 = (0x1.0000000000000p+0f - t237);  /* common.py:110 */
-    const float t294 = (t293 + t261);  /* common.py:110 */
-    const float t295 = (t294 - t285);  /* common.py:110 */
-    const float t296 = (t293 - t261);  /* common.py:111 */
-    const float t297 = (t296 + t285);  /* common.py:111 */
-    const int t298 = (t292 <= t289);  /* common.py:112 */
-    const int t299 = (t295 <= t289);  /* common.py:112 */
-    const int t300 = (t297 <= t289);  /* common.py:112 */
-    const int t301 = (t298 && t299);  /* common.py:112 */
-    const int t302 = (t301 && t300);  /* common.py:112 */
-    const int t303 = (!t302);  /* common.py:113 */
-    const int t304 = (t295 <= t292);  /* common.py:113 */
-    const int t305 = (t297 <= t292);  /* common.py:113 */
-    const int t306 = (t303 && t304);  /* common.py:113 */
-    const int t307 = (t306 && t305);  /* common.py:113 */
-    const int t308 = (!t307);  /* common.py:114 */
-    const int t309 = (t297 <= t295);  /* common.py:114 */
-    const int t310 = (t303 && t308);  /* common.py:114 */
-    const int t311 = (t310 && t309);  /* common.py:114 */
-    const int t312 = (t302 || t307);  /* common.py:115 */
-    const int t313 = (t312 || t311);  /* common.py:115 */
-    const int t314 = (!t313);  /* common.py:115 */
-    const float t315 = (t311 ? t295 : t297);  /* common.py:116 */
-    const float t316 = (t307 ? t292 : t315);  /* common.py:116 */
-    const float t317 = (t302 ? t289 : t316);  /* common.py:116 */
-    const float t318 = ((0x1.0000000000000p-2f < t317) ? t317 : 0x1.0000000000000p-2f);  /* common.py:118 */
-    const float t319_s = sqrtf(t318);  /* common.py:118 */
-    const float t319 = (0x1.0000000000000p+0f / t319_s);
-    const float t320 = (0x1.0000000000000p-1f * t317);  /* common.py:119 */
-    const float t321 = (t320 * t319);  /* common.py:119 */
-    const float t322 = (0x1.0000000000000p-1f * t319);  /* common.py:120 */
-    const float t323 = (t279 - t267);  /* common.py:121 */
-    const float t324 = (t323 * t322);  /* common.py:121 */
-    const float t325 = (t249 - t273);  /* common.py:122 */
-    const float t326 = (t325 * t322);  /* common.py:122 */
-    const float t327 = (t255 - t243);  /* common.py:123 */
-    const float t328 = (t327 * t322);  /* common.py:123 */
-    const float t329 = (t243 + t255);  /* common.py:124 */
-    const float t330 = (t329 * t322);  /* common.py:124 */
-    const float t331 = (t249 + t273);  /* common.py:125 */
-    const float t332 = (t331 * t322);  /* common.py:125 */
-    const float t333 = (t267 + t279);  /* common.py:126 */
-    const float t334 = (t333 * t322);  /* common.py:126 */
-    const float t335 = (t311 ? t326 : t328);  /* common.py:127 */
-    const float t336 = (t307 ? t324 : t335);  /* common.py:127 */
-    const float t337 = (t302 ? t321 : t336);  /* common.py:127 */
-    const float t338 = (t311 ? t330 : t332);  /* common.py:128 */
-    const float t339 = (t302 ? t324 : t338);  /* common.py:128 */
-    const float t340 = (t307 ? t321 : t339);  /* common.py:128 */
-    const float t341 = (t307 ? t330 : t334);  /* common.py:129 */
-    const float t342 = (t302 ? t326 : t341);  /* common.py:129 */
-    const float t343 = (t311 ? t321 : t342);  /* common.py:129 */
-    const float t344 = (t307 ? t332 : t334);  /* common.py:130 */
-    const float t345 = (t302 ? t328 : t344);  /* common.py:130 */
-    const float t346 = (t314 ? t321 : t345);  /* common.py:130 */
-    const int t351 = (t337 < 0.0f);  /* common.py:134 */
-    const float t352 = (-t337);  /* common.py:135 */
-    const float t353 = (t351 ? t352 : t337);  /* common.py:135 */
-    const float t354 = (-t340);  /* common.py:135 */
-    const float t355 = (t351 ? t354 : t340);  /* common.py:135 */
-    const float t356 = (-t343);  /* common.py:135 */
-    const float t357 = (t351 ? t356 : t343);  /* common.py:135 */
-    const float t358 = (-t346);  /* common.py:135 */
-    const float t359 = (t351 ? t358 : t346);  /* common.py:135 */
-    const float t360 = (p_min_angle_deg * 0x1.1df46a0000000p-6f);  /* triad.py:87 */
-    const float t361 = (t360 * 0x1.45f3060000000p-1f);  /* triad.py:87 */
-    const float t362 = (t361 + 0x1.0000000000000p-1f);  /* triad.py:87 */
-    const float t363_a = ((-0x1.0000000000000p+30f < t362) ? t362 : -0x1.0000000000000p+30f);  /* triad.py:87 */
-    const float t363_b = ((t363_a < 0x1.0000000000000p+30f) ? t363_a : 0x1.0000000000000p+30f);
+    const float t287 = (t237 + t261);  /* common.py:109 */
+    const float t288 = (t287 + t285);  /* common.py:109 */
+    const float t289 = (0x1p+0f + t288);  /* common.py:111 */
+    const float t290 = (0x1p+0f + t237);  /* common.py:112 */
+    const float t291 = (t290 - t261);  /* common.py:112 */
+    const float t292 = (t291 - t285);  /* common.py:112 */
+    const float t293 = (0x1p+0f - t237);  /* common.py:113 */
+    const float t294 = (t293 + t261);  /* common.py:113 */
+    const float t295 = (t294 - t285);  /* common.py:113 */
+    const float t296 = (t293 - t261);  /* common.py:114 */
+    const float t297 = (t296 + t285);  /* common.py:114 */
+    const int t298 = (t292 <= t289);  /* common.py:115 */
+    const int t299 = (t295 <= t289);  /* common.py:115 */
+    const int t300 = (t297 <= t289);  /* common.py:115 */
+    const int t301 = (t298 && t299);  /* common.py:115 */
+    const int t302 = (t301 && t300);  /* common.py:115 */
+    const int t303 = (!t302);  /* common.py:116 */
+    const int t304 = (t295 <= t292);  /* common.py:116 */
+    const int t305 = (t297 <= t292);  /* common.py:116 */
+    const int t306 = (t303 && t304);  /* common.py:116 */
+    const int t307 = (t306 && t305);  /* common.py:116 */
+    const int t308 = (!t307);  /* common.py:117 */
+    const int t309 = (t297 <= t295);  /* common.py:117 */
+    const int t310 = (t303 && t308);  /* common.py:117 */
+    const int t311 = (t310 && t309);  /* common.py:117 */
+    const int t312 = (t302 || t307);  /* common.py:118 */
+    const int t313 = (t312 || t311);  /* common.py:118 */
+    const int t314 = (!t313);  /* common.py:118 */
+    const float t315 = (t311 ? t295 : t297);  /* common.py:119 */
+    const float t316 = (t307 ? t292 : t315);  /* common.py:119 */
+    const float t317 = (t302 ? t289 : t316);  /* common.py:119 */
+    const float t318 = ((0x1p-2f < t317) ? t317 : 0x1p-2f);  /* common.py:121 */
+    const float t319_s = sqrtf(t318);  /* common.py:121 */
+    const float t319 = (0x1p+0f / t319_s);
+    const float t320 = (0x1p-1f * t317);  /* common.py:122 */
+    const float t321 = (t320 * t319);  /* common.py:122 */
+    const float t322 = (0x1p-1f * t319);  /* common.py:123 */
+    const float t323 = (t279 - t267);  /* common.py:124 */
+    const float t324 = (t323 * t322);  /* common.py:124 */
+    const float t325 = (t249 - t273);  /* common.py:125 */
+    const float t326 = (t325 * t322);  /* common.py:125 */
+    const float t327 = (t255 - t243);  /* common.py:126 */
+    const float t328 = (t327 * t322);  /* common.py:126 */
+    const float t329 = (t243 + t255);  /* common.py:127 */
+    const float t330 = (t329 * t322);  /* common.py:127 */
+    const float t331 = (t249 + t273);  /* common.py:128 */
+    const float t332 = (t331 * t322);  /* common.py:128 */
+    const float t333 = (t267 + t279);  /* common.py:129 */
+    const float t334 = (t333 * t322);  /* common.py:129 */
+    const float t335 = (t311 ? t326 : t328);  /* common.py:130 */
+    const float t336 = (t307 ? t324 : t335);  /* common.py:130 */
+    const float t337 = (t302 ? t321 : t336);  /* common.py:130 */
+    const float t338 = (t311 ? t330 : t332);  /* common.py:131 */
+    const float t339 = (t302 ? t324 : t338);  /* common.py:131 */
+    const float t340 = (t307 ? t321 : t339);  /* common.py:131 */
+    const float t341 = (t307 ? t330 : t334);  /* common.py:132 */
+    const float t342 = (t302 ? t326 : t341);  /* common.py:132 */
+    const float t343 = (t311 ? t321 : t342);  /* common.py:132 */
+    const float t344 = (t307 ? t332 : t334);  /* common.py:133 */
+    const float t345 = (t302 ? t328 : t344);  /* common.py:133 */
+    const float t346 = (t314 ? t321 : t345);  /* common.py:133 */
+    const int t351 = (t337 < 0.0f);  /* common.py:137 */
+    const float t352 = (-t337);  /* common.py:138 */
+    const float t353 = (t351 ? t352 : t337);  /* common.py:138 */
+    const float t354 = (-t340);  /* common.py:138 */
+    const float t355 = (t351 ? t354 : t340);  /* common.py:138 */
+    const float t356 = (-t343);  /* common.py:138 */
+    const float t357 = (t351 ? t356 : t343);  /* common.py:138 */
+    const float t358 = (-t346);  /* common.py:138 */
+    const float t359 = (t351 ? t358 : t346);  /* common.py:138 */
+    const float t360 = (p_min_angle_deg * 0x1.1df46ap-6f);  /* triad.py:87 */
+    const float t361 = (t360 * 0x1.45f306p-1f);  /* triad.py:87 */
+    const float t362 = (t361 + 0x1p-1f);  /* triad.py:87 */
+    const float t363_a = ((-0x1p+30f < t362) ? t362 : -0x1p+30f);  /* triad.py:87 */
+    const float t363_b = ((t363_a < 0x1p+30f) ? t363_a : 0x1p+30f);
     const float t363_i = ((float)((int32_t)t363_b));
-    const float t363 = ((t363_b < t363_i) ? (t363_i - 0x1.0000000000000p+0f) : t363_i);
-    const float t364 = (t363 * 0x1.9200000000000p+0f);  /* triad.py:87 */
+    const float t363 = ((t363_b < t363_i) ? (t363_i - 0x1p+0f) : t363_i);
+    const float t364 = (t363 * 0x1.92p+0f);  /* triad.py:87 */
     const float t365 = (t360 - t364);  /* triad.py:87 */
-    const float t366 = (t363 * 0x1.fb54440000000p-12f);  /* triad.py:87 */
+    const float t366 = (t363 * 0x1.fb5444p-12f);  /* triad.py:87 */
     const float t367 = (t365 - t366);  /* triad.py:87 */
-    const float t369 = (t363 * 0x1.0000000000000p-2f);  /* triad.py:87 */
-    const float t370_a = ((-0x1.0000000000000p+30f < t369) ? t369 : -0x1.0000000000000p+30f);  /* triad.py:87 */
-    const float t370_b = ((t370_a < 0x1.0000000000000p+30f) ? t370_a : 0x1.0000000000000p+30f);
+    const float t369 = (t363 * 0x1p-2f);  /* triad.py:87 */
+    const float t370_a = ((-0x1p+30f < t369) ? t369 : -0x1p+30f);  /* triad.py:87 */
+    const float t370_b = ((t370_a < 0x1p+30f) ? t370_a : 0x1p+30f);
     const float t370_i = ((float)((int32_t)t370_b));
-    const float t370 = ((t370_b < t370_i) ? (t370_i - 0x1.0000000000000p+0f) : t370_i);
-    const float t371 = (0x1.0000000000000p+2f * t370);  /* triad.py:87 */
+    const float t370 = ((t370_b < t370_i) ? (t370_i - 0x1p+0f) : t370_i);
+    const float t371 = (0x1p+2f * t370);  /* triad.py:87 */
     const float t372 = (t363 - t371);  /* triad.py:87 */
     const float t373 = (t367 * t367);  /* triad.py:87 */
-    const float t374 = (-0x1.ae64560000000p-26f * t373);  /* triad.py:87 */
-    const float t375 = (t374 + 0x1.71de3a0000000p-19f);  /* triad.py:87 */
+    const float t374 = (-0x1.ae6456p-26f * t373);  /* triad.py:87 */
+    const float t375 = (t374 + 0x1.71de3ap-19f);  /* triad.py:87 */
     const float t376 = (t375 * t373);  /* triad.py:87 */
-    const float t377 = (t376 + -0x1.a01a020000000p-13f);  /* triad.py:87 */
+    const float t377 = (t376 + -0x1.a01a02p-13f);  /* triad.py:87 */
     const float t378 = (t377 * t373);  /* triad.py:87 */
-    const float t379 = (t378 + 0x1.1111120000000p-7f);  /* triad.py:87 */
+    const float t379 = (t378 + 0x1.111112p-7f);  /* triad.py:87 */
     const float t380 = (t379 * t373);  /* triad.py:87 */
-    const float t381 = (t380 + -0x1.5555560000000p-3f);  /* triad.py:87 */
+    const float t381 = (t380 + -0x1.555556p-3f);  /* triad.py:87 */
     const float t382 = (t367 * t373);  /* triad.py:87 */
     const float t383 = (t382 * t381);  /* triad.py:87 */
     const float t384 = (t367 + t383);  /* triad.py:87 */
-    const float t385 = (0x1.1eed8e0000000p-29f * t373);  /* triad.py:87 */
-    const float t386 = (t385 + -0x1.27e4fc0000000p-22f);  /* triad.py:87 */
+    const float t385 = (0x1.1eed8ep-29f * t373);  /* triad.py:87 */
+    const float t386 = (t385 + -0x1.27e4fcp-22f);  /* triad.py:87 */
     const float t387 = (t386 * t373);  /* triad.py:87 */
-    const float t388 = (t387 + 0x1.a01a020000000p-16f);  /* triad.py:87 */
+    const float t388 = (t387 + 0x1.a01a02p-16f);  /* triad.py:87 */
     const float t389 = (t388 * t373);  /* triad.py:87 */
-    const float t390 = (t389 + -0x1.6c16c20000000p-10f);  /* triad.py:87 */
+    const float t390 = (t389 + -0x1.6c16c2p-10f);  /* triad.py:87 */
     const float t391 = (t390 * t373);  /* triad.py:87 */
-    const float t392 = (t391 + 0x1.5555560000000p-5f);  /* triad.py:87 */
-    const float t393 = (0x1.0000000000000p-1f * t373);  /* triad.py:87 */
-    const float t394 = (0x1.0000000000000p+0f - t393);  /* triad.py:87 */
+    const float t392 = (t391 + 0x1.555556p-5f);  /* triad.py:87 */
+    const float t393 = (0x1p-1f * t373);  /* triad.py:87 */
+    const float t394 = (0x1p+0f - t393);  /* triad.py:87 */
     const float t395 = (t373 * t373);  /* triad.py:87 */
     const float t396 = (t395 * t392);  /* triad.py:87 */
     const float t397 = (t394 + t396);  /* triad.py:87 */
-    const int t398 = (t372 < 0x1.0000000000000p-1f);  /* triad.py:87 */
-    const int t399 = (t372 < 0x1.8000000000000p+0f);  /* triad.py:87 */
-    const int t400 = (t372 < 0x1.4000000000000p+1f);  /* triad.py:87 */
+    const int t398 = (t372 < 0x1p-1f);  /* triad.py:87 */
+    const int t399 = (t372 < 0x1.8p+0f);  /* triad.py:87 */
+    const int t400 = (t372 < 0x1.4p+1f);  /* triad.py:87 */
     const float t401 = (-t384);  /* triad.py:87 */
     const float t402 = (-t397);  /* triad.py:87 */
     const float t403 = (t400 ? t401 : t402);  /* triad.py:87 */
     const float t404 = (t399 ? t397 : t403);  /* triad.py:87 */
     const float t405 = (t398 ? t384 : t404);  /* triad.py:87 */
-    const int t407 = (0x1.0000000000000p+0f <= t65);  /* triad.py:88 */
-    const int t408 = (0x1.0000000000000p+0f <= t77);  /* triad.py:88 */
+    const int t407 = (0x1p+0f <= t65);  /* triad.py:88 */
+    const int t408 = (0x1p+0f <= t77);  /* triad.py:88 */
     const float t409 = (t405 * t405);  /* triad.py:88 */
     const int t410 = (t409 <= t183);  /* triad.py:88 */
     const int t411 = (t55 && t407);  /* triad.py:88 */

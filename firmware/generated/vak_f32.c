@@ -23,29 +23,29 @@
 
 void vak_f32_default_params(vak_f32_params *p)
 {
-    p->sigma_acc = 0x1.0000000000000p+0f;
-    p->sigma_gyr = 0x1.47ae140000000p-7f;
-    p->sigma_mag = 0x1.0000000000000p+1f;
+    p->sigma_acc = 0x1p+0f;
+    p->sigma_gyr = 0x1.47ae14p-7f;
+    p->sigma_mag = 0x1p+1f;
     p->coupling = 0.0f;
-    p->gravity = 0x1.39eb860000000p+3f;
+    p->gravity = 0x1.39eb86p+3f;
 }
 
 int vak_f32_init(vak_f32_state *s, const vak_f32_params *p)
 {
     int status = 0;
-    if (!((p->gravity >= 0x1.3666660000000p+3f) && (p->gravity <= 0x1.3ccccc0000000p+3f))) {
+    if (!((p->gravity >= 0x1.366666p+3f) && (p->gravity <= 0x1.3cccccp+3f))) {
         status = -5;
     }
-    if (!((p->coupling >= 0.0f) && (p->coupling <= 0x1.0000000000000p+0f))) {
+    if (!((p->coupling >= 0.0f) && (p->coupling <= 0x1p+0f))) {
         status = -4;
     }
-    if (!((p->sigma_mag >= 0x1.0624de0000000p-10f) && (p->sigma_mag <= 0x1.9000000000000p+5f))) {
+    if (!((p->sigma_mag >= 0x1.0624dep-10f) && (p->sigma_mag <= 0x1.9p+5f))) {
         status = -3;
     }
-    if (!((p->sigma_gyr >= 0x1.a36e2e0000000p-14f) && (p->sigma_gyr <= 0x1.0000000000000p+0f))) {
+    if (!((p->sigma_gyr >= 0x1.a36e2ep-14f) && (p->sigma_gyr <= 0x1p+0f))) {
         status = -2;
     }
-    if (!((p->sigma_acc >= 0x1.0624de0000000p-10f) && (p->sigma_acc <= 0x1.4000000000000p+2f))) {
+    if (!((p->sigma_acc >= 0x1.0624dep-10f) && (p->sigma_acc <= 0x1.4p+2f))) {
         status = -1;
     }
     if (status != 0) {
@@ -53,20 +53,20 @@ int vak_f32_init(vak_f32_state *s, const vak_f32_params *p)
     } else {
         s->params = *p;
     }
-    s->q[0] = 0x1.0000000000000p+0f;
+    s->q[0] = 0x1p+0f;
     s->q[1] = 0.0f;
     s->q[2] = 0.0f;
     s->q[3] = 0.0f;
-    s->P[0] = 0x1.0000000000000p+0f;
+    s->P[0] = 0x1p+0f;
     s->P[1] = 0.0f;
     s->P[2] = 0.0f;
     s->P[3] = 0.0f;
-    s->P[4] = 0x1.0000000000000p+0f;
+    s->P[4] = 0x1p+0f;
     s->P[5] = 0.0f;
     s->P[6] = 0.0f;
-    s->P[7] = 0x1.0000000000000p+0f;
+    s->P[7] = 0x1p+0f;
     s->P[8] = 0.0f;
-    s->P[9] = 0x1.0000000000000p+0f;
+    s->P[9] = 0x1p+0f;
     s->initialised = 0;
     s->heading_set = 0;
     s->rejected = 0;
@@ -109,34 +109,34 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const int x_heading_set = (s->heading_set != 0u);
     const int32_t x_rejected = s->rejected;
     const float t34 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* common.py:62 */
-    const float t36 = ((t34 < 0x1.0000000000000p+0f) ? t34 : 0x1.0000000000000p+0f);  /* common.py:62 */
+    const float t36 = ((t34 < 0x1p+0f) ? t34 : 0x1p+0f);  /* common.py:62 */
     const float t37 = fabsf(u_gyr0);  /* common.py:50 */
-    const int t39 = (t37 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t39 = (t37 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t40 = fabsf(u_gyr1);  /* common.py:50 */
-    const int t41 = (t40 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t41 = (t40 <= 0x1.1740bp+5f);  /* common.py:50 */
     const float t42 = fabsf(u_gyr2);  /* common.py:50 */
-    const int t43 = (t42 <= 0x1.1740b00000000p+5f);  /* common.py:50 */
+    const int t43 = (t42 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t44 = (t39 && t41);  /* common.py:50 */
     const int t45 = (t44 && t43);  /* common.py:50 */
     const float t46 = fabsf(u_acc0);  /* common.py:50 */
-    const int t48 = (t46 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t48 = (t46 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t49 = fabsf(u_acc1);  /* common.py:50 */
-    const int t50 = (t49 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t50 = (t49 <= 0x1.39d014p+7f);  /* common.py:50 */
     const float t51 = fabsf(u_acc2);  /* common.py:50 */
-    const int t52 = (t51 <= 0x1.39d0140000000p+7f);  /* common.py:50 */
+    const int t52 = (t51 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t53 = (t48 && t50);  /* common.py:50 */
     const int t54 = (t53 && t52);  /* common.py:50 */
     const int t55 = (0.0f < u_dt);  /* common.py:64 */
-    const int t56 = (u_dt <= 0x1.0000000000000p+0f);  /* common.py:64 */
+    const int t56 = (u_dt <= 0x1p+0f);  /* common.py:64 */
     const int t57 = (t45 && t54);  /* common.py:63 */
     const int t58 = (t57 && t55);  /* common.py:63 */
     const int t59 = (t58 && t56);  /* common.py:63 */
     const float t60 = fabsf(u_mag0);  /* common.py:50 */
-    const int t62 = (t60 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t62 = (t60 <= 0x1.324p+12f);  /* common.py:50 */
     const float t63 = fabsf(u_mag1);  /* common.py:50 */
-    const int t64 = (t63 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t64 = (t63 <= 0x1.324p+12f);  /* common.py:50 */
     const float t65 = fabsf(u_mag2);  /* common.py:50 */
-    const int t66 = (t65 <= 0x1.3240000000000p+12f);  /* common.py:50 */
+    const int t66 = (t65 <= 0x1.324p+12f);  /* common.py:50 */
     const int t67 = (t62 && t64);  /* common.py:50 */
     const int t68 = (t67 && t66);  /* common.py:50 */
     const int t69 = (t59 && u_mag_valid);  /* common.py:67 */
@@ -151,9 +151,9 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t78 = (t76 + t77);  /* vak.py:83 */
     const float t79 = (u_acc2 * u_acc2);  /* vak.py:83 */
     const float t80 = (t78 + t79);  /* vak.py:83 */
-    const float t81_m = ((0x1.0c6f7a0000000p-20f < t80) ? t80 : 0x1.0c6f7a0000000p-20f);  /* vak.py:83 */
+    const float t81_m = ((0x1.0c6f7ap-20f < t80) ? t80 : 0x1.0c6f7ap-20f);  /* vak.py:83 */
     const float t81_s = sqrtf(t81_m);
-    const float t81 = (0x1.0000000000000p+0f / t81_s);
+    const float t81 = (0x1p+0f / t81_s);
     const float t82 = (u_acc0 * t81);  /* vak.py:83 */
     const float t84 = (u_acc1 * t81);  /* vak.py:83 */
     const float t86 = (u_acc2 * t81);  /* vak.py:83 */
@@ -162,56 +162,56 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t90 = (t88 + t89);  /* vak.py:84 */
     const float t91 = (u_mag2 * u_mag2);  /* vak.py:84 */
     const float t92 = (t90 + t91);  /* vak.py:84 */
-    const float t93_m = ((0x1.0c6f7a0000000p-20f < t92) ? t92 : 0x1.0c6f7a0000000p-20f);  /* vak.py:84 */
+    const float t93_m = ((0x1.0c6f7ap-20f < t92) ? t92 : 0x1.0c6f7ap-20f);  /* vak.py:84 */
     const float t93_s = sqrtf(t93_m);
-    const float t93 = (0x1.0000000000000p+0f / t93_s);
+    const float t93 = (0x1p+0f / t93_s);
     const float t94 = (u_mag0 * t93);  /* vak.py:84 */
     const float t96 = (u_mag1 * t93);  /* vak.py:84 */
     const float t98 = (u_mag2 * t93);  /* vak.py:84 */
     const float t100 = (p_sigma_mag / p_sigma_acc);  /* vak.py:91 */
     const float t101 = ((0.0f < t100) ? t100 : 0.0f);  /* vak.py:91 */
-    const float t103 = ((t101 < 0x1.0000000000000p+10f) ? t101 : 0x1.0000000000000p+10f);  /* vak.py:91 */
-    const float t105 = (p_gravity / 0x1.4000000000000p+6f);  /* vak.py:92 */
+    const float t103 = ((t101 < 0x1p+10f) ? t101 : 0x1p+10f);  /* vak.py:91 */
+    const float t105 = (p_gravity / 0x1.4p+6f);  /* vak.py:92 */
     const float t106 = (t103 * t105);  /* vak.py:92 */
-    const float t107 = ((t106 < 0x1.0000000000000p+0f) ? 0x1.0000000000000p+0f : t106);  /* vak.py:92 */
+    const float t107 = ((t106 < 0x1p+0f) ? 0x1p+0f : t106);  /* vak.py:92 */
     const float t108 = (t107 * t107);  /* vak.py:93 */
-    const float t109 = (0x1.0000000000000p+0f / t108);  /* vak.py:93 */
+    const float t109 = (0x1p+0f / t108);  /* vak.py:93 */
     const float t110 = (p_gravity * p_gravity);  /* vak.py:94 */
-    const float t111 = ((0x1.0000000000000p+0f < t80) ? t80 : 0x1.0000000000000p+0f);  /* vak.py:94 */
+    const float t111 = ((0x1p+0f < t80) ? t80 : 0x1p+0f);  /* vak.py:94 */
     const float t112 = (t110 / t111);  /* vak.py:94 */
-    const float t114 = ((0x1.0000000000000p-4f < t112) ? t112 : 0x1.0000000000000p-4f);  /* vak.py:94 */
-    const float t116 = ((t114 < 0x1.0000000000000p+4f) ? t114 : 0x1.0000000000000p+4f);  /* vak.py:94 */
+    const float t114 = ((0x1p-4f < t112) ? t112 : 0x1p-4f);  /* vak.py:94 */
+    const float t116 = ((t114 < 0x1p+4f) ? t114 : 0x1p+4f);  /* vak.py:94 */
     const float t117 = (t116 * t109);  /* vak.py:94 */
-    const float t119 = ((0x1.0000000000000p-10f < t117) ? t117 : 0x1.0000000000000p-10f);  /* vak.py:94 */
-    const float t120 = ((t119 < 0x1.0000000000000p+4f) ? t119 : 0x1.0000000000000p+4f);  /* vak.py:94 */
-    const float t121 = ((0x1.0000000000000p+0f < t92) ? t92 : 0x1.0000000000000p+0f);  /* vak.py:96 */
+    const float t119 = ((0x1p-10f < t117) ? t117 : 0x1p-10f);  /* vak.py:94 */
+    const float t120 = ((t119 < 0x1p+4f) ? t119 : 0x1p+4f);  /* vak.py:94 */
+    const float t121 = ((0x1p+0f < t92) ? t92 : 0x1p+0f);  /* vak.py:96 */
     const float t122_s = sqrtf(t121);  /* vak.py:96 */
-    const float t122 = (0x1.0000000000000p+0f / t122_s);
+    const float t122 = (0x1p+0f / t122_s);
     const float t123 = (p_gravity * t122);  /* vak.py:96 */
     const float t124 = (t103 * t123);  /* vak.py:97 */
     const float t125 = (t124 / t107);  /* vak.py:97 */
     const float t126 = ((0.0f < t125) ? t125 : 0.0f);  /* vak.py:97 */
-    const float t128 = ((t126 < 0x1.6a09e60000000p+3f) ? t126 : 0x1.6a09e60000000p+3f);  /* vak.py:97 */
+    const float t128 = ((t126 < 0x1.6a09e6p+3f) ? t126 : 0x1.6a09e6p+3f);  /* vak.py:97 */
     const float t129 = (t128 * t128);  /* vak.py:98 */
-    const float t130 = ((0x1.0000000000000p-10f < t129) ? t129 : 0x1.0000000000000p-10f);  /* vak.py:98 */
-    const float t132 = ((t130 < 0x1.0000000000000p+7f) ? t130 : 0x1.0000000000000p+7f);  /* vak.py:98 */
+    const float t130 = ((0x1p-10f < t129) ? t129 : 0x1p-10f);  /* vak.py:98 */
+    const float t132 = ((t130 < 0x1p+7f) ? t130 : 0x1p+7f);  /* vak.py:98 */
     const float t133 = (p_sigma_gyr / p_sigma_acc);  /* vak.py:100 */
     const float t134 = (p_gravity * t133);  /* vak.py:100 */
     const float t135 = (t36 * t134);  /* vak.py:100 */
     const float t136 = (t135 / t107);  /* vak.py:100 */
     const float t137 = ((0.0f < t136) ? t136 : 0.0f);  /* vak.py:100 */
-    const float t139 = ((t137 < 0x1.0000000000000p+2f) ? t137 : 0x1.0000000000000p+2f);  /* vak.py:100 */
+    const float t139 = ((t137 < 0x1p+2f) ? t137 : 0x1p+2f);  /* vak.py:100 */
     const float t140 = (t139 * t139);  /* vak.py:101 */
-    const float t142 = (0x1.0000000000000p-1f * t36);  /* algebraic.py:268 */
+    const float t142 = (0x1p-1f * t36);  /* algebraic.py:268 */
     const float t143 = (u_gyr0 * t142);  /* algebraic.py:268 */
-    const float t145 = ((-0x1.0000000000000p-1f < t143) ? t143 : -0x1.0000000000000p-1f);  /* algebraic.py:268 */
-    const float t146 = ((t145 < 0x1.0000000000000p-1f) ? t145 : 0x1.0000000000000p-1f);  /* algebraic.py:268 */
+    const float t145 = ((-0x1p-1f < t143) ? t143 : -0x1p-1f);  /* algebraic.py:268 */
+    const float t146 = ((t145 < 0x1p-1f) ? t145 : 0x1p-1f);  /* algebraic.py:268 */
     const float t147 = (u_gyr1 * t142);  /* algebraic.py:268 */
-    const float t148 = ((-0x1.0000000000000p-1f < t147) ? t147 : -0x1.0000000000000p-1f);  /* algebraic.py:268 */
-    const float t149 = ((t148 < 0x1.0000000000000p-1f) ? t148 : 0x1.0000000000000p-1f);  /* algebraic.py:268 */
+    const float t148 = ((-0x1p-1f < t147) ? t147 : -0x1p-1f);  /* algebraic.py:268 */
+    const float t149 = ((t148 < 0x1p-1f) ? t148 : 0x1p-1f);  /* algebraic.py:268 */
     const float t150 = (u_gyr2 * t142);  /* algebraic.py:268 */
-    const float t151 = ((-0x1.0000000000000p-1f < t150) ? t150 : -0x1.0000000000000p-1f);  /* algebraic.py:268 */
-    const float t152 = ((t151 < 0x1.0000000000000p-1f) ? t151 : 0x1.0000000000000p-1f);  /* algebraic.py:268 */
+    const float t151 = ((-0x1p-1f < t150) ? t150 : -0x1p-1f);  /* algebraic.py:268 */
+    const float t152 = ((t151 < 0x1p-1f) ? t151 : 0x1p-1f);  /* algebraic.py:268 */
     const float t153 = (x_q0 * 0.0f);  /* algebraic.py:273 */
     const float t154 = (x_q1 * t146);  /* algebraic.py:273 */
     const float t155 = (t153 - t154);  /* algebraic.py:273 */
@@ -251,24 +251,24 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t189 = (t187 + t188);  /* algebraic.py:273 */
     const float t190 = (t184 * t184);  /* algebraic.py:273 */
     const float t191 = (t189 + t190);  /* algebraic.py:273 */
-    const float t192_m = ((0x1.0c6f7a0000000p-20f < t191) ? t191 : 0x1.0c6f7a0000000p-20f);  /* algebraic.py:273 */
+    const float t192_m = ((0x1.0c6f7ap-20f < t191) ? t191 : 0x1.0c6f7ap-20f);  /* algebraic.py:273 */
     const float t192_s = sqrtf(t192_m);
-    const float t192 = (0x1.0000000000000p+0f / t192_s);
+    const float t192 = (0x1p+0f / t192_s);
     const float t193 = (t181 * t192);  /* algebraic.py:273 */
     const float t195 = (t182 * t192);  /* algebraic.py:273 */
     const float t197 = (t183 * t192);  /* algebraic.py:273 */
     const float t199 = (t184 * t192);  /* algebraic.py:273 */
     const int t201 = (0.0f <= t86);  /* algebraic.py:52 */
-    const float t202 = (0x1.0000000000000p+0f + t86);  /* algebraic.py:53 */
-    const float t203 = (0x1.0000000000000p-1f * t202);  /* algebraic.py:53 */
-    const float t204 = ((0x1.0000000000000p-1f < t203) ? t203 : 0x1.0000000000000p-1f);  /* algebraic.py:53 */
+    const float t202 = (0x1p+0f + t86);  /* algebraic.py:53 */
+    const float t203 = (0x1p-1f * t202);  /* algebraic.py:53 */
+    const float t204 = ((0x1p-1f < t203) ? t203 : 0x1p-1f);  /* algebraic.py:53 */
     const float t205 = sqrtf(t204);  /* algebraic.py:53 */
-    const float t206 = (0x1.0000000000000p+0f - t86);  /* algebraic.py:54 */
-    const float t207 = (0x1.0000000000000p-1f * t206);  /* algebraic.py:54 */
-    const float t208 = ((0x1.0000000000000p-1f < t207) ? t207 : 0x1.0000000000000p-1f);  /* algebraic.py:54 */
+    const float t206 = (0x1p+0f - t86);  /* algebraic.py:54 */
+    const float t207 = (0x1p-1f * t206);  /* algebraic.py:54 */
+    const float t208 = ((0x1p-1f < t207) ? t207 : 0x1p-1f);  /* algebraic.py:54 */
     const float t209 = sqrtf(t208);  /* algebraic.py:54 */
-    const float t210 = (0x1.0000000000000p-1f / t205);  /* algebraic.py:55 */
-    const float t211 = (0x1.0000000000000p-1f / t209);  /* algebraic.py:56 */
+    const float t210 = (0x1p-1f / t205);  /* algebraic.py:55 */
+    const float t211 = (0x1p-1f / t209);  /* algebraic.py:56 */
     const float t212 = (t84 * t210);  /* algebraic.py:57 */
     const float t214 = (-t82);  /* algebraic.py:57 */
     const float t215 = (t214 * t210);  /* algebraic.py:57 */
@@ -283,15 +283,15 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t227 = (t225 * t98);  /* algebraic.py:104 */
     const float t228 = (t226 * t96);  /* algebraic.py:104 */
     const float t229 = (t227 - t228);  /* algebraic.py:104 */
-    const float t231 = (0x1.0000000000000p+1f * t229);  /* algebraic.py:104 */
+    const float t231 = (0x1p+1f * t229);  /* algebraic.py:104 */
     const float t232 = (t226 * t94);  /* algebraic.py:104 */
     const float t233 = (t224 * t98);  /* algebraic.py:104 */
     const float t234 = (t232 - t233);  /* algebraic.py:104 */
-    const float t235 = (0x1.0000000000000p+1f * t234);  /* algebraic.py:104 */
+    const float t235 = (0x1p+1f * t234);  /* algebraic.py:104 */
     const float t236 = (t224 * t96);  /* algebraic.py:104 */
     const float t237 = (t225 * t94);  /* algebraic.py:104 */
     const float t238 = (t236 - t237);  /* algebraic.py:104 */
-    const float t239 = (0x1.0000000000000p+1f * t238);  /* algebraic.py:104 */
+    const float t239 = (0x1p+1f * t238);  /* algebraic.py:104 */
     const float t240 = (t223 * t231);  /* algebraic.py:104 */
     const float t241 = (t94 + t240);  /* algebraic.py:104 */
     const float t242 = (t225 * t239);  /* algebraic.py:104 */
@@ -313,28 +313,28 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t261 = (t245 * t245);  /* algebraic.py:84 */
     const float t262 = (t251 * t251);  /* algebraic.py:84 */
     const float t263 = (t261 + t262);  /* algebraic.py:84 */
-    const float t264_m = ((0x1.a36e2e0000000p-14f < t263) ? t263 : 0x1.a36e2e0000000p-14f);  /* algebraic.py:84 */
+    const float t264_m = ((0x1.a36e2ep-14f < t263) ? t263 : 0x1.a36e2ep-14f);  /* algebraic.py:84 */
     const float t264_s = sqrtf(t264_m);
-    const float t264 = (0x1.0000000000000p+0f / t264_s);
+    const float t264 = (0x1p+0f / t264_s);
     const float t265 = (t245 * t264);  /* algebraic.py:85 */
     const float t267 = (t251 * t264);  /* algebraic.py:86 */
     const int t269 = (0.0f <= t267);  /* algebraic.py:87 */
-    const float t270 = (0x1.0000000000000p+0f + t267);  /* algebraic.py:88 */
-    const float t271 = (0x1.0000000000000p-1f * t270);  /* algebraic.py:88 */
-    const float t272 = ((0x1.0000000000000p-1f < t271) ? t271 : 0x1.0000000000000p-1f);  /* algebraic.py:88 */
+    const float t270 = (0x1p+0f + t267);  /* algebraic.py:88 */
+    const float t271 = (0x1p-1f * t270);  /* algebraic.py:88 */
+    const float t272 = ((0x1p-1f < t271) ? t271 : 0x1p-1f);  /* algebraic.py:88 */
     const float t273 = sqrtf(t272);  /* algebraic.py:88 */
-    const float t274 = (0x1.0000000000000p+0f - t267);  /* algebraic.py:89 */
-    const float t275 = (0x1.0000000000000p-1f * t274);  /* algebraic.py:89 */
-    const float t276 = ((0x1.0000000000000p-1f < t275) ? t275 : 0x1.0000000000000p-1f);  /* algebraic.py:89 */
+    const float t274 = (0x1p+0f - t267);  /* algebraic.py:89 */
+    const float t275 = (0x1p-1f * t274);  /* algebraic.py:89 */
+    const float t276 = ((0x1p-1f < t275) ? t275 : 0x1p-1f);  /* algebraic.py:89 */
     const float t277 = sqrtf(t276);  /* algebraic.py:89 */
-    const float t278 = (0x1.0000000000000p-1f / t273);  /* algebraic.py:90 */
+    const float t278 = (0x1p-1f / t273);  /* algebraic.py:90 */
     const float t279 = (t265 * t278);  /* algebraic.py:90 */
-    const float t281 = (0x1.0000000000000p-1f / t277);  /* algebraic.py:91 */
+    const float t281 = (0x1p-1f / t277);  /* algebraic.py:91 */
     const float t282 = (t265 * t281);  /* algebraic.py:91 */
     const float t284 = (t269 ? t273 : t282);  /* algebraic.py:92 */
     const float t285 = (t269 ? t279 : t277);  /* algebraic.py:92 */
-    const int t287 = (0x1.a36e2e0000000p-14f < t263);  /* algebraic.py:93 */
-    const float t288 = (t287 ? t284 : 0x1.0000000000000p+0f);  /* algebraic.py:94 */
+    const int t287 = (0x1.a36e2ep-14f < t263);  /* algebraic.py:93 */
+    const float t288 = (t287 ? t284 : 0x1p+0f);  /* algebraic.py:94 */
     const float t289 = (t287 ? t285 : 0.0f);  /* algebraic.py:94 */
     const float t290 = (t288 * t223);  /* algebraic.py:107 */
     const float t291 = (0.0f * t224);  /* algebraic.py:107 */
@@ -360,23 +360,23 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t311 = (t310 - t291);  /* algebraic.py:107 */
     const float t312 = (t289 * t223);  /* algebraic.py:107 */
     const float t313 = (t311 + t312);  /* algebraic.py:107 */
-    const int t314 = (0x1.0000000000000p+0f <= t80);  /* vak.py:109 */
-    const int t315 = (0x1.0000000000000p+0f <= t92);  /* vak.py:110 */
-    const int t317 = (0x1.f212d80000000p-8f <= t263);  /* vak.py:110 */
+    const int t314 = (0x1p+0f <= t80);  /* vak.py:109 */
+    const int t315 = (0x1p+0f <= t92);  /* vak.py:110 */
+    const int t317 = (0x1.f212d8p-8f <= t263);  /* vak.py:110 */
     const int t318 = (t70 && t315);  /* vak.py:110 */
     const int t319 = (t318 && t317);  /* vak.py:110 */
     const float t320 = (t197 * t86);  /* vak.py:111 */
     const float t321 = (t199 * t84);  /* vak.py:111 */
     const float t322 = (t320 - t321);  /* vak.py:111 */
-    const float t323 = (0x1.0000000000000p+1f * t322);  /* vak.py:111 */
+    const float t323 = (0x1p+1f * t322);  /* vak.py:111 */
     const float t324 = (t199 * t82);  /* vak.py:111 */
     const float t325 = (t195 * t86);  /* vak.py:111 */
     const float t326 = (t324 - t325);  /* vak.py:111 */
-    const float t327 = (0x1.0000000000000p+1f * t326);  /* vak.py:111 */
+    const float t327 = (0x1p+1f * t326);  /* vak.py:111 */
     const float t328 = (t195 * t84);  /* vak.py:111 */
     const float t329 = (t197 * t82);  /* vak.py:111 */
     const float t330 = (t328 - t329);  /* vak.py:111 */
-    const float t331 = (0x1.0000000000000p+1f * t330);  /* vak.py:111 */
+    const float t331 = (0x1p+1f * t330);  /* vak.py:111 */
     const float t332 = (t193 * t323);  /* vak.py:111 */
     const float t333 = (t82 + t332);  /* vak.py:111 */
     const float t334 = (t197 * t331);  /* vak.py:111 */
@@ -395,7 +395,7 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t347 = (t197 * t323);  /* vak.py:111 */
     const float t348 = (t346 - t347);  /* vak.py:111 */
     const float t349 = (t345 + t348);  /* vak.py:111 */
-    const float t353 = (0x1.0000000000000p+0f + t349);  /* algebraic.py:69 */
+    const float t353 = (0x1p+0f + t349);  /* algebraic.py:69 */
     const float t354 = (-t337);  /* algebraic.py:69 */
     const float t355 = (t353 * t353);  /* algebraic.py:70 */
     const float t356 = (t343 * t343);  /* algebraic.py:70 */
@@ -403,16 +403,16 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t358 = (t354 * t354);  /* algebraic.py:70 */
     const float t359 = (t357 + t358);  /* algebraic.py:70 */
     const float t360 = (t359 + 0.0f);  /* algebraic.py:70 */
-    const float t361_m = ((0x1.12e0be0000000p-30f < t360) ? t360 : 0x1.12e0be0000000p-30f);  /* algebraic.py:70 */
+    const float t361_m = ((0x1.12e0bep-30f < t360) ? t360 : 0x1.12e0bep-30f);  /* algebraic.py:70 */
     const float t361_s = sqrtf(t361_m);
-    const float t361 = (0x1.0000000000000p+0f / t361_s);
+    const float t361 = (0x1p+0f / t361_s);
     const float t362 = (t353 * t361);  /* algebraic.py:71 */
     const float t364 = (t343 * t361);  /* algebraic.py:71 */
     const float t366 = (t354 * t361);  /* algebraic.py:71 */
     const float t368 = (0.0f * t361);  /* algebraic.py:71 */
-    const int t371 = (0x1.12e0be0000000p-30f < t360);  /* algebraic.py:72 */
+    const int t371 = (0x1.12e0bep-30f < t360);  /* algebraic.py:72 */
     const float t372 = (t371 ? t362 : 0.0f);  /* algebraic.py:72 */
-    const float t373 = (t371 ? t364 : 0x1.0000000000000p+0f);  /* algebraic.py:72 */
+    const float t373 = (t371 ? t364 : 0x1p+0f);  /* algebraic.py:72 */
     const float t374 = (t371 ? t366 : 0.0f);  /* algebraic.py:72 */
     const float t375 = (t371 ? t368 : 0.0f);  /* algebraic.py:72 */
     const float t376 = (t372 * t193);  /* vak.py:112 */
@@ -463,14 +463,14 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t421 = (t415 ? t420 : t406);  /* algebraic.py:357 */
     const float t422 = (-t407);  /* algebraic.py:357 */
     const float t423 = (t415 ? t422 : t407);  /* algebraic.py:357 */
-    const float t424 = ((0x1.f212d80000000p-8f < t263) ? t263 : 0x1.f212d80000000p-8f);  /* algebraic.py:324 */
-    const float t425 = (0x1.0000000000000p+0f / t424);  /* algebraic.py:324 */
+    const float t424 = ((0x1.f212d8p-8f < t263) ? t263 : 0x1.f212d8p-8f);  /* algebraic.py:324 */
+    const float t425 = (0x1p+0f / t424);  /* algebraic.py:324 */
     const float t426 = (t257 * t257);  /* algebraic.py:325 */
     const float t427 = (t426 * t120);  /* algebraic.py:325 */
     const float t428 = (t132 + t427);  /* algebraic.py:325 */
     const float t429 = (t428 * t425);  /* algebraic.py:325 */
     const float t430 = ((0.0f < t429) ? t429 : 0.0f);  /* algebraic.py:325 */
-    const float t431 = ((t430 < 0x1.0000000000000p+7f) ? t430 : 0x1.0000000000000p+7f);  /* algebraic.py:325 */
+    const float t431 = ((t430 < 0x1p+7f) ? t430 : 0x1p+7f);  /* algebraic.py:325 */
     const float t432 = (t120 * t257);  /* algebraic.py:326 */
     const float t433 = sqrtf(t425);  /* algebraic.py:326 */
     const float t434 = (t432 * t433);  /* algebraic.py:326 */
@@ -481,7 +481,7 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t439 = (-t438);  /* algebraic.py:328 */
     const float t440 = ((t439 < t435) ? t435 : t439);  /* algebraic.py:328 */
     const float t441 = ((t440 < t438) ? t440 : t438);  /* algebraic.py:328 */
-    const float t442 = (t319 ? t431 : 0x1.0000000000000p+7f);  /* algebraic.py:329 */
+    const float t442 = (t319 ? t431 : 0x1p+7f);  /* algebraic.py:329 */
     const float t443 = (t319 ? t441 : 0.0f);  /* algebraic.py:330 */
     const float t444 = (-t419);  /* algebraic.py:142 */
     const float t445 = (-t421);  /* algebraic.py:142 */
@@ -493,7 +493,7 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t451 = (t450 + t450);  /* algebraic.py:347 */
     const float t452 = (t443 * t451);  /* algebraic.py:347 */
     const float t453 = (t449 + t452);  /* algebraic.py:347 */
-    const float t455 = (t120 + 0x1.0000000000000p-12f);  /* algebraic.py:349 */
+    const float t455 = (t120 + 0x1p-12f);  /* algebraic.py:349 */
     const float t456 = (t453 + t455);  /* algebraic.py:349 */
     const float t458 = (t447 * t450);  /* algebraic.py:347 */
     const float t459 = (t445 * t445);  /* algebraic.py:347 */
@@ -782,17 +782,17 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t771 = (t747 + t506);  /* algebraic.py:241 */
     const float t772 = (t755 + t513);  /* algebraic.py:241 */
     const float t773 = (t762 + t520);  /* algebraic.py:241 */
-    const float t774 = ((0x1.0000000000000p-12f < t764) ? t764 : 0x1.0000000000000p-12f);  /* algebraic.py:207 */
+    const float t774 = ((0x1p-12f < t764) ? t764 : 0x1p-12f);  /* algebraic.py:207 */
     const float t775 = sqrtf(t774);  /* algebraic.py:207 */
-    const float t777 = (0x1.0000000000000p+0f / t775);  /* algebraic.py:209 */
+    const float t777 = (0x1p+0f / t775);  /* algebraic.py:209 */
     const float t779 = (t765 * t777);  /* algebraic.py:214 */
     const float t781 = (t766 * t777);  /* algebraic.py:214 */
     const float t783 = (t767 * t777);  /* algebraic.py:214 */
     const float t785 = (t779 * t779);  /* algebraic.py:206 */
     const float t786 = (t768 - t785);  /* algebraic.py:206 */
-    const float t787 = ((0x1.0000000000000p-12f < t786) ? t786 : 0x1.0000000000000p-12f);  /* algebraic.py:207 */
+    const float t787 = ((0x1p-12f < t786) ? t786 : 0x1p-12f);  /* algebraic.py:207 */
     const float t788 = sqrtf(t787);  /* algebraic.py:207 */
-    const float t790 = (0x1.0000000000000p+0f / t788);  /* algebraic.py:209 */
+    const float t790 = (0x1p+0f / t788);  /* algebraic.py:209 */
     const float t792 = (t781 * t779);  /* algebraic.py:213 */
     const float t793 = (t769 - t792);  /* algebraic.py:213 */
     const float t794 = (t793 * t790);  /* algebraic.py:214 */
@@ -803,9 +803,9 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t801 = (t771 - t800);  /* algebraic.py:206 */
     const float t802 = (t794 * t794);  /* algebraic.py:206 */
     const float t803 = (t801 - t802);  /* algebraic.py:206 */
-    const float t804 = ((0x1.0000000000000p-12f < t803) ? t803 : 0x1.0000000000000p-12f);  /* algebraic.py:207 */
+    const float t804 = ((0x1p-12f < t803) ? t803 : 0x1p-12f);  /* algebraic.py:207 */
     const float t805 = sqrtf(t804);  /* algebraic.py:207 */
-    const float t807 = (0x1.0000000000000p+0f / t805);  /* algebraic.py:209 */
+    const float t807 = (0x1p+0f / t805);  /* algebraic.py:209 */
     const float t809 = (t783 * t781);  /* algebraic.py:213 */
     const float t810 = (t772 - t809);  /* algebraic.py:213 */
     const float t811 = (t798 * t794);  /* algebraic.py:213 */
@@ -817,9 +817,9 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t818 = (t816 - t817);  /* algebraic.py:206 */
     const float t819 = (t813 * t813);  /* algebraic.py:206 */
     const float t820 = (t818 - t819);  /* algebraic.py:206 */
-    const float t821 = ((0x1.0000000000000p-12f < t820) ? t820 : 0x1.0000000000000p-12f);  /* algebraic.py:207 */
+    const float t821 = ((0x1p-12f < t820) ? t820 : 0x1p-12f);  /* algebraic.py:207 */
     const float t822 = sqrtf(t821);  /* algebraic.py:207 */
-    const float t824 = (0x1.0000000000000p+0f / t822);  /* algebraic.py:209 */
+    const float t824 = (0x1p+0f / t822);  /* algebraic.py:209 */
     const float t826 = (t689 * t777);  /* algebraic.py:226 */
     const float t828 = (t779 * t826);  /* algebraic.py:225 */
     const float t829 = (t698 - t828);  /* algebraic.py:225 */
@@ -912,8 +912,8 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t935 = (t844 * t928);  /* algebraic.py:249 */
     const float t936 = (t934 + t935);  /* algebraic.py:192 */
     const float t937 = (t193 + t936);  /* algebraic.py:249 */
-    const float t939 = ((-0x1.0000000000000p+1f < t937) ? t937 : -0x1.0000000000000p+1f);  /* algebraic.py:249 */
-    const float t940 = ((t939 < 0x1.0000000000000p+1f) ? t939 : 0x1.0000000000000p+1f);  /* algebraic.py:249 */
+    const float t939 = ((-0x1p+1f < t937) ? t937 : -0x1p+1f);  /* algebraic.py:249 */
+    const float t940 = ((t939 < 0x1p+1f) ? t939 : 0x1p+1f);  /* algebraic.py:249 */
     const float t941 = (t846 * t910);  /* algebraic.py:249 */
     const float t942 = (t850 * t914);  /* algebraic.py:249 */
     const float t943 = (t941 + t942);  /* algebraic.py:192 */
@@ -922,8 +922,8 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t946 = (t864 * t928);  /* algebraic.py:249 */
     const float t947 = (t945 + t946);  /* algebraic.py:192 */
     const float t948 = (t195 + t947);  /* algebraic.py:249 */
-    const float t949 = ((-0x1.0000000000000p+1f < t948) ? t948 : -0x1.0000000000000p+1f);  /* algebraic.py:249 */
-    const float t950 = ((t949 < 0x1.0000000000000p+1f) ? t949 : 0x1.0000000000000p+1f);  /* algebraic.py:249 */
+    const float t949 = ((-0x1p+1f < t948) ? t948 : -0x1p+1f);  /* algebraic.py:249 */
+    const float t950 = ((t949 < 0x1p+1f) ? t949 : 0x1p+1f);  /* algebraic.py:249 */
     const float t951 = (t866 * t910);  /* algebraic.py:249 */
     const float t952 = (t870 * t914);  /* algebraic.py:249 */
     const float t953 = (t951 + t952);  /* algebraic.py:192 */
@@ -932,8 +932,8 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t956 = (t884 * t928);  /* algebraic.py:249 */
     const float t957 = (t955 + t956);  /* algebraic.py:192 */
     const float t958 = (t197 + t957);  /* algebraic.py:249 */
-    const float t959 = ((-0x1.0000000000000p+1f < t958) ? t958 : -0x1.0000000000000p+1f);  /* algebraic.py:249 */
-    const float t960 = ((t959 < 0x1.0000000000000p+1f) ? t959 : 0x1.0000000000000p+1f);  /* algebraic.py:249 */
+    const float t959 = ((-0x1p+1f < t958) ? t958 : -0x1p+1f);  /* algebraic.py:249 */
+    const float t960 = ((t959 < 0x1p+1f) ? t959 : 0x1p+1f);  /* algebraic.py:249 */
     const float t961 = (t886 * t910);  /* algebraic.py:249 */
     const float t962 = (t890 * t914);  /* algebraic.py:249 */
     const float t963 = (t961 + t962);  /* algebraic.py:192 */
@@ -942,8 +942,8 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t966 = (t904 * t928);  /* algebraic.py:249 */
     const float t967 = (t965 + t966);  /* algebraic.py:192 */
     const float t968 = (t199 + t967);  /* algebraic.py:249 */
-    const float t969 = ((-0x1.0000000000000p+1f < t968) ? t968 : -0x1.0000000000000p+1f);  /* algebraic.py:249 */
-    const float t970 = ((t969 < 0x1.0000000000000p+1f) ? t969 : 0x1.0000000000000p+1f);  /* algebraic.py:249 */
+    const float t969 = ((-0x1p+1f < t968) ? t968 : -0x1p+1f);  /* algebraic.py:249 */
+    const float t970 = ((t969 < 0x1p+1f) ? t969 : 0x1p+1f);  /* algebraic.py:249 */
     const float t971 = (t826 * t826);  /* algebraic.py:254 */
     const float t972 = (t830 * t830);  /* algebraic.py:254 */
     const float t973 = (t971 + t972);  /* algebraic.py:192 */
@@ -1035,9 +1035,9 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t1069 = (t1067 + t1068);  /* algebraic.py:368 */
     const float t1070 = (t970 * t970);  /* algebraic.py:368 */
     const float t1071 = (t1069 + t1070);  /* algebraic.py:368 */
-    const float t1072_m = ((0x1.0c6f7a0000000p-20f < t1071) ? t1071 : 0x1.0c6f7a0000000p-20f);  /* algebraic.py:368 */
+    const float t1072_m = ((0x1.0c6f7ap-20f < t1071) ? t1071 : 0x1.0c6f7ap-20f);  /* algebraic.py:368 */
     const float t1072_s = sqrtf(t1072_m);
-    const float t1072 = (0x1.0000000000000p+0f / t1072_s);
+    const float t1072 = (0x1p+0f / t1072_s);
     const float t1073 = (t940 * t1072);  /* algebraic.py:368 */
     const float t1075 = (t950 * t1072);  /* algebraic.py:368 */
     const float t1077 = (t960 * t1072);  /* algebraic.py:368 */
@@ -1072,9 +1072,9 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t1108 = (t456 + t485);  /* algebraic.py:379 */
     const float t1109 = (t1108 + t506);  /* algebraic.py:379 */
     const float t1110 = (t1109 + t520);  /* algebraic.py:379 */
-    const float t1112 = (t1110 * 0x1.0000000000000p-3f);  /* algebraic.py:380 */
-    const float t1113 = ((t1112 < 0x1.0000000000000p+0f) ? 0x1.0000000000000p+0f : t1112);  /* algebraic.py:380 */
-    const float t1114 = (0x1.0000000000000p+0f / t1113);  /* algebraic.py:380 */
+    const float t1112 = (t1110 * 0x1p-3f);  /* algebraic.py:380 */
+    const float t1113 = ((t1112 < 0x1p+0f) ? 0x1p+0f : t1112);  /* algebraic.py:380 */
+    const float t1114 = (0x1p+0f / t1113);  /* algebraic.py:380 */
     const float t1115 = (t1114 * t456);  /* algebraic.py:381 */
     const float t1117 = (t1114 * t463);  /* algebraic.py:381 */
     const float t1119 = (t1114 * t471);  /* algebraic.py:381 */
@@ -1188,9 +1188,9 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t1245 = (t1167 + t1196);  /* algebraic.py:379 */
     const float t1246 = (t1245 + t1217);  /* algebraic.py:379 */
     const float t1247 = (t1246 + t1231);  /* algebraic.py:379 */
-    const float t1248 = (t1247 * 0x1.0000000000000p-3f);  /* algebraic.py:380 */
-    const float t1249 = ((t1248 < 0x1.0000000000000p+0f) ? 0x1.0000000000000p+0f : t1248);  /* algebraic.py:380 */
-    const float t1250 = (0x1.0000000000000p+0f / t1249);  /* algebraic.py:380 */
+    const float t1248 = (t1247 * 0x1p-3f);  /* algebraic.py:380 */
+    const float t1249 = ((t1248 < 0x1p+0f) ? 0x1p+0f : t1248);  /* algebraic.py:380 */
+    const float t1250 = (0x1p+0f / t1249);  /* algebraic.py:380 */
     const float t1251 = (t1250 * t1167);  /* algebraic.py:381 */
     const float t1253 = (t1250 * t1174);  /* algebraic.py:381 */
     const float t1255 = (t1250 * t1182);  /* algebraic.py:381 */

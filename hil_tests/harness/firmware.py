@@ -94,14 +94,28 @@ def unit_session(loop: str):
         s = Session(open_tty_raw(q.uart_device))
         try:
             q.resume()
-            # the first HEARTBEAT says the application runs; bytes sent before that (while the
-            # board boots and loads its storage) may be lost, as on a unit just powered up
-            if s.wait_for("HEARTBEAT", timeout=30.0) is None:
-                raise KinefuseError(f"{loop}: no HEARTBEAT from the unit within 30 s")
-            s.drain()
+            wait_ready(s, loop)
             yield s
         finally:
             s.close()
+
+
+def wait_ready(session, what: str, timeout: float = 60.0) -> None:
+    """Ask for a parameter until the unit answers: bytes sent while the board boots and loads
+    its storage may be lost, as on a unit just powered up (waiting for the 1 Hz HEARTBEAT
+    instead costs up to a second of emulated time, which is much longer under load).  The
+    probe reads a parameter nobody configures next, so late answers cannot be mistaken for
+    the answer to a write."""
+    import time
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        session.send("PARAM_REQUEST_READ", target_system=1, target_component=200,
+                     param_id="KF_SERIAL_NO", param_index=-1)
+        if session.wait_for("PARAM_VALUE", timeout=0.5) is not None:
+            session.poll(0.2)
+            session.drain()
+            return
+    raise KinefuseError(f"{what}: the unit did not answer within {timeout:.0f} s")
 
 
 def configure(session, name: str, rate_hz: int, mode: int = 0, timeout: float = 5.0) -> None:

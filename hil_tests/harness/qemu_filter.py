@@ -23,6 +23,10 @@ from kinefuse.codegen.generate import GENERATED_DIR
 from kinefuse.codegen.runner import Encoded, ModelInfo
 from kinefuse.host.errors import KinefuseError
 
+# GCC's variable tracking dominates the build of long generated functions (debug info only:
+# the code is the same; see codegen/build.py)
+NO_VTA = ["-fno-var-tracking-assignments"]
+
 _BASE = {"f32": {"real": np.dtype("<f4"), "bool": np.dtype("u1"), "int": np.dtype("<i4")},
          "q": {"real": np.dtype("<i4"), "bool": np.dtype("u1"), "int": np.dtype("<i4")}}
 
@@ -125,7 +129,7 @@ def build_filter_program(name: str, system: str, target: str, params: dict[str, 
 
     prog = build_batch([src], step, in_size=in_dt.itemsize, out_size=out_dt.itemsize,
                        target=target, include_dirs=[GENERATED_DIR], prelude=prelude, setup=setup,
-                       opt=opt)
+                       opt=opt, extra_cflags=NO_VTA)
     return FilterProgram(name, system, target, info, in_dt, out_dt, prog)
 
 

@@ -62,8 +62,7 @@ def build_report(cases: list[Case], filters: list[str], loop_names: dict[str, li
                 ref = loops.run_loop("ref", name, case.inputs)
                 rep.errors[(name, case.name, "ref")] = rmse_errors(ref["q"], case)
             for system in loops.systems(name):
-                lps = (loop_names or {}).get(system) or loops.bitexact_loops(name, system, qemu=qemu,
-                                                                              firmware=firmware)
+                lps = (loop_names or {}).get(system) or loops.bitexact_loops(name, system, qemu=qemu)
                 outs, errors = {}, {}
                 for lp in lps:
                     if progress:
@@ -84,8 +83,29 @@ def build_report(cases: list[Case], filters: list[str], loop_names: dict[str, li
                 if first is not None:
                     q = loops.decode(name, first, outs[first])["q"]
                     rep.errors[(name, case.name, system)] = rmse_errors(q, case)
+                if firmware:
+                    _firmware_rows(rep, name, system, case, qemu, progress)
     rep.seconds = time.perf_counter() - t0
     return rep
+
+
+def _firmware_rows(rep: Report, name: str, system: str, case: Case, qemu: bool, progress) -> None:
+    """The unit application in the loop (SIL; PIL when ``qemu``) against the unit model."""
+    from kinefuse.hil_tests.harness import firmware as fw
+    for lp in fw.firmware_loops(name, system):
+        if lp.startswith("pil-") and not qemu:
+            continue
+        if progress:
+            progress(f"{name} / {case.name}: {lp}")
+        n = fw.PIL_SAMPLES if lp.startswith("pil-") else min(case.n, 3000)
+        row = {"filter": name, "case": case.name, "system": system, "model": f"{system} unit model",
+               "loop": lp, "samples": n, "mismatch": None, "error": None}
+        try:
+            m, _got, _ref = fw.compare_unit(lp, name, case, n=n)
+            row["mismatch"] = m.as_dict() if m else None
+        except Exception as exc:            # reported in the table, not hidden
+            row["error"] = f"{type(exc).__name__}: {exc}"
+        rep.bitexact.append(row)
 
 
 def write_markdown(rep: Report, out_dir: Path, png_name: str | None) -> Path:

@@ -48,10 +48,27 @@ def test_model_and_host_c_identical(name, system, ci_inputs):
     assert not ms, "\n".join(m.message() for m in ms)
 
 
+@pytest.fixture(scope="module")
+def qemu_programs(ci_inputs):
+    """Cross-build every filter's batch programs up front, two at a time (CI has 2 cores)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    from kinefuse.hil_tests.harness.qemu_filter import filter_program
+    jobs = []
+    for name, system in CASES:
+        _info, e = loops.encode(name, system, {k: v[:1] for k, v in ci_inputs.items()})
+        for lp in loops.BITEXACT[system]:
+            if lp.startswith("qemu-"):
+                jobs.append((name, system, lp.split("-")[1], e.params))
+    with ThreadPoolExecutor(2) as pool:
+        list(pool.map(lambda j: filter_program(*j), jobs))
+    return len(jobs)
+
+
 @pytest.mark.qemu
 @needs_qemu
 @pytest.mark.parametrize("name,system", CASES)
-def test_cortex_m_identical_to_model(name, system, ci_inputs):
+def test_cortex_m_identical_to_model(name, system, ci_inputs, qemu_programs):
     lps = [f"{system}-model"] + [lp for lp in loops.BITEXACT[system] if lp.startswith("qemu-")]
     outs = {lp: loops.run_loop(lp, name, ci_inputs) for lp in lps}
     ms = compare.compare_all(outs, ci_inputs)

@@ -37,10 +37,6 @@ if os.environ.get("CI"):          # CI: no shrinking (minimal examples are found
 # (filter, property, number system or None for all) -> why it fails (reported to the owner,
 # with the minimal example hypothesis found; see the harness report)
 KNOWN_FAILURES = {
-    ("madgwick", "unit_norm", "q"): (
-        "madgwick q: |q| off by up to 0.048 (f32 and the reference: < 2e-7); minimal: seed=253, "
-        "acc = N(0, 1) m/s^2 noise only (|a| ~1.3 m/s^2, just above the 1 m/s^2 init threshold), "
-        "mag noise, mag_valid every 2nd sample: the initialisation on sample 1 gives |q| = 0.952"),
     ("flagship", "unit_norm", None): (
         "flagship: |q| = 0.41 (f32 and q) for in-range input with a large rotation per step "
         "(dt = 1 s, rates ~16 rad/s): the Newton renormalisation of the strapdown quaternion "

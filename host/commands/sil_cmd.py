@@ -24,6 +24,9 @@ def register(subparsers) -> None:
     r.add_argument("--seed", type=int, default=1, help="simulator seed (default 1)")
     r.add_argument("--no-qemu", action="store_true", help="skip the Cortex-M loops")
     r.add_argument("--with-ref", action="store_true", help="also score the float64 reference (slow)")
+    r.add_argument("--firmware", action="store_true",
+                   help="also run the unit application: SIL (host build, pty) and PIL (QEMU, "
+                        "first samples of each scenario) against the unit model")
     r.add_argument("--cost", default=None, metavar="JSON",
                    help="include a cost table from `kinefuse bench cost --json` output")
     r.add_argument("--json", action="store_true", help="one JSON object on stdout")
@@ -71,7 +74,12 @@ def run_report(args: argparse.Namespace) -> int:
                 raise KinefuseError(f"BROAD trial {path} not found")
             case = scenarios.broad_case(path)
             cases.append(case.head(int(seconds * case.rate_hz)) if seconds else case)
+        if args.firmware:
+            from kinefuse.hil_tests.harness.firmware import firmware_missing
+            if firmware_missing():
+                raise KinefuseError(firmware_missing())
         rep = report.build_report(cases, filters, with_ref=args.with_ref, qemu=qemu,
+                                  firmware=args.firmware,
                                   progress=lambda s: bar.update(task, description=s))
     rep.cost = cost
     png = report.write_png(rep, out)

@@ -134,6 +134,7 @@ class ParamClient:
                 ptype = self.types[name]
         wire = encode_value(value, ptype)
         want = decode_value(wire, ptype)
+        kept = None
         for _ in range(self.retries):
             self.s.send("PARAM_SET", target_system=self.sys, target_component=self.comp,
                         param_id=name, param_value=wire, param_type=ptype)
@@ -145,9 +146,17 @@ class ParamClient:
                 self.s.wait_for(lambda f: f.msgid == 22 and f.msg.param_id == name, timeout=self.timeout)
                 raise ParamError(f"{name} = {value!r} rejected: {_error_text(f.msg.error)}")
             got = decode_value(f.msg.param_value, f.msg.param_type)
-            if not same_value(got, want):
-                raise ParamError(f"{name} = {value!r} rejected: the unit kept {got!r}")
-            return got
+            if same_value(got, want):
+                return got
+            # A unit refuses a write by echoing the value it kept, but a slow link can also
+            # deliver a late answer to an earlier read here: wait until the parameter goes
+            # quiet and ask again; only an answer after the quiet period decides.
+            kept = got
+            while self.s.wait_for(lambda f: f.msgid == 22 and self._from_unit(f)
+                                  and f.msg.param_id == name, timeout=min(self.timeout, 0.3)):
+                pass
+        if kept is not None:
+            raise ParamError(f"{name} = {value!r} rejected: the unit kept {kept!r}")
         raise ParamError(f"no answer to PARAM_SET {name} from system {self.sys}")
 
 
