@@ -49,6 +49,8 @@ def frac_for(r: float) -> int:
         return 30
     if not math.isfinite(r):
         raise RangeError("unbounded range")
+    if r * MARGIN * 2.0 ** FRAC_MAX <= RAW_MAX:    # tiny ranges (even subnormal) take the cap
+        return FRAC_MAX
     f = int(math.floor(math.log2(RAW_MAX / (r * MARGIN))))
     while r * MARGIN * 2.0 ** f > RAW_MAX:
         f -= 1
@@ -639,5 +641,7 @@ def dyn_const_rsqrt(eps: float) -> tuple[int, int]:
 
 
 def _rescale_const(raw: int, k: int, fm: Fmt) -> int:
-    v = _rescale(raw, k)
-    return qrt.kf_sat(v, fm.lo, fm.hi) if fm.sat else v
+    # A constant operand of min/max/select is clamped into the result's bounds: exact (a bound
+    # outside them is never the chosen value: min(x, 1000) with x <= 256 is x = min(x, 256)),
+    # and it keeps int32 literals within int32.
+    return qrt.kf_sat(_rescale(raw, k), fm.lo, fm.hi)

@@ -5,7 +5,7 @@ feedback, counters and saturation."""
 from __future__ import annotations
 
 import numpy as np
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, example, given, settings, strategies as st
 
 from kinefuse.codegen.estimator import Estimator, InputSpec, Param, Var
 from kinefuse.codegen.ir import BOOL, INT
@@ -93,6 +93,8 @@ _uid = iter(range(10 ** 9))
 @settings(max_examples=12, deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 @given(program=programs, seed=st.integers(0, 2 ** 16))
+# found in CI: a clamp to a subnormal range (the Q-format choice overflowed)
+@example(program=[(0, 0, 0, 0, 1.0), (0, 0, 0, 0, 1.0), (11, 0, 0, 0, 2.225073858507e-311)], seed=0)
 def test_random_program_c_equals_model(program, seed, tmp_path):
     est = make_estimator(program, next(_uid))
     runners = build_adhoc(est, tmp_path / est.name)

@@ -116,7 +116,7 @@ void angle_srukf_q_update(angle_srukf_q_state *s, const kf_angle_input_q *in, an
     const int32_t t37 = ((t37_0 < 1717986918) ? t37_0 : 1717986918);  /* angle_kf.py:136 */
     const int32_t t39 = ((int32_t)((((((int64_t)1073741824) * 2) - ((int64_t)p_w0)) + 1) >> 1));  /* angle_kf.py:397 Q1.30 */
     const int32_t t41 = ((int32_t)(((((int64_t)t39) * 1073741824) + 536870912) >> 30));  /* angle_kf.py:397 */
-    const int32_t t43 = ((107374182 < t39) ? t39 : 107374182);  /* angle_kf.py:398 Q1.30 */
+    const int32_t t43 = ((107374183 < t39) ? t39 : 107374183);  /* angle_kf.py:398 Q1.30 */
     const int32_t t45 = kf_div_rnd((((int64_t)1073741824) * 134217728), ((int64_t)t43), 134217728, 1342177280);  /* angle_kf.py:398 Q6.25 */
     const int32_t t46 = ((int32_t)kf_isqrt_rnd((((int64_t)t45) * INT64_C(2147483648))));  /* angle_kf.py:398 Q3.28 */
     const int32_t t47 = ((int32_t)(((((int64_t)t46) * x_Stt) + 536870912) >> 30));  /* angle_kf.py:391 Q2.29 */
@@ -990,7 +990,7 @@ void angle_srukf_q_update(angle_srukf_q_state *s, const kf_angle_input_q *in, an
     const int32_t t883 = ((int32_t)(((((int64_t)t809) - (((int64_t)t829) * 4)) + 2) >> 2));  /* angle_kf.py:416 Q10.21 */
     const int32_t t884 = ((int32_t)(((((int64_t)t94) - (((int64_t)t839) * 4)) + 2) >> 2));  /* angle_kf.py:416 Q4.27 */
     const int32_t t885 = ((int32_t)(((((int64_t)t734) - (((int64_t)t849) * 2)) + 1) >> 1));  /* angle_kf.py:416 Q6.25 */
-    const int32_t t886 = ((0 < t41) ? t41 : 0);  /* angle_kf.py:518 */
+    const int32_t t886 = ((107374183 < t41) ? t41 : 107374183);  /* angle_kf.py:518 */
     const int32_t t887 = ((int32_t)kf_isqrt_rnd((((int64_t)t886) * INT64_C(2147483648))));  /* angle_kf.py:518 */
     const int32_t t888 = ((int32_t)(((((int64_t)t887) * t854) + 536870912) >> 30));  /* angle_kf.py:519 Q5.26 */
     const int32_t t889 = ((int32_t)(((((int64_t)t887) * t855) + 536870912) >> 30));  /* angle_kf.py:519 Q9.22 */

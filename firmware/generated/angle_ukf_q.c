@@ -155,7 +155,7 @@ void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t85 = kf_sat(kf_isqrt_rnd((((int64_t)t84) * 1073741824)), 2122, 1073741824);  /* angle_kf.py:375 Q5.26 */
     const int32_t t87 = ((int32_t)((((((int64_t)1073741824) * 2) - ((int64_t)p_w0)) + 1) >> 1));  /* angle_kf.py:397 Q1.30 */
     const int32_t t89 = ((int32_t)(((((int64_t)t87) * 1073741824) + 536870912) >> 30));  /* angle_kf.py:397 */
-    const int32_t t91 = ((107374182 < t87) ? t87 : 107374182);  /* angle_kf.py:398 Q1.30 */
+    const int32_t t91 = ((107374183 < t87) ? t87 : 107374183);  /* angle_kf.py:398 Q1.30 */
     const int32_t t93 = kf_div_rnd((((int64_t)1073741824) * 134217728), ((int64_t)t91), 134217728, 1342177280);  /* angle_kf.py:398 Q6.25 */
     const int32_t t94 = ((int32_t)kf_isqrt_rnd((((int64_t)t93) * INT64_C(2147483648))));  /* angle_kf.py:398 Q3.28 */
     const int32_t t95 = ((int32_t)(((((int64_t)t94) * t40) + 536870912) >> 30));  /* angle_kf.py:391 Q2.29 */
@@ -538,7 +538,7 @@ void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t471 = ((int32_t)(((((int64_t)t470) * t444) + 536870912) >> 30));  /* angle_kf.py:246 Q9.22 */
     const int32_t t472 = ((int32_t)(((((int64_t)t111) * t447) + 536870912) >> 30));  /* angle_kf.py:246 Q5.26 */
     const int32_t t473 = ((int32_t)((((((int64_t)t471) * 16) + ((int64_t)t472)) + 8) >> 4));  /* angle_kf.py:246 Q9.22 */
-    const int32_t t474 = ((1677722 < t118) ? t118 : 1677722);  /* angle_kf.py:241 Q8.23 */
+    const int32_t t474 = ((1678252 < t118) ? t118 : 1678252);  /* angle_kf.py:241 Q8.23 */
     const int32_t t475_0 = kf_sat((((int64_t)t474) * 8), 13426016, 2013265920);
     const int32_t t475 = ((t475_0 < 2013265920) ? t475_0 : 2013265920);  /* angle_kf.py:241 Q5.26 */
     const int32_t t476 = ((int32_t)(((((int64_t)t475) * t37) + 1073741824) >> 31));  /* angle_kf.py:242 Q3.28 */
@@ -872,7 +872,7 @@ void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t781 = ((int32_t)((((((int64_t)t779) * 16) + ((int64_t)t780)) + 8) >> 4));  /* angle_kf.py:246 Q9.22 */
     const int32_t t782_0 = kf_sat((((int64_t)t144) * 4), 13421773, 2013261676);
     const int32_t t782 = ((13421773 < t782_0) ? t782_0 : 13421773);  /* angle_kf.py:241 Q5.26 */
-    const int32_t t783 = ((t782 < 2013265920) ? t782 : 2013265920);  /* angle_kf.py:241 Q5.26 */
+    const int32_t t783 = ((t782 < 2013261676) ? t782 : 2013261676);  /* angle_kf.py:241 Q5.26 */
     const int32_t t784 = ((int32_t)(((((int64_t)t783) * t37) + 1073741824) >> 31));  /* angle_kf.py:242 Q3.28 */
     const int32_t t785 = ((int32_t)(((((int64_t)t784) * 1367130551) + 536870912) >> 30));  /* angle_kf.py:224 Q2.29 */
     const int32_t t786 = ((int32_t)((((((int64_t)t785) * 4) + ((int64_t)1073741824)) + 4) >> 3));  /* angle_kf.py:224 Q3.28 */

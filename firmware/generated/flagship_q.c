@@ -982,7 +982,7 @@ void flagship_q_update(flagship_q_state *s, const kf_imu_input_q *in, flagship_q
         const int32_t t786 = ((int32_t)(((((int64_t)t785) * p_tau_mag) + 1073741824) >> 31));  /* flagship.py:395 Q5.26 */
         const int32_t t787 = ((int32_t)(((((int64_t)t605) * t607) + 536870912) >> 30));  /* flagship.py:396 Q4.27 */
         const int32_t t788 = ((int32_t)(((((int64_t)t787) + (((int64_t)t786) * 2)) + 2) >> 2));  /* flagship.py:398 Q6.25 */
-        const int32_t t790 = ((0 < t788) ? t788 : 0);  /* flagship.py:398 Q6.25 */
+        const int32_t t790 = ((1 < t788) ? t788 : 1);  /* flagship.py:398 Q6.25 */
         const int32_t t791 = kf_div_rnd((((int64_t)t787) * 268435456), ((int64_t)t790), 0, 1073741824);  /* flagship.py:398 Q1.30 */
         const int32_t t793 = (t780 ? t791 : 0);  /* flagship.py:398 Q1.30 */
         const int32_t t794 = (t773 ? 1073741824 : t793);  /* flagship.py:397 Q1.30 */

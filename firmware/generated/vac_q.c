@@ -270,7 +270,7 @@ void vac_q_update(vac_q_state *s, const kf_imu_input_q *in, vac_q_output *out)
     const int32_t t224 = kf_mul_dyn(t211, t221, 0, -1073741824, 1073741824);  /* algebraic.py:123 Q1.30 */
     const int32_t t226 = kf_mul_dyn(t212, t221, 0, -1073741824, 1073741824);  /* algebraic.py:123 Q1.30 */
     const int32_t t228 = kf_mul_dyn(t213, t221, 0, 0, 0);  /* algebraic.py:123 Q1.30 */
-    const int32_t t231 = ((-1073741824 < t187) ? t187 : -1073741824);  /* algebraic.py:124 Q1.30 */
+    const int32_t t231 = ((0 < t187) ? t187 : 0);  /* algebraic.py:124 Q1.30 */
     const int32_t t232 = ((t231 < 1073741824) ? t231 : 1073741824);  /* algebraic.py:124 Q1.30 */
     const int32_t t233 = ((int32_t)(((int64_t)1073741824) - ((int64_t)t232)));  /* algebraic.py:124 Q1.30 */
     const int32_t t234 = ((int32_t)(((((int64_t)1073741824) + ((int64_t)t232)) + 1) >> 1));  /* algebraic.py:124 Q2.29 */

@@ -166,7 +166,7 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int32_t t96 = kf_mul_dyn(u_mag1, t93, -13, -1073741824, 1073741824);  /* vak.py:84 Q1.30 */
     const int32_t t98 = kf_mul_dyn(u_mag2, t93, -13, -1073741824, 1073741824);  /* vak.py:84 Q1.30 */
     const int32_t t100 = kf_div_rnd((((int64_t)p_sigma_mag) * 262144), ((int64_t)p_sigma_acc), 7, 1638400000);  /* vak.py:91 Q16.15 */
-    const int32_t t101 = ((0 < t100) ? t100 : 0);  /* vak.py:91 Q16.15 */
+    const int32_t t101 = ((7 < t100) ? t100 : 7);  /* vak.py:91 Q16.15 */
     const int32_t t103_0 = kf_sat((((int64_t)t101) * 32), 224, 1073741824);
     const int32_t t103 = ((t103_0 < 1073741824) ? t103_0 : 1073741824);  /* vak.py:91 Q11.20 */
     const int32_t t105 = kf_div_rnd((((int64_t)p_gravity) * INT64_C(2147483648)), ((int64_t)1342177280), 2083059139, 2126008812);  /* vak.py:92 */
@@ -469,7 +469,7 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int32_t t427 = ((int32_t)(((((int64_t)t426) * t120) + 536870912) >> 30));  /* algebraic.py:325 Q5.26 */
     const int32_t t428 = ((int32_t)((((((int64_t)t132) * 8) + ((int64_t)t427)) + 4) >> 3));  /* algebraic.py:325 Q8.23 */
     const int32_t t429 = ((int32_t)(((((int64_t)t428) * t425) + 536870912) >> 30));  /* algebraic.py:325 Q15.16 */
-    const int32_t t430 = ((0 < t429) ? t429 : 0);  /* algebraic.py:325 Q15.16 */
+    const int32_t t430 = ((32 < t429) ? t429 : 32);  /* algebraic.py:325 Q15.16 */
     const int32_t t431_0 = kf_sat((((int64_t)t430) * 128), 4096, 1073741824);
     const int32_t t431 = ((t431_0 < 1073741824) ? t431_0 : 1073741824);  /* algebraic.py:325 Q8.23 */
     const int32_t t432 = ((int32_t)(((((int64_t)t120) * t257) + 536870912) >> 30));  /* algebraic.py:326 Q5.26 */

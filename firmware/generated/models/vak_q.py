@@ -48,7 +48,7 @@ def _run(inputs, params, state, n):
     p_coupling = params['coupling'][0]
     p_gravity = params['gravity'][0]
     t100 = rt.kf_div_rnd((p_sigma_mag << 18), p_sigma_acc, 7, 1638400000)
-    t101 = (t100 if (0 < t100) else 0)
+    t101 = (t100 if (7 < t100) else 7)
     t103_0 = (t101 << 5)
     t103_0 = 224 if t103_0 < 224 else (1073741824 if t103_0 > 1073741824 else t103_0)
     t103 = (t103_0 if (t103_0 < 1073741824) else 1073741824)
@@ -282,7 +282,7 @@ def _run(inputs, params, state, n):
     t427 = (((t426 * t120) + 536870912) >> 30)
     t428 = ((((t132 << 3) + t427) + 4) >> 3)
     t429 = (((t428 * t425) + 536870912) >> 30)
-    t430 = _where((0 < t429), t429, 0)
+    t430 = _where((32 < t429), t429, 32)
     t431_0 = rt.kf_sat_v((t430 << 7), 4096, 1073741824)
     t431 = _where((t431_0 < 1073741824), t431_0, 1073741824)
     t432 = (((t120 * t257) + 536870912) >> 30)
