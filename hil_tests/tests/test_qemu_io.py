@@ -67,8 +67,9 @@ def test_session_pty(io_prog):
             assert port.readline() == b"ready\n"
             port.write(b"pty\n")
             assert port.readline() == b"PTY\n"
+            # "!" ends the program; its echo races QEMU closing the pty (a hang-up may discard
+            # it), so the exit code is the check here (the socket test checks the echo)
             port.write(b"!")
-            assert port.read(1) == b"!"
         finally:
             port.close()
         assert s.wait(10) == 5
