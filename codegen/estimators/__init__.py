@@ -17,6 +17,7 @@ from kinefuse.codegen.estimators.mahony import Mahony
 from kinefuse.codegen.estimators.dynamics.pendulum import PendulumEKF
 from kinefuse.codegen.estimators.dynamics.leg import LegEKF, LegFootEKF
 from kinefuse.codegen.estimators.calib_apply import CalibApply
+from kinefuse.codegen.estimators.joint_angle import JointAngle
 
 # Registry order = order in `kinefuse filters`.
 ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
@@ -38,6 +39,7 @@ ESTIMATORS: dict[str, type[Estimator]] = {cls.name: cls for cls in (
     LegEKF,
     LegFootEKF,
     CalibApply,
+    JointAngle,
 )}
 
 
