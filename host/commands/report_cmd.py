@@ -11,6 +11,10 @@ Elbow (seed 002 set-up)::
 
     kinefuse report elbow --arm arm.csv --forearm forearm.csv --out report/
 
+Units' recordings (``kinefuse record``, several units in one .kfr; times synchronised)::
+
+    kinefuse report knee --thigh both.kfr --thigh-unit 1 --shank both.kfr --shank-unit 2 --out report/
+
 Recordings may hold device quaternions (used by default) or raw IMU data (then the orientation
 filter ``--filter`` is run: ``complementary`` or ``module:function``).
 """
@@ -22,6 +26,10 @@ import sys
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.kinematics import joint   # light (numpy); the heavy modules load on use
+
+
+UNIT_HELP = ("unit of the {seg} sensor in .kfr recordings holding several units: its unit (MAVLink "
+             "system) id, or s<stream>:<id>; also applies to the {seg} calibration recordings")
 
 
 def register(subparsers) -> None:
@@ -49,6 +57,8 @@ def register(subparsers) -> None:
     k = sub.add_parser("knee", help="knee step-up report (seed 001 protocol)")
     k.add_argument("--thigh", required=True, metavar="REC", help="step-up recording, thigh sensor")
     k.add_argument("--shank", required=True, metavar="REC", help="step-up recording, shank sensor")
+    k.add_argument("--thigh-unit", metavar="ID", help=UNIT_HELP.format(seg="thigh"))
+    k.add_argument("--shank-unit", metavar="ID", help=UNIT_HELP.format(seg="shank"))
     k.add_argument("--calib-standing", nargs=2, metavar=("THIGH", "SHANK"), help="standing still recordings")
     k.add_argument("--calib-lying", nargs=2, metavar=("THIGH", "SHANK"), help="lying supine recordings")
     k.add_argument("--mag-cal", nargs=2, metavar=("THIGH", "SHANK"),
@@ -66,6 +76,8 @@ def register(subparsers) -> None:
     e = sub.add_parser("elbow", help="elbow flexion report (seed 002 set-up)")
     e.add_argument("--arm", required=True, metavar="REC")
     e.add_argument("--forearm", required=True, metavar="REC")
+    e.add_argument("--arm-unit", metavar="ID", help=UNIT_HELP.format(seg="arm"))
+    e.add_argument("--forearm-unit", metavar="ID", help=UNIT_HELP.format(seg="forearm"))
     e.add_argument("--unit-cal", nargs=2, metavar=("ARM.json", "FOREARM.json"))
     e.add_argument("--sequence", choices=list(joint.ELBOW_SEQUENCES), default="XYZ",
                    help="XYZ: seed 002 eqs. 2.7-2.9; ZYX: the seed's MATLAB code")
@@ -75,19 +87,28 @@ def register(subparsers) -> None:
 
 
 def _reader(args):
-    from kinefuse.host.readers import read_recording
+    from kinefuse.host.readers import detect_format, kfr, read_recording
     opts = {"fs": args.fs} if args.fs else {}
 
-    def read(path):
+    def read(path, unit=None, option=None):
+        """``unit`` goes to .kfr recordings only; ``option`` names it for the error when the
+        main recording of a segment is not a .kfr."""
         if path is None:
             return None
-        rec = read_recording(path, args.fmt, **opts)
-        return rec
+        fmt = args.fmt or detect_format(path)
+        extra = {}
+        if unit is not None:
+            if fmt == kfr.FORMAT:
+                extra["unit"] = unit
+            elif option is not None:
+                raise KinefuseError(f"{option} {unit}: {path} is not a .kfr unit recording "
+                                    f"({fmt}); {option} selects a unit in a .kfr file")
+        return read_recording(path, fmt, **opts, **extra)
     return read
 
 
-def _pair(read, paths):
-    return None if paths is None else (read(paths[0]), read(paths[1]))
+def _pair(read, paths, units=(None, None)):
+    return None if paths is None else (read(paths[0], units[0]), read(paths[1], units[1]))
 
 
 class _Progress:
@@ -114,6 +135,10 @@ class _Progress:
     def __exit__(self, *exc):
         if self._p is not None:
             self._p.__exit__(*exc)
+
+
+def _with_unit(path, unit) -> str:
+    return path if unit is None else f"{path} (unit {unit})"
 
 
 def _finish(args, kind, res, title, inputs) -> int:
@@ -147,14 +172,17 @@ def run_knee(args) -> int:
         units = (unitfile.load(args.unit_cal[0]), unitfile.load(args.unit_cal[1]))
     with _Progress(7) as prog:
         prog("reading recordings")
-        thigh, shank = read(args.thigh), read(args.shank)
+        seg_units = (args.thigh_unit, args.shank_unit)
+        thigh = read(args.thigh, args.thigh_unit, "--thigh-unit")
+        shank = read(args.shank, args.shank_unit, "--shank-unit")
         res = report.knee_from_recordings(
-            thigh, shank, standing=_pair(read, args.calib_standing), lying=_pair(read, args.calib_lying),
-            mag_recordings=_pair(read, args.mag_cal), unit_calibrations=units, filter=args.filter,
+            thigh, shank, standing=_pair(read, args.calib_standing, seg_units),
+            lying=_pair(read, args.calib_lying, seg_units),
+            mag_recordings=_pair(read, args.mag_cal, seg_units), unit_calibrations=units, filter=args.filter,
             orientation=args.orientation, side=args.side, convention=args.convention,
             field_norm=args.field_norm, mag_gate=args.mag_gate,
             static_config=static.StaticConfig(), progress=prog)
-    inputs = {"thigh": args.thigh, "shank": args.shank,
+    inputs = {"thigh": _with_unit(args.thigh, args.thigh_unit), "shank": _with_unit(args.shank, args.shank_unit),
               "standing": " ".join(args.calib_standing or []), "lying": " ".join(args.calib_lying or []),
               "magnetometer calibration": " ".join(args.mag_cal or []),
               "unit calibration": " ".join(args.unit_cal or [])}
@@ -170,8 +198,11 @@ def run_elbow(args) -> int:
         units = (unitfile.load(args.unit_cal[0]), unitfile.load(args.unit_cal[1]))
     with _Progress(3) as prog:
         prog("reading recordings")
-        res = report.elbow_from_recordings(read(args.arm), read(args.forearm), filter=args.filter,
+        arm = read(args.arm, args.arm_unit, "--arm-unit")
+        forearm = read(args.forearm, args.forearm_unit, "--forearm-unit")
+        res = report.elbow_from_recordings(arm, forearm, filter=args.filter,
                                            orientation=args.orientation, sequence=args.sequence,
                                            init=args.init, unit_calibrations=units, progress=prog)
-    inputs = {"arm": args.arm, "forearm": args.forearm, "unit calibration": " ".join(args.unit_cal or [])}
+    inputs = {"arm": _with_unit(args.arm, args.arm_unit), "forearm": _with_unit(args.forearm, args.forearm_unit),
+              "unit calibration": " ".join(args.unit_cal or [])}
     return _finish(args, "elbow", res, "Elbow flexion–extension", inputs)

@@ -75,6 +75,24 @@ def _apply_unit(rec: Recording, doc: dict | None) -> Recording:
     return r
 
 
+def _on_one_clock(a: Recording, b: Recording, info: dict) -> tuple[Recording, Recording, tuple]:
+    """Recordings on one clock (units of one .kfr file: equal ``metadata["clock_id"]``) are cut
+    to the span both cover and share a time origin; others are aligned by their starts.
+    Returns (a, b, (origin of a, origin of b))."""
+    cid = a.metadata.get("clock_id")
+    if cid is None or cid != b.metadata.get("clock_id"):
+        info["time_alignment"] = "by start (each recording's first sample at t = 0)"
+        return a, b, (a.t[0], b.t[0])
+    lo, hi = max(a.t[0], b.t[0]), min(a.t[-1], b.t[-1])
+    if hi <= lo:
+        raise KinefuseError(f"{a.source} and {b.source}: the two recordings do not overlap in time")
+
+    def cut(r):
+        return r.slice(int(np.searchsorted(r.t, lo)), int(np.searchsorted(r.t, hi, side="right")))
+    info["time_alignment"] = "common clock (one recording of both units): overlap used"
+    return cut(a), cut(b), (lo, lo)
+
+
 def _posture_mean(rec: Recording, name: str, cfg: S.StaticConfig) -> tuple[np.ndarray, dict]:
     rec.require("acc")
     wins = S.detect_static(rec.t, rec.acc, rec.gyr, cfg)
@@ -160,6 +178,7 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
     units = unit_calibrations or (None, None)
     segs = ("thigh", "shank")
     task = [_apply_unit(thigh, units[0]), _apply_unit(shank, units[1])]
+    task[0], task[1], origin = _on_one_clock(task[0], task[1], info)
     stand = [None, None] if standing is None else [_apply_unit(r, u) for r, u in zip(standing, units)]
     lie = [None, None] if lying is None else [_apply_unit(r, u) for r, u in zip(lying, units)]
 
@@ -228,8 +247,8 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
         info[f"{segs[k]}_gyro_bias_rad_s"] = {"value": np.asarray(bias).tolist(), "source": bias_src}
 
     # --- 5. common time base
-    t_th = task[0].t - task[0].t[0]
-    t_sh = task[1].t - task[1].t[0]
+    t_th = task[0].t - origin[0]
+    t_sh = task[1].t - origin[1]
     t_end = min(t_th[-1], t_sh[-1])
     sel = t_th <= t_end
     t = t_th[sel]
@@ -290,6 +309,7 @@ def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter=None,
     units = unit_calibrations or (None, None)
     recs = [_apply_unit(arm, units[0]), _apply_unit(forearm, units[1])]
     info: dict = {"sequence": sequence, "init": init}
+    recs[0], recs[1], origin = _on_one_clock(recs[0], recs[1], info)
     qs = []
     for k, name in enumerate(("arm", "forearm")):
         _note(progress, f"{name} orientation")
@@ -299,8 +319,8 @@ def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter=None,
         q, desc = sensor_orientation(recs[k], filter=filter, orientation=orientation, gyro_bias=bias)
         qs.append(q)
         info[f"{name}_orientation"] = desc
-    t_a = recs[0].t - recs[0].t[0]
-    t_f = recs[1].t - recs[1].t[0]
+    t_a = recs[0].t - origin[0]
+    t_f = recs[1].t - origin[1]
     t_end = min(t_a[-1], t_f[-1])
     sel = t_a <= t_end
     t = t_a[sel]

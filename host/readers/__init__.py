@@ -2,15 +2,21 @@
 mag µT, device quaternion (w,x,y,z) if present, extra channels, metadata).
 
 Formats (``fmt`` names): ``xsens-dot``, ``matrix``, ``metabase``, ``seed004-arduino``,
-``broad-mat``, ``kinefuse-csv``.  :func:`read_recording` detects the format from the header
-(or the ``.mat`` extension) unless ``fmt`` is given.  Every reader fails with a one-line
+``broad-mat``, ``kinefuse-csv``, ``kfr``.  :func:`read_recording` detects the format from the
+header (or the ``.mat`` / ``.kfr`` extension) unless ``fmt`` is given.
+
+``kfr``: kinefuse units' recordings (``kinefuse record``), see :mod:`.kfr`.  One file may hold
+several units: choose one with ``unit=`` (MAVLink system id = unit id, or ``s<stream>:<id>``);
+times are on the host clock (device clock offset and drift fitted out), so units of one file
+are synchronised; lost samples stay gaps.  ``fmt="kfr"`` also reads a raw MAVLink capture
+(then on the unit's own clock).  Every reader fails with a one-line
 :class:`ReaderError` naming the file, the line and the problem.
 """
 from __future__ import annotations
 
 import os
 
-from kinefuse.host.readers import broad, kinefuse_csv, matrix, metabase, seed004, xsens_dot
+from kinefuse.host.readers import broad, kfr, kinefuse_csv, matrix, metabase, seed004, xsens_dot
 from kinefuse.host.readers.recording import ReaderError, Recording
 
 READERS = {
@@ -20,6 +26,7 @@ READERS = {
     seed004.FORMAT: seed004.read,
     broad.FORMAT: broad.read,
     kinefuse_csv.FORMAT: kinefuse_csv.read,
+    kfr.FORMAT: kfr.read,
 }
 
 __all__ = ["READERS", "ReaderError", "Recording", "detect_format", "read_recording"]
@@ -32,6 +39,14 @@ def detect_format(path: str) -> str:
         raise ReaderError(path, "is a directory; give one recording file")
     if path.lower().endswith(".mat"):
         return broad.FORMAT
+    if path.lower().endswith(".kfr"):
+        return kfr.FORMAT
+    try:
+        with open(path, "rb") as f:
+            if kfr.sniff_bytes(f.read(16)):
+                return kfr.FORMAT
+    except OSError as exc:
+        raise ReaderError(path, f"cannot open ({exc.strerror})") from None
     try:
         with open(path, encoding="utf-8-sig", errors="replace") as f:
             head = [next(f, "") for _ in range(25)]
@@ -47,12 +62,13 @@ def detect_format(path: str) -> str:
     if seed004.sniff_lines(head):
         return seed004.FORMAT
     raise ReaderError(path, "unknown recording format (expected Xsens DOT, MATRIX, MetaBase, "
-                            "seed-004 Arduino or kinefuse CSV, or a BROAD .mat)")
+                            "seed-004 Arduino or kinefuse CSV, a BROAD .mat or a .kfr unit recording)")
 
 
 def read_recording(path: str, fmt: str | None = None, **options) -> Recording:
     """Read ``path`` (format auto-detected unless ``fmt``); options go to the reader
-    (``fs`` for MATRIX/seed-004, ``gyro_range_dps`` for MetaBase, ``acc_range_g`` for MATRIX)."""
+    (``fs`` for MATRIX/seed-004, ``gyro_range_dps`` for MetaBase, ``acc_range_g`` for MATRIX,
+    ``unit`` for ``kfr``)."""
     fmt = fmt or detect_format(path)
     if fmt not in READERS:
         raise ReaderError(path, f"unknown format {fmt!r}; choose one of {', '.join(READERS)}")

@@ -1,0 +1,298 @@
+"""Kinefuse unit recordings (``.kfr``, from ``kinefuse record``): one unit's KF_RAW_SAMPLE stream.
+
+A ``.kfr`` file may hold several units (one per port, or several MAVLink systems on one link);
+choose one with ``unit=``:
+
+* ``unit=2`` (or ``"2"``, ``"u2"``): the unit with MAVLink system id 2 (= its unit id,
+  parameter KF_UNIT_ID);
+* ``unit="s1"``: the only unit recorded on stream 1 (the second ``--port``);
+* ``unit="s1:2"`` (or ``"s1u2"``, export's ``s1_u2``): system id 2 on stream 1, needed when two
+  ports carry units with the same id.
+
+Without ``unit=`` a file with one unit is read; a file with several fails with a one-line
+:class:`ReaderError` listing the units present (so does an unknown unit).
+
+Samples (dialect ``firmware/mavlink/kinefuse.xml``) are converted to SI with the dialect's
+scale factors (``RAW_SCALE``, the same as ``kinefuse export``): acc mG × 9.80665e-3 → m/s²,
+gyro mrad/s × 1e-3 → rad/s, mag mgauss × 0.1 → µT, temperature cdegC × 0.01 → °C.
+
+**Time base.** ``t`` is the HOST clock: seconds of the host's monotonic clock since the
+recording started (``metadata["start_unix_ns"]`` gives UTC of ``t = 0``).  Each sample's device
+time (``time_boot_us``) is mapped with the device→host clock fit of ``kinefuse stats``
+(:func:`kinefuse.host.link.stats.fit_clock`: host = offset + slope × device on the lower
+envelope of the receive times, i.e. the unit's clock offset and drift are removed and link
+jitter is not), one fit per device-clock segment (a reboot starts a new one).  All units of one
+recording therefore share one time base: their samples are synchronised to within the
+difference of their minimum link latencies (about a millisecond over USB serial).  The fit
+parameters are in ``metadata["clock"]``; ``metadata["clock_id"]`` is equal for recordings on
+the same host clock (the kinematics reports then align them by time instead of by start).
+The device time itself is kept in ``channels["device_time_s"]``.
+
+**Losses and repeats.** Samples missing from the ``sample_counter`` sequence stay missing:
+``t`` has a gap there (nothing is interpolated or invented; a warning counts them, see
+``metadata["samples_lost"]``).  Repeated frames (same device time) are dropped
+(``metadata["duplicates_dropped"]``).  ``channels`` also hold ``sample_counter`` (unwrapped),
+``temperature_degC`` (NaN where not valid) and ``flags``.
+
+**Magnetometer.** Present when the unit flags new magnetometer values
+(KF_RAW_SAMPLE_FLAGS_MAG_UPDATED) in at least one sample, else ``mag`` is ``None``.  The
+updated samples are ``mag_t``/``mag_native``; ``mag`` holds each of them until the next one
+(as the unit does between its slower magnetometer readings).
+
+**Damaged files.** A truncated recording (killed recorder, copied while recording) is read up to
+the cut, a damaged chunk is skipped; both add a warning.
+
+A raw MAVLink byte capture (no ``.kfr`` header; give ``fmt="kfr"`` explicitly) or a ``.tlog`` is
+read the same way; a raw capture has no host times, so ``t`` is then the unit's own clock
+(``metadata["time_base"] == "device"``, not synchronised between units).
+"""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import numpy as np
+
+from kinefuse.host.errors import KinefuseError
+from kinefuse.host.readers.recording import ReaderError, Recording, zero_order_hold
+
+FORMAT = "kfr"
+MSG_RAW, MSG_STATUS = 52500, 52504
+ACC_CLIPPED, GYRO_CLIPPED, MAG_CLIPPED, MAG_UPDATED = 1, 2, 4, 8
+CALIBRATED, TEMPERATURE_VALID, SIMULATED = 16, 32, 64
+
+
+def sniff_bytes(head: bytes) -> bool:
+    """True when ``head`` (the first bytes of a file) starts with the ``.kfr`` magic."""
+    from kinefuse.host.link.recording import MAGIC
+    return head[:len(MAGIC)] == MAGIC
+
+
+def _error(path: str, exc: KinefuseError) -> ReaderError:
+    """The link code's one-line error as a ReaderError (``<file>: <problem>``)."""
+    msg = str(exc)
+    p = str(path)
+    if msg.startswith(p):
+        msg = msg[len(p):].lstrip(":").strip()
+        msg = msg[3:] if msg.startswith("is ") else msg
+    return ReaderError(path, msg)
+
+
+def _decode(path: str):
+    from kinefuse.host.link.frames import decode_file, is_recording
+    p = Path(path)
+    if p.suffix.lower() == ".kfr" and p.is_file() and not is_recording(p):
+        raise ReaderError(path, "not a kinefuse recording (no .kfr header magic)")
+    try:
+        return decode_file(p, raw=True, msgids=(MSG_RAW, MSG_STATUS))
+    except KinefuseError as exc:
+        raise _error(path, exc) from None
+
+
+def _units(df) -> list[dict]:
+    """Every (stream, system id) that sent KF_RAW_SAMPLE, with a label unique in the file."""
+    found = []
+    for sid, ds in sorted(df.streams.items()):
+        arr = ds.arrays.get(MSG_RAW)
+        if arr is None or not arr.size:
+            continue
+        ids, counts = np.unique(arr["_sysid"], return_counts=True)
+        for s, n in zip(ids, counts):
+            found.append({"stream": int(sid), "sysid": int(s), "samples": int(n),
+                          "connection": ds.info.get("connection")})
+    sysids = [u["sysid"] for u in found]
+    for u in found:
+        u["label"] = str(u["sysid"]) if sysids.count(u["sysid"]) == 1 else f"s{u['stream']}:{u['sysid']}"
+    return found
+
+
+def list_units(path: str) -> list[dict]:
+    """Units of a recording: [{label, stream, sysid, samples, connection}]."""
+    return _units(_decode(path))
+
+
+def _parse_unit(path: str, unit) -> tuple[int | None, int | None]:
+    if isinstance(unit, (int, np.integer)) and not isinstance(unit, bool):
+        return None, int(unit)
+    m = re.fullmatch(r"(?:s(\d+)[:_/]?)?(?:u?(\d+))?", str(unit).strip().lower())
+    if not m or (m.group(1) is None and m.group(2) is None):
+        raise ReaderError(path, f"bad unit {unit!r}: expected a unit (system) id such as 2, "
+                                f"s1 (the unit on stream 1) or s1:2")
+    return (None if m.group(1) is None else int(m.group(1)),
+            None if m.group(2) is None else int(m.group(2)))
+
+
+def _describe(found: list[dict]) -> str:
+    return ", ".join(f"{u['label']} ({u['samples']} frames, stream {u['stream']}"
+                     + (f" {u['connection']}" if u.get("connection") else "") + ")" for u in found)
+
+
+def _select(path: str, found: list[dict], unit) -> dict:
+    if not found:
+        raise ReaderError(path, "no KF_RAW_SAMPLE messages (no unit sensor data) in this recording")
+    if unit is None or (isinstance(unit, str) and not unit.strip()):
+        if len(found) == 1:
+            return found[0]
+        raise ReaderError(path, f"{len(found)} units in this recording: {', '.join(u['label'] for u in found)}; "
+                                f"choose one with unit=ID (kinefuse report: --thigh-unit, --shank-unit, "
+                                f"--arm-unit, --forearm-unit)")
+    stream, sysid = _parse_unit(path, unit)
+    hits = [u for u in found if (stream is None or u["stream"] == stream)
+            and (sysid is None or u["sysid"] == sysid)]
+    if len(hits) == 1:
+        return hits[0]
+    if not hits:
+        raise ReaderError(path, f"unit {unit} is not in this recording; units present: {_describe(found)}")
+    full = [f"s{h['stream']}:{h['sysid']}" for h in hits]
+    raise ReaderError(path, f"unit {unit} is ambiguous ({', '.join(full)}): give the stream too, e.g. {full[0]}")
+
+
+def _segments(dev: np.ndarray, cnt: np.ndarray) -> list[int]:
+    """Start indices of device-clock segments: the clock goes back to a time not sent before in
+    this segment (a reboot); a step back onto an already-sent (time, counter) is a repeat."""
+    starts = [0]
+    for b in np.flatnonzero(np.diff(dev) < 0) + 1:
+        s = starts[-1]
+        same = np.flatnonzero(dev[s:b] == dev[b])
+        if not np.any(cnt[s:b][same] == cnt[b]):
+            starts.append(int(b))
+    return starts
+
+
+def _unwrap(cnt: np.ndarray) -> np.ndarray:
+    """A uint32 counter as int64 continuing across wraps (a step back stays a step back)."""
+    if cnt.size == 0:
+        return cnt.astype(np.int64)
+    d = (cnt[1:].astype(np.int64) - cnt[:-1].astype(np.int64)) & 0xFFFFFFFF
+    d = np.where(d >= 1 << 31, d - (1 << 32), d)
+    return int(cnt[0]) + np.concatenate([[0], np.cumsum(d)])
+
+
+def read(path: str, *, unit=None, **_) -> Recording:
+    """One unit of a ``.kfr`` recording (or raw MAVLink capture) as a :class:`Recording`."""
+    from kinefuse.host.link.dialect import RAW_SCALE
+    from kinefuse.host.link.stats import counter_analysis, fit_clock
+    path = str(path)
+    df = _decode(path)
+    found = _units(df)
+    u = _select(path, found, unit)
+    ds = df.streams[u["stream"]]
+    arr = ds.arrays[MSG_RAW]
+    rows = arr["_sysid"] == u["sysid"]
+    a = arr[rows]
+    host_ns = ds.host_ns.get(MSG_RAW)
+    host = None if host_ns is None else (host_ns[rows] - df.start_monotonic_ns) / 1e9
+    dev = a["time_boot_us"].astype(np.int64)
+    cnt = a["sample_counter"].astype(np.int64)
+    warnings: list[str] = []
+    name = f"unit {u['label']}"
+
+    # --- device-clock segments, repeats, host time
+    starts = _segments(dev, cnt) + [dev.size]
+    if host is None and len(starts) > 2:
+        warnings.append(f"{path}: {name}: device clock restarted {len(starts) - 2} time(s) and this capture "
+                        f"has no host times: only the last segment is read")
+        starts = starts[-2:]
+    keep_idx, t_parts, clocks = [], [], []
+    duplicates, lost, gaps = 0, 0, 0
+    counters = []
+    for s, e in zip(starts[:-1], starts[1:]):
+        d = dev[s:e]
+        prev_max = np.maximum.accumulate(np.concatenate([[np.iinfo(np.int64).min], d[:-1]]))
+        ok = d > prev_max
+        duplicates += int((~ok).sum())
+        idx = np.arange(s, e)[ok]
+        dev_s = dev[idx] / 1e6
+        if host is None:
+            t_seg = dev_s
+        else:
+            fit = fit_clock(dev_s, host[idx])
+            if fit is None:  # too few samples for the robust fit: offset only, on the lower envelope
+                fit = {"slope": 1.0, "offset_s": float(np.min(host[idx] - dev_s)), "drift_ppm": 0.0,
+                       "points": int(idx.size)}
+            t_seg = fit["offset_s"] + fit["slope"] * dev_s
+            clocks.append({k: fit[k] for k in ("offset_s", "slope", "drift_ppm", "points")
+                           if k in fit} | ({"delay_above_min_ms": fit["delay_above_min_ms"]}
+                                           if "delay_above_min_ms" in fit else {}))
+        c = _unwrap(cnt[idx])
+        ca = counter_analysis(cnt[idx])
+        lost += ca["samples_lost"]
+        if ca["stride"]:
+            gaps += int(np.sum(np.diff(c) > ca["stride"]))
+        keep_idx.append(idx)
+        t_parts.append(t_seg)
+        counters.append(c)
+    idx = np.concatenate(keep_idx)
+    t = np.concatenate(t_parts)
+    counter = np.concatenate(counters)
+    # host times of consecutive segments must not overlap (a fit across a reboot gap)
+    prev = np.maximum.accumulate(np.concatenate([[-np.inf], t[:-1]]))
+    inc = t > prev
+    if not inc.all():
+        warnings.append(f"{path}: {name}: {int((~inc).sum())} sample(s) overlapping an earlier device-clock "
+                        f"segment in host time dropped")
+        idx, t, counter = idx[inc], t[inc], counter[inc]
+    if t.size < 2:
+        raise ReaderError(path, f"{name} has only {t.size} sample(s); need at least 2")
+    a = a[idx]
+    flags = a["flags"].astype(np.int64)
+
+    acc = np.column_stack([a[f"acc_{x}"] for x in "xyz"]).astype(np.float64) * RAW_SCALE["acc"]
+    gyr = np.column_stack([a[f"gyro_{x}"] for x in "xyz"]).astype(np.float64) * RAW_SCALE["gyro"]
+    mag_all = np.column_stack([a[f"mag_{x}"] for x in "xyz"]).astype(np.float64) * RAW_SCALE["mag"]
+    temp = np.where(flags & TEMPERATURE_VALID, a["temperature"].astype(np.float64) * RAW_SCALE["temperature"],
+                    np.nan)
+    upd = (flags & MAG_UPDATED) != 0
+    mag = mag_t = mag_native = None
+    if upd.any():
+        mag_t, mag_native = t[upd], mag_all[upd]
+        mag = zero_order_hold(mag_t, mag_native, t)
+
+    dt = np.diff(t)
+    fs = 1.0 / float(np.median(dt))
+    if lost:
+        k = int(np.argmax(dt > 1.5 * np.median(dt)))
+        warnings.append(f"{path}: {name}: {lost} sample(s) lost in {gaps} gap(s) of the sample counter "
+                        f"(kept as gaps, nothing interpolated); first after t = {t[k]:.3f} s")
+    if duplicates:
+        warnings.append(f"{path}: {name}: {duplicates} repeated sample(s) dropped")
+    for bit, what in ((ACC_CLIPPED, "accelerometer"), (GYRO_CLIPPED, "gyroscope"), (MAG_CLIPPED, "magnetometer")):
+        n = int(np.count_nonzero(flags & bit))
+        if n:
+            warnings.append(f"{path}: {name}: {n} sample(s) with the {what} clipped (at its range)")
+    calibrated = bool(np.all(flags & CALIBRATED))
+    if not calibrated:
+        warnings.append(f"{path}: {name}: {int(np.count_nonzero(~flags & CALIBRATED))} sample(s) are uncalibrated "
+                        f"readings (the unit's calibration not applied; give a unit calibration file)")
+    rec = df.recording
+    if rec is not None and rec.truncated:
+        warnings.append(f"{path}: the recording is truncated (ends inside a chunk): read up to the cut")
+    if rec is not None and rec.damaged_chunks:
+        warnings.append(f"{path}: {rec.damaged_chunks} damaged chunk(s) skipped")
+
+    meta = {
+        "unit": u["label"], "sysid": u["sysid"], "stream": u["stream"], "connection": u.get("connection"),
+        "units_in_file": [x["label"] for x in found], "source_kind": df.kind if rec is None else "kfr",
+        "time_base": "device" if host is None else "host",
+        "samples_lost": int(lost), "duplicates_dropped": int(duplicates), "device_clock_segments": len(keep_idx),
+        "calibrated_on_unit": calibrated, "simulated": bool(np.any(flags & SIMULATED)),
+        "mag_present": bool(upd.any()),
+        "unit_id": int(np.bincount(a["unit_id"].astype(np.int64)).argmax()),
+    }
+    if host is not None:
+        meta["clock"] = clocks[0] if len(clocks) == 1 else clocks
+        meta["start_unix_ns"] = int(df.start_unix_ns)
+        meta["start_monotonic_ns"] = int(df.start_monotonic_ns)
+        meta["clock_id"] = f"host:{df.start_unix_ns}:{df.start_monotonic_ns}"
+        if rec is not None:
+            meta["start_utc"] = rec.header.get("start_utc")
+    st = ds.arrays.get(MSG_STATUS)
+    if st is not None:
+        st = st[st["_sysid"] == u["sysid"]]
+        if st.size:
+            v = int(st[-1]["firmware_version"])
+            meta["firmware_version"] = f"{v >> 24}.{(v >> 16) & 0xFF}.{(v >> 8) & 0xFF}"
+    return Recording(t=t, acc=acc, gyr=gyr, mag=mag, fs=fs, source=path, fmt=FORMAT, metadata=meta,
+                     warnings=warnings, mag_t=mag_t, mag_native=mag_native,
+                     channels={"device_time_s": dev[idx] / 1e6, "sample_counter": counter,
+                               "temperature_degC": temp, "flags": flags})
