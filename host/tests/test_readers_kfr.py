@@ -139,6 +139,27 @@ def test_lost_samples_stay_gaps_repeats_dropped(two_units):
     assert any("4 repeated" in w for w in r.warnings)
 
 
+def test_reboot_and_slower_magnetometer(tmp_path):
+    """The unit reboots after 2 s (clock and counter restart): each clock segment gets its own fit,
+    host time runs on; the magnetometer updates every 4th sample and is held in between."""
+    t, acc, gyr, mag = _motion(1000)
+    upd = np.arange(1000) % 4 == 0
+    flags = np.where(upd, 8 | 16, 16)
+    fa, _ = _frames(t[:400], acc[:400], gyr[:400], mag[:400], sysid=3, boot_s=40.0, drift_ppm=100,
+                    flags=flags[:400], counter0=5000)
+    fb, _ = _frames(t[400:], acc[400:], gyr[400:], mag[400:], sysid=3, boot_s=-t[400] + 0.25, drift_ppm=100,
+                    flags=flags[400:])
+    p = tmp_path / "reboot.kfr"
+    _write_kfr(p, [list(zip(t, fa + fb))])
+    r = read_recording(str(p))
+    assert len(r) == 1000 and r.metadata["device_clock_segments"] == 2
+    assert np.abs(r.t - (t + MIN_LATENCY)).max() < 3e-4
+    assert r.channels["device_time_s"][400] == pytest.approx(0.25 * 1.0001, abs=1e-6)  # rebooted
+    assert np.array_equal(r.mag_t, r.t[upd])
+    k = np.flatnonzero(upd)[np.searchsorted(np.flatnonzero(upd), np.arange(1000), side="right") - 1]
+    assert np.array_equal(r.mag, _counts(mag[k], 0.1) * 0.1)  # held from the last update
+
+
 def _one_line(exc, *texts):
     msg = str(exc.value)
     assert "\n" not in msg, msg
@@ -311,6 +332,17 @@ def test_report_knee_from_one_kfr_of_two_units(run, tmp_path):
     flex_true = np.interp(ts[:, 0] + truth_t[i0], truth_t, P.truth.angles_deg[:, 0])
     rmse = np.sqrt(np.mean((ts[:, 1] - flex_true)[ts[:, 0] > 5] ** 2))
     assert rmse < 3.0, rmse  # 15° when the shank is aligned by its (late) start instead
+
+
+def test_report_elbow_from_one_kfr(run, tmp_path):
+    arm, fore, flex = simulate.elbow_flexion(n_cycles=3)
+    for r in (arm, fore):
+        r.mag = np.zeros_like(r.acc) if r.mag is None else r.mag
+    _two_unit_kfr(tmp_path / "arm.kfr", arm, fore, shank_late_s=0.3)
+    code, out, err = run("report", "elbow", "--arm", tmp_path / "arm.kfr", "--arm-unit", "1",
+                         "--forearm", tmp_path / "arm.kfr", "--forearm-unit", "s1", "--out", tmp_path / "e")
+    assert code == 0, err
+    assert "3 of 3 cycles" in out and os.path.exists(tmp_path / "e" / "elbow_angles.png")
 
 
 def test_report_knee_of_fake_units_and_errors(run, fake_recording, tmp_path):
