@@ -6,10 +6,12 @@ onto a filter's input record and returns the orientation (and status) per input 
 from __future__ import annotations
 
 import dataclasses
+import types
 
 import numpy as np
 
 from kinefuse.codegen import estimators, runner as cg_runner
+from kinefuse.codegen.estimators.common import DT_MAX
 from kinefuse.host.errors import KinefuseError
 
 IMPLS = ("ref", "f32", "q")
@@ -89,3 +91,59 @@ def run_filter(name: str, impl: str, trial, params: dict[str, float] | None = No
     status = {k: np.asarray(v).reshape(len(q), -1).squeeze(axis=1)
               for k, v in out.items() if k != "q" and np.asarray(v).reshape(len(q), -1).shape[1] == 1}
     return FilterResult(q=q, status=status, outputs=out)
+
+
+def recording_inputs(rec) -> types.SimpleNamespace:
+    """A reader :class:`~kinefuse.host.readers.Recording` as filter input (for :func:`run_filter`).
+
+    ``dt`` per sample from the recording's time stamps (the first sample gets the median step):
+    gaps stay gaps, so a step beyond the filters' limit (``DT_MAX`` = 1 s) makes the filter
+    reject that sample.  ``mag_valid`` is True on the samples carrying a new magnetometer
+    reading (``rec.mag_t``; every sample when the file has one magnetometer value per sample),
+    False throughout without a magnetometer (``mag`` is then zero).
+    """
+    rec.require("acc", "gyr")
+    t = np.asarray(rec.t, dtype=np.float64)
+    n = len(t)
+    d = np.diff(t)
+    first = float(np.median(d)) if d.size else 0.0
+    dt = np.concatenate([[first], d]) if n else np.zeros(0)
+    if rec.mag is None:
+        mag, mag_valid = np.zeros((n, 3)), np.zeros(n, dtype=bool)
+    else:
+        mag = np.asarray(rec.mag, dtype=np.float64)
+        mag_valid = np.ones(n, dtype=bool) if rec.mag_t is None else np.isin(t, rec.mag_t)
+    return types.SimpleNamespace(gyr=np.asarray(rec.gyr, np.float64), acc=np.asarray(rec.acc, np.float64),
+                                 mag=mag, mag_valid=mag_valid, dt=dt, t=t)
+
+
+def rejected_count(res: FilterResult) -> int | None:
+    """Samples the filter rejected over the run (its cumulative ``rejected`` output)."""
+    r = res.outputs.get("rejected")
+    if r is None or not len(res.q):
+        return None
+    return int(np.asarray(r).reshape(len(res.q), -1)[-1, 0])
+
+
+def write_estimates_csv(path, t, res: FilterResult, comment: str, status: bool = False) -> int:
+    """Estimates as CSV: ``# comment`` line, header ``t,w,x,y,z`` (+ the filter's status outputs
+    when ``status``), one row per input sample; returns the number of rows."""
+    n = len(res.q)
+    cols = [np.asarray(t, dtype=np.float64), res.q[:, 0], res.q[:, 1], res.q[:, 2], res.q[:, 3]]
+    header = ["t", "w", "x", "y", "z"]
+    if status:
+        for k, v in res.outputs.items():
+            if k == "q":
+                continue
+            v = np.asarray(v).reshape(n, -1)
+            for i in range(v.shape[1]):
+                cols.append(v[:, i].astype(float))
+                header.append(k if v.shape[1] == 1 else f"{k}_{i}")
+    try:
+        with open(path, "w") as f:
+            f.write(f"# {comment}\n")
+            f.write(",".join(header) + "\n")
+            np.savetxt(f, np.column_stack(cols), delimiter=",", fmt="%.9g")
+    except OSError as exc:
+        raise KinefuseError(f"cannot write {path}: {exc.strerror}") from None
+    return n

@@ -34,23 +34,8 @@ def run(args) -> int:
     res = runner.run_filter(name, args.impl, trial, prm, args.preset)
     n = len(res.q)
     t = np.arange(n) * float(trial.dt) if np.ndim(trial.dt) == 0 else np.cumsum(trial.dt)
-    cols = [t, res.q[:, 0], res.q[:, 1], res.q[:, 2], res.q[:, 3]]
-    header = ["t", "w", "x", "y", "z"]
-    if args.status:
-        for k, v in res.outputs.items():
-            if k == "q":
-                continue
-            v = np.asarray(v).reshape(n, -1)
-            for i in range(v.shape[1]):
-                cols.append(v[:, i].astype(float))
-                header.append(k if v.shape[1] == 1 else f"{k}_{i}")
-    try:
-        with open(args.out, "w") as f:
-            f.write(f"# kinefuse run --filter {name} --impl {args.impl}; t in s; quaternion w,x,y,z "
-                    f"sensor->earth, earth frame ENU; input {args.input}\n")
-            f.write(",".join(header) + "\n")
-            np.savetxt(f, np.column_stack(cols), delimiter=",", fmt="%.9g")
-    except OSError as exc:
-        raise KinefuseError(f"cannot write {args.out}: {exc.strerror}") from None
+    runner.write_estimates_csv(args.out, t, res, f"kinefuse run --filter {name} --impl {args.impl}; t in s; "
+                               f"quaternion w,x,y,z sensor->earth, earth frame ENU; input {args.input}",
+                               status=args.status)
     print(f"wrote {n} rows to {args.out} ({name}, {args.impl})", file=sys.stderr)
     return 0
