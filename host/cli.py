@@ -18,6 +18,7 @@ from kinefuse.host.errors import KinefuseError
 COMMAND_MODULES = [
     "kinefuse.host.commands.filters_cmd",
     "kinefuse.host.commands.run_cmd",
+    "kinefuse.host.commands.replay_cmd",
     "kinefuse.host.commands.demo_cmd",
     "kinefuse.host.commands.plot_cmd",
     "kinefuse.host.commands.codegen_cmd",
@@ -28,6 +29,7 @@ COMMAND_MODULES = [
     "kinefuse.host.commands.decode_cmd",
     "kinefuse.host.commands.export_cmd",
     "kinefuse.host.commands.stats_cmd",
+    "kinefuse.host.commands.live_cmd",
     "kinefuse.host.commands.params_cmd",
     "kinefuse.host.commands.ports_cmd",
     "kinefuse.host.commands.sil_cmd",

@@ -1,0 +1,311 @@
+"""``kinefuse live``: a live view of the units on a connection (rates, loss, errors, orientation, battery).
+
+    kinefuse live --port /dev/ttyUSB0
+    kinefuse live --port fake:rate=500 --seconds 10       # simulated unit
+    kinefuse live --port tcp:192.168.4.1:5760 --unit 2
+
+Per unit: KF_RAW_SAMPLE rate achieved (on the unit's clock, last 2 s) vs requested (from
+KF_UNIT_STATUS), samples lost (32-bit ``sample_counter``, wrap-safe), CRC errors of the link,
+the latest KF_ORIENTATION as roll/pitch/yaw in degrees (intrinsic Z-Y'-X'' of the quaternion
+sensor -> earth; the earth frame the unit states: ENU = yaw about Up, counter-clockwise from
+East; NED = yaw about Down, clockwise from North), battery and status from KF_UNIT_STATUS.
+The view only listens (nothing is sent to the units).  Ctrl-C or --seconds ends it; with
+stdout not a terminal it prints plain lines every --interval seconds instead of a table.
+"""
+from __future__ import annotations
+
+import signal
+import sys
+import threading
+import time
+from collections import deque
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from kinefuse.host.errors import KinefuseError
+
+MSG_RAW, MSG_ORI, MSG_STATUS = 52500, 52501, 52504
+RATE_WINDOW_US = 2_000_000
+EARTH_FRAMES = {0: "unknown frame", 1: "ENU", 2: "NED"}
+STATUS_FLAGS = ((1, "streaming"), (2, "mag"), (4, "SENSOR FAULT"), (8, "HIL"), (16, "LOW BATTERY"),
+                (32, "calibrated"), (64, "TX OVERFLOW"))
+
+
+@dataclass
+class UnitView:
+    stream: int
+    sysid: int
+    connection: str
+    raw_frames: int = 0
+    lost: int = 0
+    resets: int = 0
+    stride: int | None = None
+    last_counter: int | None = None
+    pending: list = field(default_factory=list)       # counters not yet checked for loss
+    window: deque = field(default_factory=deque)      # device times (us) of the last RATE_WINDOW_US
+    requested_hz: float | None = None
+    rpy_deg: tuple | None = None
+    earth_frame: str | None = None
+    ori_frames: int = 0
+    status: object = None                             # latest KF_UNIT_STATUS record
+
+    # -- updates -------------------------------------------------------------------------------
+    def raw(self, m) -> None:
+        self.raw_frames += 1
+        t = int(m.time_boot_us)
+        if self.window and t < self.window[-1]:
+            self.window.clear()                       # device clock restarted (reboot)
+        self.window.append(t)
+        while self.window and self.window[0] < t - RATE_WINDOW_US:
+            self.window.popleft()
+        self.pending.append(int(m.sample_counter))
+
+    def settle_counters(self, final: bool = False) -> None:
+        """Count lost samples in the counters received since the last call (wrap-safe); the
+        stride (usual step, >1 for a decimated stream) is learned from the first 16 counters."""
+        from kinefuse.host.link.stats import counter_analysis
+        if not self.pending:
+            return
+        if self.stride is None:
+            if len(self.pending) < 16 and not final:
+                return
+            seq = ([] if self.last_counter is None else [self.last_counter]) + self.pending
+            self.stride = counter_analysis(np.asarray(seq, np.int64))["stride"] or 1
+        c = np.asarray(([] if self.last_counter is None else [self.last_counter]) + self.pending, np.int64)
+        self.last_counter = int(c[-1])
+        self.pending = []
+        if c.size < 2:
+            return
+        d = (c[1:] - c[:-1]) & 0xFFFFFFFF
+        forward = (d > 0) & (d < 1 << 31)
+        self.lost += int(np.sum(np.maximum(0, np.round(d[forward] / self.stride).astype(np.int64) - 1)))
+        self.resets += int(np.sum(d >= 1 << 31))
+
+    def orientation(self, m) -> None:
+        from kinefuse.host.kinematics.quat import to_euler
+        q = np.array([m.q_w, m.q_x, m.q_y, m.q_z], dtype=np.float64)
+        self.ori_frames += 1
+        if np.all(np.isfinite(q)) and np.linalg.norm(q) > 0.5:
+            yaw, pitch, roll = np.degrees(to_euler(q, "ZYX"))
+            self.rpy_deg = (float(roll), float(pitch), float(yaw))
+            self.earth_frame = EARTH_FRAMES.get(int(m.earth_frame), f"frame {int(m.earth_frame)}")
+
+    # -- derived -------------------------------------------------------------------------------
+    @property
+    def rate_hz(self) -> float | None:
+        if len(self.window) < 3 or self.window[-1] <= self.window[0]:
+            return None
+        return (len(self.window) - 1) / ((self.window[-1] - self.window[0]) / 1e6)
+
+    def battery_text(self) -> str:
+        s = self.status
+        if s is None:
+            return "-"
+        parts = []
+        if int(s.battery_voltage) != 0xFFFF:
+            parts.append(f"{int(s.battery_voltage) / 1000:.2f} V")
+        if int(s.battery_remaining) >= 0:
+            parts.append(f"{int(s.battery_remaining)} %")
+        return " ".join(parts) or "unknown"
+
+    def status_text(self) -> str:
+        s = self.status
+        if s is None:
+            return "no KF_UNIT_STATUS yet"
+        flags = int(s.status_flags)
+        v = int(s.firmware_version)
+        words = [w for bit, w in STATUS_FLAGS if flags & bit] or ["not streaming"]
+        words.append(f"fw {v >> 24}.{(v >> 16) & 0xFF}.{(v >> 8) & 0xFF}")
+        if int(s.samples_dropped):
+            words.append(f"{int(s.samples_dropped)} dropped on unit")
+        return ", ".join(words)
+
+    def requested_text(self) -> str:
+        if self.requested_hz is None:
+            return "?"
+        return "off" if self.requested_hz == 0 else f"{self.requested_hz:g}"
+
+    def orientation_text(self) -> str:
+        if self.rpy_deg is None:
+            return "no KF_ORIENTATION" if not self.ori_frames else "invalid"
+        r, p, y = self.rpy_deg
+        return f"roll {r:+7.1f} pitch {p:+6.1f} yaw {y:+7.1f} deg ({self.earth_frame})"
+
+
+class LiveMonitor:
+    """Per (stream, system id) unit state fed with decoded frames of the sessions."""
+
+    def __init__(self, sessions: list, unit: int | None = None):
+        self.sessions = sessions
+        self.unit = unit
+        self.units: dict = {}
+        self.started = time.monotonic()
+
+    def feed(self, sid: int, frames) -> None:
+        for _, f in frames:
+            if f.msgid not in (MSG_RAW, MSG_ORI, MSG_STATUS) or (self.unit is not None and f.sysid != self.unit):
+                continue
+            u = self.units.get((sid, f.sysid))
+            if u is None:
+                u = self.units[(sid, f.sysid)] = UnitView(sid, f.sysid, self.sessions[sid].conn.url)
+            if f.msgid == MSG_RAW:
+                u.raw(f.msg)
+            elif f.msgid == MSG_ORI:
+                u.orientation(f.msg)
+            else:
+                u.status = f.msg
+                u.requested_hz = float(f.msg.raw_rate_requested)
+        for (s, _), u in self.units.items():
+            if s == sid:
+                u.settle_counters()
+
+    def crc_errors(self, sid: int) -> int:
+        return int(self.sessions[sid].decoder.counters.crc_errors)
+
+    def lines(self) -> list[str]:
+        el = time.monotonic() - self.started
+        out = []
+        for (sid, sysid), u in sorted(self.units.items()):
+            rate = u.rate_hz
+            out.append(f"[{el:6.1f} s] unit {sysid} ({u.connection}): rate "
+                       f"{'-' if rate is None else f'{rate:.1f}'} Hz (requested {u.requested_text()} Hz), "
+                       f"lost {u.lost}" + (f" ({u.resets} counter resets)" if u.resets else "")
+                       + f", CRC errors {self.crc_errors(sid)}, {u.orientation_text()}, "
+                         f"battery {u.battery_text()}, {u.status_text()}")
+        seen = {sid for sid, _ in self.units}
+        for sid, s in enumerate(self.sessions):
+            if sid not in seen:
+                c = s.decoder.counters
+                who = f"unit {self.unit}" if self.unit is not None else "unit"
+                out.append(f"[{el:6.1f} s] {s.conn.url}: no {who} data yet ({c.bytes_in} bytes, "
+                           f"{c.frames_ok} frames, {c.crc_errors} CRC errors)")
+        return out
+
+    def table(self):
+        from rich.table import Table
+        el = time.monotonic() - self.started
+        t = Table("unit", "connection", "rate Hz", "requested", "lost", "CRC err", "roll°", "pitch°", "yaw°",
+                  "frame", "battery", "status", box=None,
+                  title=f"kinefuse live  {el:.1f} s  (Ctrl-C to stop)",
+                  caption="orientation: KF_ORIENTATION sensor->earth as intrinsic Z-Y'-X'' yaw, pitch, roll; "
+                          "ENU: yaw about Up, counter-clockwise from East")
+        for col in t.columns[:-1]:
+            col.no_wrap = True
+        t.columns[1].max_width, t.columns[1].overflow = 24, "ellipsis"
+        for (sid, sysid), u in sorted(self.units.items()):
+            rate = u.rate_hz
+            ratio_low = rate is not None and u.requested_hz and rate < 0.95 * u.requested_hz
+            rpy = ("-", "-", "-") if u.rpy_deg is None else tuple(f"{a:+.1f}" for a in u.rpy_deg)
+            t.add_row(str(sysid), u.connection, "-" if rate is None else f"{rate:.1f}", u.requested_text(),
+                      f"[red]{u.lost}[/]" if u.lost else "0", str(self.crc_errors(sid)), *rpy,
+                      u.earth_frame or "-", u.battery_text(), u.status_text(),
+                      style="yellow" if ratio_low else None)
+        seen = {sid for sid, _ in self.units}
+        for sid, s in enumerate(self.sessions):
+            if sid not in seen:
+                t.add_row("-", s.conn.url, "-", "-", "-", str(self.crc_errors(sid)), "-", "-", "-", "-", "-",
+                          f"no unit data yet ({s.decoder.counters.bytes_in} bytes)")
+        return t
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("live", help="live view of the units on a connection: rate, loss, errors, "
+                                           "orientation, battery",
+                              description=__doc__.split("\n\n")[0].split(": ", 1)[-1])
+    p.add_argument("--port", action="append", required=True, metavar="CONN",
+                   help="serial port or connection string (repeat for several): /dev/ttyUSB0, COM3, "
+                        "serial:PATH:BAUD, pty:PATH, tcp:H:P, tcpin:H:P, udp:H:P, file:PATH, fake:[opts]")
+    p.add_argument("--unit", type=int, metavar="ID", help="show only this unit (MAVLink system id)")
+    p.add_argument("--seconds", type=float, metavar="S", help="stop after S seconds (default: Ctrl-C)")
+    p.add_argument("--baud", default=921600, metavar="BAUD", help="serial baud rate (default 921600)")
+    p.add_argument("--interval", type=float, default=1.0, metavar="S",
+                   help="seconds between plain lines when stdout is not a terminal (default 1)")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    from kinefuse.host.link.connection import open_connection, parse_baud
+    from kinefuse.host.link.session import Session
+    if args.seconds is not None and not args.seconds > 0:
+        raise KinefuseError("--seconds must be positive")
+    if not args.interval > 0:
+        raise KinefuseError("--interval must be positive")
+    if args.unit is not None and not 0 < args.unit < 256:
+        raise KinefuseError("--unit must be a unit (MAVLink system) id 1..255")
+    baud = parse_baud(args.baud)
+    sessions = []
+    try:
+        for url in args.port:
+            sessions.append(Session(open_connection(url, baud)))
+    except BaseException:
+        for s in sessions:
+            s.close()
+        raise
+    mon = LiveMonitor(sessions, args.unit)
+    stop = threading.Event()
+    prev = None
+    if threading.current_thread() is threading.main_thread():
+        prev = signal.signal(signal.SIGTERM, lambda *_: stop.set())
+    tty = sys.stdout.isatty()
+    interrupted = False
+    try:
+        if tty:
+            from rich.console import Console
+            from rich.live import Live
+            with Live(mon.table(), console=Console(), refresh_per_second=4, transient=False) as live:
+                interrupted = _loop(mon, sessions, args.seconds, 0.25, lambda: live.update(mon.table()), stop)
+                live.update(mon.table())
+        else:
+            def emit():
+                print("\n".join(mon.lines()), flush=True)
+            interrupted = _loop(mon, sessions, args.seconds, args.interval, emit, stop)
+    finally:
+        if prev is not None:
+            signal.signal(signal.SIGTERM, prev)
+        for s in sessions:
+            s.close()
+    for u in mon.units.values():
+        u.settle_counters(final=True)
+    if not tty:
+        print("\n".join(mon.lines()) + "\n" + _end_text(interrupted, sessions), flush=True)
+    else:
+        print(_end_text(interrupted, sessions), file=sys.stderr)
+    if not mon.units:
+        which = f"unit {args.unit}" if args.unit is not None else "kinefuse unit"
+        raise KinefuseError(f"no {which} data received on {', '.join(args.port)}")
+    return 0
+
+
+def _end_text(interrupted: bool, sessions) -> str:
+    closed = [s.conn.url for s in sessions if s.reader.closed.is_set() and s.reader.error]
+    why = "interrupted" if interrupted else "done"
+    return f"live view {why}" + (f"; connection closed: {', '.join(closed)}" if closed else "")
+
+
+def _loop(mon: LiveMonitor, sessions, seconds, interval: float, show, stop: threading.Event) -> bool:
+    """Poll the sessions (blocking waits, no busy loop) until --seconds, Ctrl-C, SIGTERM or every
+    connection closed; ``show()`` every ``interval`` s.  True when interrupted by Ctrl-C."""
+    start = time.monotonic()
+    t_end = None if seconds is None else start + seconds
+    next_show = start + interval
+    try:
+        while not stop.is_set():
+            now = time.monotonic()
+            if t_end is not None and now >= t_end:
+                break
+            live = [(sid, s) for sid, s in enumerate(sessions) if not s.reader.finished]
+            if not live:
+                break
+            wait = min(0.1, next_show - now, (t_end - now) if t_end is not None else 0.1)
+            wait = max(0.0, wait) / len(live)
+            for sid, s in live:
+                s.poll(wait)
+                mon.feed(sid, s.drain())
+            now = time.monotonic()
+            if now >= next_show and (t_end is None or now < t_end):  # the end shows itself
+                next_show += interval
+                show()
+    except KeyboardInterrupt:
+        return True
+    return False

@@ -1,0 +1,189 @@
+"""``kinefuse replay``: feed a recording through a filter and write the estimates as CSV.
+
+    kinefuse replay walk.kfr --unit 2 --out est.csv
+    kinefuse replay walk.kfr --out est.csv --filter madgwick --impl q --param beta=0.05
+    kinefuse replay dot_export.csv --out est.csv --status
+    kinefuse replay host/data/broad_excerpt/24_disturbed_tapping_A.npz --out est.csv
+    kinefuse replay walk.kfr --out est.csv --compare-unit      # vs the unit's KF_ORIENTATION
+
+REC is a unit recording (``.kfr``, one unit chosen with ``--unit``), any file
+:func:`kinefuse.host.readers.read_recording` reads (Xsens DOT, MATRIX, MetaBase, seed-004,
+kinefuse CSV) or a BROAD trial (``.mat`` / bundled ``.npz``, exactly as ``kinefuse run``).
+Each sample's time step comes from the recording's time stamps (gaps stay gaps: a step longer
+than the filters' 1 s limit makes the filter reject that sample, and the count is reported);
+the magnetometer is used on the samples that carry a new reading.
+"""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from kinefuse.host import runner
+from kinefuse.host.errors import KinefuseError
+
+BROAD_SUFFIXES = (".mat", ".npz")
+MSG_ORI = 52501
+ORI_INITIALISED = 1
+EARTH_ENU, EARTH_NED = 1, 2
+#: q_ENU<-NED: x_E = y_N, y_E = x_N, z_E = -z_N
+Q_ENU_NED = np.array([0.0, np.sqrt(0.5), np.sqrt(0.5), 0.0])
+
+
+def register(subparsers) -> None:
+    p = subparsers.add_parser("replay", help="feed a recording (.kfr, reader formats, BROAD) through a filter, "
+                                             "estimates to CSV",
+                              description=__doc__.split("\n\n")[0].split(": ", 1)[-1])
+    p.add_argument("rec", metavar="REC", help="recording: .kfr unit recording, Xsens DOT / MATRIX / MetaBase / "
+                                              "kinefuse CSV, or BROAD .mat / bundled .npz trial")
+    p.add_argument("--out", required=True, metavar="CSV", help="output CSV: t,w,x,y,z (+ status columns)")
+    p.add_argument("--filter", default=None,
+                   help=f"filter name (default: {runner.default_filter()}; see `kinefuse filters`)")
+    p.add_argument("--impl", default="f32", choices=runner.IMPLS,
+                   help="ref: Python reference (float64); f32: generated float32 C; "
+                        "q: generated fixed-point C (default f32)")
+    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter override")
+    p.add_argument("--preset", help="named parameter set (see `kinefuse filters`)")
+    p.add_argument("--unit", metavar="ID", help="unit of a multi-unit .kfr: unit (system) id, s<stream> or "
+                                                "s<stream>:<id>")
+    p.add_argument("--status", action="store_true", help="append the filter's status outputs")
+    p.add_argument("--compare-unit", action="store_true",
+                   help="(.kfr) angle between the unit's own KF_ORIENTATION and the replayed orientation")
+    p.set_defaults(func=run)
+
+
+def run(args) -> int:
+    name = args.filter or runner.default_filter()
+    if name not in runner.filter_names():
+        raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
+    prm = runner.parse_params(args.param)
+    path = str(args.rec)
+    broad = Path(path).suffix.lower() in BROAD_SUFFIXES
+    rec = None
+    if broad:
+        if args.unit is not None:
+            raise KinefuseError("--unit applies to .kfr unit recordings, not to BROAD trials")
+        if args.compare_unit:
+            raise KinefuseError("--compare-unit needs a .kfr unit recording with KF_ORIENTATION messages")
+        from kinefuse.host.broad import load_trial
+        trial = load_trial(path)
+        inputs = trial                      # constant rate: the same input as `kinefuse run`
+        t = np.arange(trial.n) * float(trial.dt)
+        time_base = "s from the first sample (constant rate)"
+    else:
+        rec = _read(path, args.unit)
+        for w in rec.warnings:
+            print(f"kinefuse: warning: {w}", file=sys.stderr)
+        inputs = runner.recording_inputs(rec)
+        t = inputs.t
+        time_base = _time_base(rec)
+    unit_q = _unit_orientation(path, rec) if args.compare_unit else None
+
+    res = _run_filter(name, args.impl, inputs, prm, args.preset)
+    dt = np.atleast_1d(getattr(inputs, "dt", None))
+    gaps = int(np.count_nonzero(dt > runner.DT_MAX)) if dt.ndim == 1 and dt.size > 1 else 0
+    comment = (f"kinefuse replay --filter {name} --impl {args.impl}; t in s ({time_base}); quaternion w,x,y,z "
+               f"sensor->earth, earth frame ENU (x East, y North, z Up); input {path}"
+               + (f" unit {rec.metadata['unit']}" if rec is not None and rec.fmt == "kfr" else ""))
+    n = runner.write_estimates_csv(args.out, t, res, comment, status=args.status)
+    rejected = runner.rejected_count(res)
+    msg = f"wrote {n} rows to {args.out} ({name}, {args.impl})"
+    if rejected is not None:
+        msg += f"; {rejected} sample(s) rejected by the filter"
+        if gaps:
+            msg += f" ({gaps} after a gap longer than {runner.DT_MAX:g} s)"
+    print(msg, file=sys.stderr)
+    if unit_q is not None:
+        print(_compare(unit_q, res.q, rec))
+    return 0
+
+
+def _run_filter(name, impl, inputs, prm, preset):
+    n = len(inputs.gyr)
+    if n > 200_000 and sys.stderr.isatty():
+        from rich.console import Console
+        with Console(stderr=True).status(f"replaying {n:,} samples through {name} ({impl})"):
+            return runner.run_filter(name, impl, inputs, prm, preset)
+    return runner.run_filter(name, impl, inputs, prm, preset)
+
+
+def _read(path: str, unit):
+    from kinefuse.host.readers import ReaderError, detect_format, read_recording
+    fmt = detect_format(path)
+    if unit is not None and fmt != "kfr":
+        raise KinefuseError(f"--unit applies to .kfr unit recordings; {path} is a {fmt} file")
+    try:
+        rec = read_recording(path, fmt, **({"unit": unit} if fmt == "kfr" else {}))
+    except ReaderError as exc:
+        if fmt == "kfr" and "units in this recording" in exc.problem:
+            raise KinefuseError(f"{path}: {exc.problem.split(';')[0]}; choose one with --unit ID") from None
+        raise
+    if rec.acc is None or rec.gyr is None:
+        missing = " and ".join(n for n in ("accelerometer", "gyroscope")
+                               if getattr(rec, {"accelerometer": "acc", "gyroscope": "gyr"}[n]) is None)
+        raise KinefuseError(f"{path}: the {rec.fmt} recording has no {missing} data (a filter needs both)")
+    return rec
+
+
+def _time_base(rec) -> str:
+    if rec.fmt == "kfr":
+        if rec.metadata.get("time_base") == "host":
+            start = rec.metadata.get("start_utc")
+            return "host clock, s since the recording started" + (f" at {start}" if start else "")
+        return "the unit's own clock, s since boot"
+    return f"the {rec.fmt} file's own clock"
+
+
+# ------------------------------------------------------------------------------ --compare-unit
+def _unit_orientation(path: str, rec):
+    """The unit's KF_ORIENTATION quaternions (ENU) matched to the replayed samples by device time:
+    (sample indices, quaternions, note)."""
+    if rec is None or rec.fmt != "kfr":
+        raise KinefuseError("--compare-unit needs a .kfr unit recording with KF_ORIENTATION messages")
+    from kinefuse.host.link.frames import decode_file
+    df = decode_file(path, raw=True, msgids=(MSG_ORI,))
+    ds = df.streams.get(rec.metadata["stream"])
+    arr = None if ds is None else ds.arrays.get(MSG_ORI)
+    if arr is not None:
+        arr = arr[arr["_sysid"] == rec.metadata["sysid"]]
+    if arr is None or not arr.size:
+        raise KinefuseError(f"{path}: unit {rec.metadata['unit']} sent no KF_ORIENTATION messages "
+                            f"(nothing to compare with --compare-unit)")
+    arr = arr[(arr["status"] & ORI_INITIALISED) != 0]
+    q = np.column_stack([arr[f"q_{c}"] for c in "wxyz"]).astype(np.float64)
+    frames = np.unique(arr["earth_frame"])
+    note = ""
+    if frames.size > 1:
+        raise KinefuseError(f"{path}: the unit's KF_ORIENTATION changes earth frame during the recording")
+    if frames.size and int(frames[0]) == EARTH_NED:
+        from kinefuse.host.kinematics.quat import mul
+        q = mul(Q_ENU_NED, q)
+        note = " (unit's NED quaternions turned to ENU)"
+    elif frames.size and int(frames[0]) != EARTH_ENU:
+        note = " (unit's earth frame unknown: taken as ENU)"
+    # KF_ORIENTATION.time_boot_us = the newest KF_RAW_SAMPLE used: match on the device time
+    dev = np.round(np.asarray(rec.channels["device_time_s"]) * 1e6).astype(np.int64)
+    order = np.argsort(dev, kind="stable")
+    sd = dev[order]
+    ot = arr["time_boot_us"].astype(np.int64)
+    lo = np.searchsorted(sd, ot, side="left")
+    hi = np.searchsorted(sd, ot, side="right")
+    ok = (hi - lo) == 1                  # exactly one sample at that device time (reboots may repeat times)
+    idx = order[np.minimum(lo[ok], len(sd) - 1)]
+    if not idx.size:
+        raise KinefuseError(f"{path}: none of unit {rec.metadata['unit']}'s KF_ORIENTATION messages matches a "
+                            f"received KF_RAW_SAMPLE (by device time): nothing to compare")
+    return idx, q[ok], note, int(arr.size)
+
+
+def _compare(unit, q_replay: np.ndarray, rec) -> str:
+    from kinefuse.host.kinematics.quat import angle_between
+    idx, q_unit, note, total = unit
+    ang = np.degrees(angle_between(q_unit, q_replay[idx]))
+    ang = ang[np.isfinite(ang)]
+    if not ang.size:
+        return f"unit {rec.metadata['unit']}: no finite orientation pair to compare"
+    return (f"unit {rec.metadata['unit']} on-board orientation vs replay{note}: {ang.size} of {total} "
+            f"KF_ORIENTATION messages matched; angle RMS {np.sqrt(np.mean(ang ** 2)):.2f} deg, "
+            f"max {ang.max():.2f} deg, median {np.median(ang):.2f} deg")

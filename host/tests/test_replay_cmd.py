@@ -1,0 +1,141 @@
+"""``kinefuse replay``: BROAD trials as ``kinefuse run``, .kfr unit recordings, reader formats, errors."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from kinefuse.host import cli
+from kinefuse.host.broad import EXCERPT_DIR
+
+MINE = ("replay_cmd", "run_cmd")
+TRIAL = EXCERPT_DIR / "24_disturbed_tapping_A.npz"
+
+
+@pytest.fixture
+def run(monkeypatch, capsys):
+    """cli.main with only the commands used here registered (others may be in progress)."""
+    monkeypatch.setattr(cli, "COMMAND_MODULES", [m for m in cli.COMMAND_MODULES if m.rsplit(".", 1)[-1] in MINE])
+    monkeypatch.setattr(cli, "BENCH_MODULES", [])
+
+    def _run(*argv):
+        code = cli.main([str(a) for a in argv])
+        out, err = capsys.readouterr()
+        return code, out, err
+    return _run
+
+
+def _one_line_error(code, out, err, text):
+    assert code == 2, (code, out, err)
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("kinefuse: error:") and text in lines[0], err
+    assert "Traceback" not in err
+
+
+def _csv(path):
+    with open(path) as f:
+        comment = f.readline()
+        header = f.readline().strip().split(",")
+    return comment, header, np.loadtxt(path, delimiter=",", skiprows=2, ndmin=2)
+
+
+@pytest.fixture(scope="module")
+def kfr_files(tmp_path_factory):
+    """A 1.2 s recording of one fake unit (500 Hz, every 40th sample lost, KF_ORIENTATION at 100 Hz)
+    and one of two fake units, both made by the real recorder in-process."""
+    from kinefuse.host.link.recorder import Recorder
+    d = tmp_path_factory.mktemp("replay")
+    one, two = d / "one.kfr", d / "two.kfr"
+    Recorder(one, ["fake:rate=500,drop=40"]).run(1.2)
+    Recorder(two, ["fake:rate=200", "fake:unit=2,rate=200"]).run(0.6)
+    return one, two
+
+
+def test_broad_excerpt_equals_kinefuse_run(run, tmp_path):
+    a, b = tmp_path / "replay.csv", tmp_path / "run.csv"
+    code, _, err = run("replay", TRIAL, "--out", a, "--filter", "madgwick", "--impl", "q", "--status")
+    assert code == 0, err
+    assert "0 sample(s) rejected" in err
+    assert run("run", "--input", TRIAL, "--out", b, "--filter", "madgwick", "--impl", "q", "--status")[0] == 0
+    ca, ha, xa = _csv(a)
+    cb, hb, xb = _csv(b)
+    assert ha == hb == ["t", "w", "x", "y", "z", "rejected"]
+    assert np.array_equal(xa, xb)
+    assert a.read_text().splitlines()[1:] == b.read_text().splitlines()[1:]   # byte-identical rows
+    assert "sensor->earth" in ca and "ENU" in ca and "t in s" in ca
+
+
+def test_kfr_one_row_per_received_sample_and_unit_comparison(run, kfr_files, tmp_path):
+    from kinefuse.host.link.frames import decode_file
+    one, _ = kfr_files
+    out = tmp_path / "est.csv"
+    code, stdout, err = run("replay", one, "--out", out, "--compare-unit")
+    assert code == 0, err
+    received = decode_file(one).streams[0].arrays[52500]
+    comment, header, x = _csv(out)
+    assert header == ["t", "w", "x", "y", "z"]
+    assert len(x) == received.size > 400                     # lost samples stay missing, nothing invented
+    q = x[:, 1:5]
+    assert np.all(np.isfinite(x)) and np.allclose(np.linalg.norm(q, axis=1), 1.0, atol=1e-5)
+    assert np.all(np.diff(x[:, 0]) > 0)
+    gaps = np.diff(x[:, 0])
+    assert np.sum(gaps > 1.5 / 500) >= 10                    # the dropped samples are gaps in t
+    assert "host clock" in comment and "unit 1" in comment and "w,x,y,z sensor->earth" in comment
+    assert f"wrote {received.size} rows" in err and "0 sample(s) rejected" in err
+    # the fake unit's own quaternion is its true orientation: the replay converges to it
+    line = stdout.strip().splitlines()[-1]
+    assert line.startswith("unit 1 on-board orientation vs replay") and "angle RMS" in line, stdout
+    rms = float(line.split("angle RMS ")[1].split(" deg")[0])
+    assert rms < 10.0
+
+
+def test_kfr_unit_choice(run, kfr_files, tmp_path):
+    _, two = kfr_files
+    _one_line_error(*run("replay", two, "--out", tmp_path / "x.csv"), "choose one with --unit")
+    code, _, err = run("replay", two, "--out", tmp_path / "u2.csv", "--unit", "2", "--impl", "ref",
+                       "--filter", "madgwick")
+    assert code == 0, err
+    comment, _, x = _csv(tmp_path / "u2.csv")
+    assert "unit 2" in comment and len(x) > 50 and np.all(np.isfinite(x))
+
+
+def test_gap_longer_than_a_second_is_rejected_and_reported(run, tmp_path):
+    """A kinefuse CSV (reader format) with a 2 s hole: the sample after it is rejected by the filter."""
+    fs, n = 100.0, 300
+    t = np.arange(n) / fs
+    t[150:] += 2.0
+    rng = np.random.default_rng(1)
+    acc = np.array([0.0, 0.0, 9.81]) + 0.01 * rng.standard_normal((n, 3))
+    gyr = 0.01 * rng.standard_normal((n, 3))
+    src = tmp_path / "gap.csv"
+    with open(src, "w") as f:
+        f.write("t_s,acc_x_mps2,acc_y_mps2,acc_z_mps2,gyr_x_radps,gyr_y_radps,gyr_z_radps\n")
+        np.savetxt(f, np.column_stack([t, acc, gyr]), delimiter=",", fmt="%.6f")
+    out = tmp_path / "est.csv"
+    code, _, err = run("replay", src, "--out", out, "--filter", "madgwick", "--status")
+    assert code == 0, err
+    assert "1 sample(s) rejected by the filter (1 after a gap longer than 1 s)" in err
+    _, header, x = _csv(out)
+    assert len(x) == n and np.allclose(x[:, 0], t, atol=1e-6)
+    rejected = x[:, header.index("rejected")]
+    assert rejected[149] == 0 and rejected[150] == 1 and rejected[-1] == 1
+
+
+@pytest.mark.parametrize("argv, text", [
+    (["replay", "{tmp}/missing.kfr", "--out", "{tmp}/o.csv"], "file not found"),
+    (["replay", "{tmp}/missing.npz", "--out", "{tmp}/o.csv"], "no such file"),
+    (["replay", "{trial}", "--out", "{tmp}/o.csv", "--filter", "nope"], "unknown filter 'nope'"),
+    (["replay", "{trial}", "--out", "{tmp}/o.csv", "--filter", "angle-kf"], "not IMU samples"),
+    (["replay", "{trial}", "--out", "{tmp}/o.csv", "--param", "beta"], "expects name=value"),
+    (["replay", "{trial}", "--out", "{tmp}/o.csv", "--unit", "2"], "--unit applies to .kfr"),
+    (["replay", "{trial}", "--out", "{tmp}/o.csv", "--compare-unit"], "needs a .kfr"),
+    (["replay", "{trial}", "--out", "{tmp}/no/such/dir/o.csv"], "cannot write"),
+    (["replay", "{tmp}/junk.kfr", "--out", "{tmp}/o.csv"], "not a kinefuse recording"),
+])
+def test_bad_input_gives_one_line(run, tmp_path, argv, text):
+    (tmp_path / "junk.kfr").write_bytes(b"\x00garbage" * 100)
+    _one_line_error(*run(*[a.format(tmp=tmp_path, trial=TRIAL) for a in argv]), text)
+
+
+def test_kfr_errors(run, kfr_files, tmp_path):
+    one, _ = kfr_files
+    _one_line_error(*run("replay", one, "--out", tmp_path / "o.csv", "--unit", "7"), "unit 7 is not in this recording")
