@@ -1,0 +1,95 @@
+"""``kinefuse live`` with stdout not a terminal: plain periodic lines, clean ends, one-line errors."""
+from __future__ import annotations
+
+import re
+import time
+
+import pytest
+
+from kinefuse.host import cli
+
+MINE = ("live_cmd",)
+LINE = re.compile(r"\[\s*([\d.]+) s\] unit (\d+) \((.+?)\): rate ([\d.]+) Hz \(requested (\S+) Hz\), lost (\d+), "
+                  r"CRC errors (\d+), (.+?), battery (.+?), (.+)$")
+
+
+@pytest.fixture
+def run(monkeypatch, capsys):
+    monkeypatch.setattr(cli, "COMMAND_MODULES", [m for m in cli.COMMAND_MODULES if m.rsplit(".", 1)[-1] in MINE])
+    monkeypatch.setattr(cli, "BENCH_MODULES", [])
+
+    def _run(*argv):
+        code = cli.main([str(a) for a in argv])
+        out, err = capsys.readouterr()
+        return code, out, err
+    return _run
+
+
+def _units(out):
+    return [LINE.match(l).groups() for l in out.splitlines() if LINE.match(l)]
+
+
+def test_fake_unit_lines(run):
+    t0, c0 = time.monotonic(), time.process_time()
+    code, out, err = run("live", "--port", "fake:rate=200", "--seconds", "2")
+    wall, cpu = time.monotonic() - t0, time.process_time() - c0
+    assert code == 0, err
+    assert 1.9 < wall < 4.0
+    assert cpu < 0.8 * wall, (cpu, wall)        # blocking waits, no busy loop
+    rows = _units(out)
+    assert len(rows) >= 2, out                  # periodic lines (1 s) and the final one
+    el, unit, conn, rate, req, lost, crc, ori, battery, status = rows[-1]
+    assert unit == "1" and conn == "fake:rate=200"
+    assert abs(float(rate) - 200) < 10 and req == "200"
+    assert lost == "0" and crc == "0"
+    assert re.match(r"roll\s+[+-][\d.]+ pitch\s+[+-][\d.]+ yaw\s+[+-][\d.]+ deg \(ENU\)", ori), ori
+    assert battery == "3.90 V 80 %" and "streaming" in status
+    assert out.strip().splitlines()[-1] == "live view done"
+
+
+def test_losses_and_unit_choice(run):
+    code, out, err = run("live", "--port", "fake:rate=200,drop=20,unit=3", "--port", "fake:unit=4,rate=100,ori=0",
+                         "--unit", "3", "--seconds", "1.2", "--interval", "0.5")
+    assert code == 0, err
+    rows = _units(out)
+    assert rows and {r[1] for r in rows} == {"3"}
+    last = rows[-1]
+    assert int(last[5]) >= 8                   # every 20th of ~240 samples lost
+    assert abs(float(last[3]) - 190) < 10      # 19 of 20 frames arrive
+    assert "fake:unit=4,rate=100,ori=0: no unit 3 data yet" in out
+
+
+def test_ctrl_c_ends_cleanly(run, monkeypatch):
+    from kinefuse.host.commands import live_cmd
+    calls = {"n": 0}
+    feed = live_cmd.LiveMonitor.feed
+
+    def interrupting_feed(self, sid, frames):
+        calls["n"] += 1
+        if calls["n"] == 20:
+            raise KeyboardInterrupt
+        return feed(self, sid, frames)
+    monkeypatch.setattr(live_cmd.LiveMonitor, "feed", interrupting_feed)
+    closed = []
+    from kinefuse.host.link.session import Session
+    orig_close = Session.close
+    monkeypatch.setattr(Session, "close", lambda self: (closed.append(self.conn.url), orig_close(self))[1])
+    code, out, err = run("live", "--port", "fake:rate=200", "--seconds", "30")
+    assert code == 0, err
+    assert "live view interrupted" in out and "Traceback" not in err
+    assert closed == ["fake:rate=200"]
+
+
+@pytest.mark.parametrize("argv, text", [
+    (["live", "--port", "fake:", "--seconds", "0"], "--seconds must be positive"),
+    (["live", "--port", "tcp:127.0.0.1:1", "--seconds", "1"], "cannot connect"),
+    (["live", "--port", "fake:bogus=1"], "bad fake unit option"),
+    (["live", "--port", "file:{tmp}/empty.bin", "--seconds", "1"], "no kinefuse unit data received"),
+    (["live", "--port", "fake:rate=100", "--unit", "9", "--seconds", "0.5"], "no unit 9 data received"),
+])
+def test_bad_input_gives_one_line(run, tmp_path, argv, text):
+    (tmp_path / "empty.bin").write_bytes(b"")
+    code, out, err = run(*[a.format(tmp=tmp_path) for a in argv])
+    assert code == 2, (code, out, err)
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("kinefuse: error:") and text in lines[0], err
