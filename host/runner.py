@@ -125,11 +125,34 @@ def rejected_count(res: FilterResult) -> int | None:
     return int(np.asarray(r).reshape(len(res.q), -1)[-1, 0])
 
 
-def write_estimates_csv(path, t, res: FilterResult, comment: str, status: bool = False) -> int:
+#: the ENU <-> NED swap (x <-> y, z -> -z): a half turn about (1, 1, 0)/sqrt(2), its own inverse
+Q_SWAP_ENU_NED = np.array([0.0, np.sqrt(0.5), np.sqrt(0.5), 0.0])
+FRAMES = ("enu", "ned")
+FRAME_TEXT = {"enu": "earth frame ENU (x East, y North, z Up)",
+              "ned": "earth frame NED (x North, y East, z Down)"}
+
+
+def to_earth_frame(q: np.ndarray, frame: str) -> np.ndarray:
+    """Sensor->ENU quaternions (w, x, y, z) expressed sensor->``frame`` ('enu' or 'ned')."""
+    if frame == "enu":
+        return q
+    if frame != "ned":
+        raise KinefuseError(f"unknown earth frame {frame!r} (choose enu or ned)")
+    a = np.sqrt(0.5)
+    w, x, y, z = (np.asarray(q, float)[:, i] for i in range(4))
+    # Q_SWAP ⊗ q with Q_SWAP = (0, a, a, 0)
+    out = np.column_stack([-a * x - a * y, a * w + a * z, a * w - a * z, a * y - a * x])
+    return np.where(out[:, :1] < 0, -out, out)          # canonical w >= 0
+
+
+def write_estimates_csv(path, t, res: FilterResult, comment: str, status: bool = False,
+                        frame: str = "enu") -> int:
     """Estimates as CSV: ``# comment`` line, header ``t,w,x,y,z`` (+ the filter's status outputs
-    when ``status``), one row per input sample; returns the number of rows."""
+    when ``status``), one row per input sample; returns the number of rows.  The quaternions
+    are written sensor->``frame`` (the filters work in ENU; 'ned' rotates them)."""
     n = len(res.q)
-    cols = [np.asarray(t, dtype=np.float64), res.q[:, 0], res.q[:, 1], res.q[:, 2], res.q[:, 3]]
+    q = to_earth_frame(np.asarray(res.q, float), frame)
+    cols = [np.asarray(t, dtype=np.float64), q[:, 0], q[:, 1], q[:, 2], q[:, 3]]
     header = ["t", "w", "x", "y", "z"]
     if status:
         for k, v in res.outputs.items():

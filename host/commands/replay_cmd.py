@@ -48,6 +48,8 @@ def register(subparsers) -> None:
     p.add_argument("--unit", metavar="ID", help="unit of a multi-unit .kfr: unit (system) id, s<stream> or "
                                                 "s<stream>:<id>")
     p.add_argument("--status", action="store_true", help="append the filter's status outputs")
+    p.add_argument("--frame", default="enu", choices=runner.FRAMES,
+                   help="earth frame of the written quaternions (default enu)")
     p.add_argument("--compare-unit", action="store_true",
                    help="(.kfr) angle between the unit's own KF_ORIENTATION and the replayed orientation")
     p.set_defaults(func=run)
@@ -84,9 +86,10 @@ def run(args) -> int:
     dt = np.atleast_1d(getattr(inputs, "dt", None))
     gaps = int(np.count_nonzero(dt > runner.DT_MAX)) if dt.ndim == 1 and dt.size > 1 else 0
     comment = (f"kinefuse replay --filter {name} --impl {args.impl}; t in s ({time_base}); quaternion w,x,y,z "
-               f"sensor->earth, earth frame ENU (x East, y North, z Up); input {path}"
+               f"sensor->earth, {runner.FRAME_TEXT[args.frame]}; input {path}"
                + (f" unit {rec.metadata['unit']}" if rec is not None and rec.fmt == "kfr" else ""))
-    n = runner.write_estimates_csv(args.out, t, res, comment, status=args.status)
+    n = runner.write_estimates_csv(args.out, t, res, comment, status=args.status,
+                                   frame=args.frame)
     rejected = runner.rejected_count(res)
     msg = f"wrote {n} rows to {args.out} ({name}, {args.impl})"
     if rejected is not None:

@@ -21,6 +21,8 @@ def register(sub):
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter override")
     p.add_argument("--preset", help="named parameter set (see `kinefuse filters`)")
     p.add_argument("--status", action="store_true", help="append the filter's status outputs")
+    p.add_argument("--frame", default="enu", choices=runner.FRAMES,
+                   help="earth frame of the written quaternions (default enu, as BROAD)")
     p.set_defaults(func=run)
 
 
@@ -35,7 +37,7 @@ def run(args) -> int:
     n = len(res.q)
     t = np.arange(n) * float(trial.dt) if np.ndim(trial.dt) == 0 else np.cumsum(trial.dt)
     runner.write_estimates_csv(args.out, t, res, f"kinefuse run --filter {name} --impl {args.impl}; t in s; "
-                               f"quaternion w,x,y,z sensor->earth, earth frame ENU; input {args.input}",
-                               status=args.status)
+                               f"quaternion w,x,y,z sensor->earth, {runner.FRAME_TEXT[args.frame]}; "
+                               f"input {args.input}", status=args.status, frame=args.frame)
     print(f"wrote {n} rows to {args.out} ({name}, {args.impl})", file=sys.stderr)
     return 0

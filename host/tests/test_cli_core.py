@@ -94,3 +94,20 @@ def test_bench_speed_json(short_trial):
     sps = json.loads(r.stdout)["samples_per_s"]
     assert set(sps) == {"f32_c", "f32_model", "q_c", "q_model", "ref", "imufusion", "vqf"}
     assert sps["f32_c"] > sps["f32_model"] > 0
+
+
+def test_run_writes_ned_on_request(short_trial, tmp_path):
+    """--frame ned: the same orientation with the earth axes swapped (x North, y East, z Down):
+    the earth-frame images of the sensor axes must be the ENU ones with x<->y and z negated."""
+    from kinefuse.host.kinematics import quat as Q
+    outs = {}
+    for frame in ("enu", "ned"):
+        out = tmp_path / f"{frame}.csv"
+        r = kf("run", "--input", str(short_trial), "--out", str(out), "--frame", frame)
+        assert r.returncode == 0, r.stderr
+        assert ("earth frame " + frame.upper()) in out.read_text().splitlines()[0]
+        outs[frame] = np.loadtxt(out, delimiter=",", skiprows=2)[:, 1:5]
+    r_enu, r_ned = Q.to_matrix(outs["enu"]), Q.to_matrix(outs["ned"])
+    swap = np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])
+    assert np.allclose(swap @ r_enu, r_ned, atol=1e-6)
+    assert np.all(outs["ned"][:, 0] >= 0)
