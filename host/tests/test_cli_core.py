@@ -111,3 +111,12 @@ def test_run_writes_ned_on_request(short_trial, tmp_path):
     swap = np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])
     assert np.allclose(swap @ r_enu, r_ned, atol=1e-6)
     assert np.all(outs["ned"][:, 0] >= 0)
+
+
+def test_bench_bitexact_no_ref_compares_bits_only(short_trial):
+    r = kf("bench", "bitexact", "--data", str(short_trial), "--filter", "vac", "--no-ref", "--json")
+    assert r.returncode == 0, r.stderr
+    res = json.loads(r.stdout)
+    for system in ("f32", "q"):
+        assert res[system]["differing"] == 0 and res[system]["samples"] > 5000
+        assert res[system]["rms_deg"] is None and res[system]["max_deg"] is None
