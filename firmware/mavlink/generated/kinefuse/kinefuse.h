@@ -71,8 +71,8 @@ typedef enum KF_FILTER
    KF_FILTER_COMPLEMENTARY=2, /* Complementary filter. | */
    KF_FILTER_MADGWICK=3, /* Madgwick gradient-descent filter. | */
    KF_FILTER_MAHONY=4, /* Mahony explicit complementary filter. | */
-   KF_FILTER_VQF=5, /* VQF-style filter (inclination/heading split, rest detection, bias estimation). | */
-   KF_FILTER_EKF=6, /* Extended Kalman filter on orientation (and gyro bias). | */
+   KF_FILTER_FLAGSHIP=5, /* kinefuse flagship filter (inclination/heading split, rest detection, bias estimation, magnetic disturbance rejection); the default. | */
+   KF_FILTER_ESKF=6, /* Error-state (multiplicative) Kalman filter: attitude, gyro bias, linear acceleration; sends the attitude covariance. | */
    KF_FILTER_DYNAMIC_EKF=7, /* Dynamic multibody EKF (orientation, joint angles and efforts). | */
    KF_FILTER_ECOMPASS=8, /* Memoryless accelerometer + magnetometer orientation (e-compass). | */
    KF_FILTER_TRIAD=9, /* Memoryless TRIAD orientation from gravity and the magnetic field. | */
