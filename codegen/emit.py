@@ -447,6 +447,8 @@ def py_model(lo: Lowered, source_file: str) -> str:
              "    return list(np.broadcast_to(a, (n,))) if a.ndim == 0 else list(a)",
              "", "",
              "def _int_list(a, n):",
+             "    if isinstance(a, tuple):     # kf_dyn: (mantissas, exponents) -> (m, e) per sample",
+             "        return list(zip(_int_list(a[0], n), _int_list(a[1], n)))",
              "    a = np.asarray(a)",
              "    return np.broadcast_to(a, (n,)).tolist()",
              "", "",

@@ -519,6 +519,12 @@ class FixedLowering:
             stmts, vals = [], []
             for i, x in enumerate(data):
                 src = self.fmt[x.id]
+                if src.dyn:       # a reciprocal square root chosen as it is: into the format
+                    name = f"{t}_{i}"
+                    stmts.append(Assign(name, "i32", Call("kf_mul_dyn", (
+                        Int(1), self.ref(x, names), Int(0 - f), Int(fm.lo), Int(fm.hi)))))
+                    vals.append(Var(name))
+                    continue
                 if x.op != "const" and src.frac == f and (
                         not fm.sat or (fm.lo <= src.lo and src.hi <= fm.hi)):
                     vals.append(self.ref(x, names))   # already in format and bounds

@@ -45,7 +45,8 @@ from kinefuse.codegen.estimators.common import (ACC_MAX, ACC_NORM_MIN_SQ, DT_MAX
 from kinefuse.codegen.ir import BOOL
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
 from kinefuse.codegen.scalar import (all_of, any_of, assume, clamp, fabs, fmax, fmin, inc_if,
-                                     logical_and, logical_not, logical_or, rnorm, select, when)
+                                     logical_and, logical_not, logical_or, rnorm, rsqrt, select,
+                                     when)
 
 DEG = math.pi / 180.0
 T_SAT = 1.0e4              # s; timers saturate here
@@ -74,9 +75,14 @@ def _clamp3(v, lo, hi):
 
 
 def _renorm(q: Quat) -> Quat:
-    """q / |q| for |q| close to 1: one Newton step q (3 - |q|^2) / 2 (no square root; the
-    error is 3/8 of the squared deviation)."""
-    k = 1.5 - 0.5 * q.norm_sq()
+    """q / |q|: one Newton step q (3 - |q|^2) / 2 when |q|^2 is within 1e-3 of 1 (no square
+    root; the error is 3/8 of the squared deviation, < 4e-7), else (only after extreme steps)
+    the exact 1/sqrt in a conditional region."""
+    n2 = q.norm_sq()
+    far = fabs(n2 - 1.0) > 1e-3
+    with when(far):
+        k_far = rsqrt(fmax(n2, 0.25))
+    k = select(far, k_far, 1.5 - 0.5 * n2)
     return Quat(*(assume(c * k, -1.0, 1.0) for c in q))
 
 
@@ -259,7 +265,14 @@ class Flagship(Estimator):
         # rotation vector of the step: theta plus the two-sample coning term theta_prev x theta / 12
         theta = _clamp3(w * dt, -STEP_MAX, STEP_MAX)
         phi = theta + th_prev.cross(theta) * (1.0 / 12.0)
-        th2 = fmin(phi.norm_sq(), 4.0)
+        # a step beyond 2 rad (only with dt near its 1 s limit) is scaled to 2 rad, so the step
+        # quaternion below stays near unit norm and the Newton renormalisation holds
+        phi2 = phi.norm_sq()
+        huge = phi2 > 4.0
+        with when(huge):
+            k_step = 2.0 * rsqrt(fmax(phi2, 4.0))
+        phi = vselect(huge, phi * k_step, phi)
+        th2 = fmin(phi2, 4.0)
         # (cos(a/2), sin(a/2)/a * phi) to fourth order in the angle a (error ~ a^5 / 480);
         # its norm is 1 - a^4/192, so one Newton step renormalises the product
         s0 = 0.5 - th2 * (1.0 / 48.0)

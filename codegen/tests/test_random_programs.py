@@ -14,7 +14,7 @@ from kinefuse.codegen.scalar import (assume, clamp, fabs, floor, fmax, fmin, inc
                                      select, sqrt, when)
 from kinefuse.codegen.testing import build_adhoc
 
-N_OPS = 16
+N_OPS = 17
 instr = st.tuples(st.integers(0, N_OPS - 1), st.integers(0, 99), st.integers(0, 99),
                   st.integers(0, 99), st.floats(-8.0, 8.0, allow_nan=False).filter(lambda v: v != 0))
 programs = st.lists(instr, min_size=3, max_size=24)
@@ -58,6 +58,8 @@ def make_estimator(program, uid: int):
             return select(cond, v, a)
         if op == 14:
             return b * rsqrt(fmax(a * a, 0.01))
+        if op == 15:        # a reciprocal square root (dynamic binary point) chosen by a select
+            return select(a < b, rsqrt(fmax(fabs(a), 0.01)), d)
         return a * c
 
     class Prog(Estimator):
@@ -95,6 +97,8 @@ _uid = iter(range(10 ** 9))
 @given(program=programs, seed=st.integers(0, 2 ** 16))
 # found in CI: a clamp to a subnormal range (the Q-format choice overflowed)
 @example(program=[(0, 0, 0, 0, 1.0), (0, 0, 0, 0, 1.0), (11, 0, 0, 0, 2.225073858507e-311)], seed=0)
+# the fixed-point select of a dynamic-point rsqrt did not compile (found in flagship's renorm)
+@example(program=[(15, 0, 1, 2, 1.0), (2, 6, 3, 0, 1.0)], seed=1)
 def test_random_program_c_equals_model(program, seed, tmp_path):
     est = make_estimator(program, next(_uid))
     runners = build_adhoc(est, tmp_path / est.name)

@@ -37,10 +37,6 @@ if os.environ.get("CI"):          # CI: no shrinking (minimal examples are found
 # (filter, property, number system or None for all) -> why it fails (reported to the owner,
 # with the minimal example hypothesis found; see the harness report)
 KNOWN_FAILURES = {
-    ("flagship", "unit_norm", None): (
-        "flagship: |q| = 0.41 (f32 and q) for in-range input with a large rotation per step "
-        "(dt = 1 s, rates ~16 rad/s): the Newton renormalisation of the strapdown quaternion "
-        "only corrects near-unit norms"),
     ("madgwick", "rest_convergence", "q"): (
         "madgwick q: at rest upside down (q_rest = (0, 0, 1, 0)) after starting at (0.43, 0.90, 0, "
         "0), the inclination error stays at 17.3 deg after 900 s (f32: converges)"),

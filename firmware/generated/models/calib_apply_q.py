@@ -26,6 +26,8 @@ def _f32_list(a, n):
 
 
 def _int_list(a, n):
+    if isinstance(a, tuple):     # kf_dyn: (mantissas, exponents) -> (m, e) per sample
+        return list(zip(_int_list(a[0], n), _int_list(a[1], n)))
     a = np.asarray(a)
     return np.broadcast_to(a, (n,)).tolist()
 
