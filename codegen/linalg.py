@@ -56,6 +56,18 @@ class Vec3(tuple):
         return Vec3(*(assume(c * k, -1.0, 1.0) for c in self)), n2
 
 
+def rotation_rows(q) -> list:
+    """Rotation matrix of a unit quaternion (w, x, y, z) as rows (sensor -> earth for an
+    orientation quaternion)."""
+    w, x, y, z = q
+    xx, yy, zz = x * x, y * y, z * z
+    xy, xz, yz = x * y, x * z, y * z
+    wx, wy, wz = w * x, w * y, w * z
+    return [[1.0 - 2.0 * (yy + zz), 2.0 * (xy - wz), 2.0 * (xz + wy)],
+            [2.0 * (xy + wz), 1.0 - 2.0 * (xx + zz), 2.0 * (yz - wx)],
+            [2.0 * (xz - wy), 2.0 * (yz + wx), 1.0 - 2.0 * (xx + yy)]]
+
+
 def vselect(cond, a, b):
     """Element-wise select of two equally long tuples (Vec3 or Quat)."""
     return type(a)(*(select(cond, x, y) for x, y in zip(a, b)))

@@ -132,16 +132,19 @@ FRAME_TEXT = {"enu": "earth frame ENU (x East, y North, z Up)",
               "ned": "earth frame NED (x North, y East, z Down)"}
 
 
+def swap_enu_ned(q: np.ndarray) -> np.ndarray:
+    """Sensor->ENU quaternions as sensor->NED, or NED as ENU (the swap is its own inverse)."""
+    from kinefuse.host.kinematics.quat import mul
+    return mul(Q_SWAP_ENU_NED, np.asarray(q, float))
+
+
 def to_earth_frame(q: np.ndarray, frame: str) -> np.ndarray:
     """Sensor->ENU quaternions (w, x, y, z) expressed sensor->``frame`` ('enu' or 'ned')."""
     if frame == "enu":
         return q
     if frame != "ned":
         raise KinefuseError(f"unknown earth frame {frame!r} (choose enu or ned)")
-    a = np.sqrt(0.5)
-    w, x, y, z = (np.asarray(q, float)[:, i] for i in range(4))
-    # Q_SWAP ⊗ q with Q_SWAP = (0, a, a, 0)
-    out = np.column_stack([-a * x - a * y, a * w + a * z, a * w - a * z, a * y - a * x])
+    out = swap_enu_ned(q)
     return np.where(out[:, :1] < 0, -out, out)          # canonical w >= 0
 
 

@@ -49,7 +49,8 @@ from kinefuse.codegen.estimator import Estimator, Param, Var
 from kinefuse.codegen.estimators.common import (ACC_MAX, ACC_NORM_MIN_SQ, DT_MAX, GYR_MAX, IMU,
                                                 INITIALISED, MAG_MAX, REJECTED)
 from kinefuse.codegen.ir import BOOL
-from kinefuse.codegen.linalg import ZERO, Quat, Vec3, quadform, sadd, smul, ssum, vselect
+from kinefuse.codegen.linalg import (ZERO, Quat, Vec3, quadform, rotation_rows, sadd, smul, ssum,
+                                    vselect)
 from kinefuse.codegen.scalar import (all_of, any_of, assume, clamp, fabs, fmax, fmin, inc_if,
                                      logical_and, logical_not, logical_or, rnorm, rsqrt, select)
 
@@ -326,7 +327,7 @@ class Eskf(Estimator):
         init_diag = [s_att, s_att, s_head, s_b, s_b, s_b, s_lin, s_lin, s_lin]
         P = [[select(do_init, init_diag[i] if i == j else 0.0, P[i][j]) for j in range(9)]
              for i in range(9)]
-        R = _rot_rows(q)                                # sensor -> earth rotation matrix
+        R = rotation_rows(q)                                # sensor -> earth rotation matrix
         F = [[ZERO] * 9 for _ in range(9)]
         for i in range(3):
             F[i][i] = 1.0
@@ -424,14 +425,3 @@ class Eskf(Estimator):
              "mag_disturbed": logical_and(live, disturbed),
              "rejected": nx["rejected"]}
         return nx, y
-
-
-def _rot_rows(q: Quat):
-    """Rotation matrix (sensor -> earth) of a unit quaternion, rows."""
-    w, x, y, z = q
-    xx, yy, zz = x * x, y * y, z * z
-    xy, xz, yz = x * y, x * z, y * z
-    wx, wy, wz = w * x, w * y, w * z
-    return [[1.0 - 2.0 * (yy + zz), 2.0 * (xy - wz), 2.0 * (xz + wy)],
-            [2.0 * (xy + wz), 1.0 - 2.0 * (xx + zz), 2.0 * (yz - wx)],
-            [2.0 * (xz - wy), 2.0 * (yz + wx), 1.0 - 2.0 * (xx + yy)]]

@@ -32,7 +32,7 @@ import math
 from kinefuse.codegen.estimator import Estimator, InputSpec, Param, Var
 from kinefuse.codegen.estimators.common import REJECTED, within
 from kinefuse.codegen.ir import BOOL
-from kinefuse.codegen.linalg import Quat, vselect
+from kinefuse.codegen.linalg import Quat, rotation_rows, vselect
 from kinefuse.codegen.mathlib import asin, atan2
 from kinefuse.codegen.scalar import (all_of, assume, fabs, inc_if, logical_not, logical_or,
                                      select)
@@ -60,12 +60,8 @@ def _offset_params(which: str) -> tuple[Param, ...]:
 
 
 def _matrix(q: Quat):
-    """Rotation matrix of a unit quaternion (rows)."""
-    w, x, y, z = q
-    e = lambda v: assume(v, -1.0, 1.0)        # entries of a rotation matrix
-    return ((e(1.0 - 2.0 * (y * y + z * z)), e(2.0 * (x * y - w * z)), e(2.0 * (x * z + w * y))),
-            (e(2.0 * (x * y + w * z)), e(1.0 - 2.0 * (x * x + z * z)), e(2.0 * (y * z - w * x))),
-            (e(2.0 * (x * z - w * y)), e(2.0 * (y * z + w * x)), e(1.0 - 2.0 * (x * x + y * y))))
+    """Rotation matrix of a unit quaternion, entries bounded to [-1, 1] for fixed point."""
+    return [[assume(v, -1.0, 1.0) for v in row] for row in rotation_rows(q)]
 
 
 def _pick(seq_is, values):

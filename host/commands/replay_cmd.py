@@ -27,8 +27,6 @@ BROAD_SUFFIXES = (".mat", ".npz")
 MSG_ORI = 52501
 ORI_INITIALISED = 1
 EARTH_ENU, EARTH_NED = 1, 2
-#: q_ENU<-NED: x_E = y_N, y_E = x_N, z_E = -z_N
-Q_ENU_NED = np.array([0.0, np.sqrt(0.5), np.sqrt(0.5), 0.0])
 
 
 def register(subparsers) -> None:
@@ -160,8 +158,7 @@ def _unit_orientation(path: str, rec):
     if frames.size > 1:
         raise KinefuseError(f"{path}: the unit's KF_ORIENTATION changes earth frame during the recording")
     if frames.size and int(frames[0]) == EARTH_NED:
-        from kinefuse.host.kinematics.quat import mul
-        q = mul(Q_ENU_NED, q)
+        q = runner.swap_enu_ned(q)
         note = " (unit's NED quaternions turned to ENU)"
     elif frames.size and int(frames[0]) != EARTH_ENU:
         note = " (unit's earth frame unknown: taken as ENU)"
