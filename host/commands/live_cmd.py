@@ -75,12 +75,9 @@ class UnitView:
         c = np.asarray(([] if self.last_counter is None else [self.last_counter]) + self.pending, np.int64)
         self.last_counter = int(c[-1])
         self.pending = []
-        if c.size < 2:
-            return
-        d = (c[1:] - c[:-1]) & 0xFFFFFFFF
-        forward = (d > 0) & (d < 1 << 31)
-        self.lost += int(np.sum(np.maximum(0, np.round(d[forward] / self.stride).astype(np.int64) - 1)))
-        self.resets += int(np.sum(d >= 1 << 31))
+        a = counter_analysis(c, stride=self.stride)
+        self.lost += a["samples_lost"]
+        self.resets += a["resets"]
 
     def orientation(self, m) -> None:
         from kinefuse.host.kinematics.quat import to_euler

@@ -26,15 +26,18 @@ KF_MESSAGES = (52500, 52501, 52502, 52503, 52504)
 REQUESTED_FIELD = {MSG_RAW: "raw_rate_requested", MSG_ORI: "orientation_rate_requested"}
 
 
-def counter_analysis(counter: np.ndarray) -> dict:
-    """Loss from a uint32 counter (wrap-safe), with the stride taken as the most common step."""
+def counter_analysis(counter: np.ndarray, stride: int | None = None) -> dict:
+    """Loss from a uint32 counter (wrap-safe), with the stride taken as the most common step
+    unless given (a live view learns it once and then analyses short pieces)."""
     c = np.asarray(counter, dtype=np.int64)
     if c.size < 2:
-        return {"stride": None, "samples_lost": 0, "loss_fraction": 0.0, "resets": 0, "duplicates": 0}
+        return {"stride": stride, "samples_lost": 0, "loss_fraction": 0.0, "resets": 0,
+                "duplicates": 0}
     d = (c[1:] - c[:-1]) & 0xFFFFFFFF
     forward = (d > 0) & (d < 1 << 31)
-    steps, counts = np.unique(d[forward], return_counts=True)
-    stride = int(steps[np.argmax(counts)]) if steps.size else 1
+    if stride is None:
+        steps, counts = np.unique(d[forward], return_counts=True)
+        stride = int(steps[np.argmax(counts)]) if steps.size else 1
     gaps = d[forward]
     lost = int(np.sum(np.maximum(0, np.round(gaps / stride).astype(np.int64) - 1)))
     expected = int(c.size + lost)
