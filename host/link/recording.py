@@ -193,7 +193,7 @@ class Recording:
     header: dict
     streams: dict            # stream id -> StreamData
     chunks: int = 0
-    damaged_chunks: int = 0  # chunks skipped because their CRC failed
+    damaged_chunks: int = 0  # damaged stretches skipped (CRC or header failed)
     truncated: bool = False  # the file ends inside a chunk
     trailing_bytes: int = 0  # bytes after the last complete chunk
 
@@ -244,33 +244,57 @@ def iter_chunks(data: bytes, start: int, stats: dict | None = None):
             stats["truncated"] = True
             stats["trailing"] = n - i
             return
-        marker, ctype, stream, length, t_ns, crc = CHUNK.unpack_from(data, i)
-        if marker != MARKER or ctype not in CHUNK_TYPES or length > MAX_CHUNK:
-            j = data.find(MARKER, i + 1)
+        state = _chunk_state(data, i)
+        if state == "damaged":
+            # One damaged stretch counts once: resume at the next header whose CRC holds (a
+            # "kc" inside a payload or a CRC field is not taken for a chunk).
             stats["damaged"] += 1
+            j = _next_good_chunk(data, i + 1)
             if j < 0:
                 stats["trailing"] = n - i
                 return
             i = j
             continue
+        marker, ctype, stream, length, t_ns, crc = CHUNK.unpack_from(data, i)
         body_start = i + CHUNK.size
-        end = body_start + length
-        if end > n:  # the file stops inside this chunk (killed recorder, copied while recording)
+        if state == "truncated":  # the file stops inside this chunk (killed recorder, copied while recording)
             stats["truncated"] = True
             stats["trailing"] = n - i
             yield Chunk(ctype, stream, t_ns, data[body_start:n], i, truncated=True)
             return
-        payload = data[body_start:end]
-        if _crc32(payload) != crc:
-            stats["damaged"] += 1
-            j = data.find(MARKER, i + 1)
-            if j < 0:
-                stats["trailing"] = n - i
-                return
-            i = j
-            continue
-        yield Chunk(ctype, stream, t_ns, payload, i)
-        i = end
+        yield Chunk(ctype, stream, t_ns, data[body_start:body_start + length], i)
+        i = body_start + length
+
+
+def _chunk_state(data: bytes, i: int) -> str:
+    """'ok', 'truncated' (plausible header, file ends inside the payload) or 'damaged'."""
+    if len(data) - i < CHUNK.size:
+        return "damaged"
+    marker, ctype, _stream, length, _t, crc = CHUNK.unpack_from(data, i)
+    if marker != MARKER or ctype not in CHUNK_TYPES or length > MAX_CHUNK:
+        return "damaged"
+    end = i + CHUNK.size + length
+    if end > len(data):
+        return "truncated"
+    return "ok" if _crc32(data[i + CHUNK.size:end]) == crc else "damaged"
+
+
+def _next_good_chunk(data: bytes, i: int) -> int:
+    """Offset of the next chunk header at or after i that checks out, or -1.
+
+    A header that runs past the end of the file is taken only if no whole chunk follows it
+    (a stray "kc" with a plausible length must not swallow the rest of the file)."""
+    partial = -1
+    while True:
+        j = data.find(MARKER, i)
+        if j < 0:
+            return partial
+        state = _chunk_state(data, j)
+        if state == "ok":
+            return j
+        if state == "truncated" and partial < 0:
+            partial = j
+        i = j + 1
 
 
 def _rx_parts(chunk: Chunk):

@@ -1,6 +1,7 @@
 """The .kfr recording: round trip, truncation at any byte, damage, a really killed recorder, fsync."""
 from __future__ import annotations
 
+import io
 import os
 import signal
 import subprocess
@@ -112,14 +113,36 @@ def test_damaged_chunk_is_skipped(tmp_path):
     frames = raw_frames(200, seed=5)
     _write(tmp_path / "d.kfr", frames, reads_per_chunk=2, read_size=200)
     data = bytearray((tmp_path / "d.kfr").read_bytes())
-    first = data.find(recording.MARKER, 100)
-    second = data.find(recording.MARKER, first + 1)
-    data[second + recording.CHUNK.size + 50] ^= 0xFF  # damage the payload of the second chunk
+    _, body = recording.read_header(io.BytesIO(bytes(data)), "d.kfr")
+    second = list(recording.iter_chunks(bytes(data), body))[3]  # the second RX chunk
+    assert second.type == recording.RX and len(second.payload) > 50
+    data[second.offset + recording.CHUNK.size + 50] ^= 0xFF  # damage its payload
     (tmp_path / "d.kfr").write_bytes(bytes(data))
     rec = load(tmp_path / "d.kfr")
     assert rec.damaged_chunks == 1
     got, _ = decode_bytes(rec.streams[0].rx)
     assert len(got) >= 200 - 2 * 200 // FRAME - 2  # lost at most the frames touching that chunk
+
+
+def test_damage_resync_ignores_markers_inside_payloads(tmp_path):
+    """A damaged chunk whose payload holds "kc" bytes is one damaged stretch, and what follows survives."""
+    head = make_header([{"id": 0}])
+    payloads = [bytes([k]) * 40 + recording.MARKER * 30 + bytes([k]) * 40 for k in range(6)]
+    with RecordingWriter(tmp_path / "m.kfr", head) as w:
+        for k, p in enumerate(payloads):
+            w.rx(0, [(10**9 + k, p)])
+    data = bytearray((tmp_path / "m.kfr").read_bytes())
+    _, body = recording.read_header(io.BytesIO(bytes(data)), "m.kfr")
+    chunks = [c for c in recording.iter_chunks(bytes(data), body) if c.type == recording.RX]
+    data[chunks[2].offset + recording.CHUNK.size + 20] ^= 0xFF
+    rec = load_bytes(tmp_path, data)
+    assert rec.damaged_chunks == 1 and not rec.truncated
+    assert rec.streams[0].rx == b"".join(payloads[:2] + payloads[3:])
+
+
+def load_bytes(tmp_path, data):
+    (tmp_path / "x.kfr").write_bytes(bytes(data))
+    return load(tmp_path / "x.kfr")
 
 
 def test_not_a_recording_and_missing(tmp_path):
