@@ -68,6 +68,21 @@ def rotation_rows(q) -> list:
             [2.0 * (xz - wy), 2.0 * (yz + wx), 1.0 - 2.0 * (xx + yy)]]
 
 
+def _literal_zero(v) -> bool:
+    return isinstance(v, (int, float)) and v == 0
+
+
+def _sum_products(*terms):
+    """±a·b ± c·d ..., left to right, skipping products with a literal zero factor."""
+    acc = None
+    for sign, a, b in terms:
+        if _literal_zero(a) or _literal_zero(b):
+            continue
+        p = a * b
+        acc = (p if sign > 0 else -p) if acc is None else (acc + p if sign > 0 else acc - p)
+    return 0.0 if acc is None else acc
+
+
 def vselect(cond, a, b):
     """Element-wise select of two equally long tuples (Vec3 or Quat)."""
     return type(a)(*(select(cond, x, y) for x, y in zip(a, b)))
@@ -91,13 +106,14 @@ class Quat(tuple):
         return Vec3(self[1], self[2], self[3])
 
     def __mul__(self, o):
-        """Hamilton product self ⊗ o."""
+        """Hamilton product self ⊗ o.  Terms with a literal 0 factor (a pure quaternion
+        (0, v) written in the code) are left out rather than multiplied by zero."""
         aw, ax, ay, az = self
         bw, bx, by, bz = o
-        return Quat(aw * bw - ax * bx - ay * by - az * bz,
-                    aw * bx + ax * bw + ay * bz - az * by,
-                    aw * by - ax * bz + ay * bw + az * bx,
-                    aw * bz + ax * by - ay * bx + az * bw)
+        return Quat(_sum_products((1, aw, bw), (-1, ax, bx), (-1, ay, by), (-1, az, bz)),
+                    _sum_products((1, aw, bx), (1, ax, bw), (1, ay, bz), (-1, az, by)),
+                    _sum_products((1, aw, by), (-1, ax, bz), (1, ay, bw), (1, az, bx)),
+                    _sum_products((1, aw, bz), (1, ax, by), (-1, ay, bx), (1, az, bw)))
 
     def __add__(self, o):
         return Quat(self[0] + o[0], self[1] + o[1], self[2] + o[2], self[3] + o[3])

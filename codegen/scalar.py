@@ -148,9 +148,14 @@ def rnorm(xs, eps: float):
     normalises x, and its squared norm.  Prefer it to rsqrt(sum of squares): the fixed-point path
     then keeps full precision for vectors of any length."""
     xs = tuple(xs)
-    n2 = xs[0] * xs[0]
-    for c in xs[1:]:
-        n2 = n2 + c * c
+    sq = [c * c for c in xs]
+    # pairwise: a quaternion's squared norm is two additions deep, not three (it lies on the
+    # sample-to-sample dependency chain of every filter)
+    n2 = sq[0] + sq[1] if len(sq) > 1 else sq[0]
+    if len(sq) == 4:
+        n2 = n2 + (sq[2] + sq[3])
+    elif len(sq) == 3:
+        n2 = n2 + sq[2]
     s = _first_sym(n2, *xs)
     if s is not None:
         g = s.g

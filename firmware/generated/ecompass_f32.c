@@ -104,9 +104,9 @@ void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecom
     const int t58 = (!t57);  /* common.py:68 */
     const float t59 = (u_acc0 * u_acc0);  /* ecompass.py:50 */
     const float t60 = (u_acc1 * u_acc1);  /* ecompass.py:50 */
-    const float t61 = (t59 + t60);  /* ecompass.py:50 */
-    const float t62 = (u_acc2 * u_acc2);  /* ecompass.py:50 */
-    const float t63 = (t61 + t62);  /* ecompass.py:50 */
+    const float t61 = (u_acc2 * u_acc2);  /* ecompass.py:50 */
+    const float t62 = (t59 + t60);  /* ecompass.py:50 */
+    const float t63 = (t62 + t61);  /* ecompass.py:50 */
     const float t64_m = ((0x1.0c6f7ap-20f < t63) ? t63 : 0x1.0c6f7ap-20f);  /* ecompass.py:50 */
     const float t64_s = sqrtf(t64_m);
     const float t64 = (0x1p+0f / t64_s);
@@ -115,9 +115,9 @@ void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecom
     const float t69 = (u_acc2 * t64);  /* ecompass.py:50 */
     const float t71 = (u_mag0 * u_mag0);  /* ecompass.py:51 */
     const float t72 = (u_mag1 * u_mag1);  /* ecompass.py:51 */
-    const float t73 = (t71 + t72);  /* ecompass.py:51 */
-    const float t74 = (u_mag2 * u_mag2);  /* ecompass.py:51 */
-    const float t75 = (t73 + t74);  /* ecompass.py:51 */
+    const float t73 = (u_mag2 * u_mag2);  /* ecompass.py:51 */
+    const float t74 = (t71 + t72);  /* ecompass.py:51 */
+    const float t75 = (t74 + t73);  /* ecompass.py:51 */
     const float t76_m = ((0x1.0c6f7ap-20f < t75) ? t75 : 0x1.0c6f7ap-20f);  /* ecompass.py:51 */
     const float t76_s = sqrtf(t76_m);
     const float t76 = (0x1p+0f / t76_s);

@@ -54,6 +54,9 @@ def register_bench(sub):
     p.add_argument("--repeat", type=int, default=5, help="repetitions of the fast paths (best taken)")
     p.add_argument("--model-samples", type=int, default=5000,
                    help="samples used for the (slow) Python model and reference timings")
+    p.add_argument("--instructions", action="store_true",
+                   help="also count instructions per sample of the f32 C and Fusion's C under "
+                        "valgrind (deterministic, unlike times on a shared machine)")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=run)
 
@@ -83,6 +86,102 @@ def fusion_runner():
     ffi, lib = build("fusion_batch", [], srcs + [wrapper], extra_cdef=cdef, extra_source=cdef,
                      include_dirs=[fusion_dir])
     return ffi, lib
+
+
+_COUNT_MAIN = r"""
+#include <stdio.h>
+#include <stdlib.h>
+#include "%(header)s"
+void kf_fusion_run(const float *gyr_dps, const float *acc_g, const float *mag_ut, float *q,
+                   int n, float rate_hz);
+static void *slurp(const char *path, long *len)
+{
+    FILE *f = fopen(path, "rb");
+    void *buf;
+    if (f == NULL) { perror(path); exit(2); }
+    fseek(f, 0, SEEK_END); *len = ftell(f); fseek(f, 0, SEEK_SET);
+    buf = malloc((size_t)*len);
+    if (fread(buf, 1, (size_t)*len, f) != (size_t)*len) { perror(path); exit(2); }
+    fclose(f);
+    return buf;
+}
+int main(int argc, char **argv)
+{
+    long len_in, len_f;
+    const %(P)s_input *in = slurp(argv[1], &len_in);
+    const float *fus = slurp(argv[2], &len_f);
+    const int n = (int)(len_in / (long)sizeof(*in));
+    %(P)s_output *out = malloc(sizeof(*out) * (size_t)n);
+    float *q = malloc(sizeof(float) * 4u * (size_t)n);
+    %(P)s_params p;
+    %(P)s_state s;
+    %(P)s_default_params(&p);
+    %(P)s_init(&s, &p);
+    %(P)s_run(&s, in, out, (uint32_t)n);
+    kf_fusion_run(fus, fus + 3 * n, fus + 6 * n, q, n, (float)atof(argv[3]));
+    printf("%%d %%g %%g\n", n, (double)out[n - 1].q[0], (double)q[4 * n - 4]);
+    return 0;
+}
+"""
+
+
+def instructions_per_sample(name: str, inputs: dict, prm: dict, trial) -> dict[str, float]:
+    """Instructions per sample of our f32 batch path and of Fusion's, same flags, same trial,
+    counted by valgrind (callgrind, only inside the two batch functions)."""
+    import re
+    import shutil
+    import subprocess
+    import tempfile
+    from pathlib import Path
+    from kinefuse.codegen import runner as cg
+    from kinefuse.codegen.build import HOST_CFLAGS
+    from kinefuse.codegen.generate import GENERATED_DIR
+    from kinefuse.hil_tests.qemu.competitors import _fusion_sources, fetch_sdist
+    if shutil.which("valgrind") is None:
+        raise KinefuseError("--instructions needs valgrind (apt-get install valgrind)")
+    P = f"{name.replace('-', '_')}_f32"
+    header = (GENERATED_DIR / f"{P}.h").read_text()
+    in_type = re.search(r"const (kf_\w+_input_f32) \*in", header).group(1)
+    r = cg.runner(name, "f32")
+    enc = r.encode(inputs, prm)
+    rec = np.zeros(enc.n, dtype=r._dtype(in_type, "input"))
+    for fname, size, _typ in r.fields["input"]:
+        rec[fname] = enc.inputs[fname].reshape(enc.n) if size == 1 else enc.inputs[fname]
+    root = fetch_sdist("imufusion")
+    fusion = _fusion_sources(root)
+    with tempfile.TemporaryDirectory(prefix="kf-count-") as tmp:
+        t = Path(tmp)
+        (t / "main.c").write_text(_COUNT_MAIN.replace("%(header)s", f"{P}.h")
+                                  .replace("%(P)s_input", in_type).replace("%(P)s", P)
+                                  .replace("%%", "%"))
+        (t / "fusion_batch.c").write_text(_FUSION_WRAPPER)
+        rec.tofile(t / "in.bin")
+        np.concatenate([np.degrees(trial.gyr).ravel(), (trial.acc / 9.80665).ravel(),
+                        trial.mag.ravel()]).astype(np.float32).tofile(t / "fusion.bin")
+        flags = [f for f in HOST_CFLAGS if not f.startswith("-W")]
+        cmd = (["gcc", *flags, "-I", str(GENERATED_DIR), "-I", str(fusion[0].parent), "-o",
+                str(t / "count"), str(t / "main.c"), str(GENERATED_DIR / f"{P}.c"),
+                str(t / "fusion_batch.c"), *map(str, fusion), "-lm"])
+        proc = subprocess.run(cmd, capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise KinefuseError(f"could not build the instruction counter: {proc.stderr[-400:]}")
+        out = t / "callgrind.out"
+        proc = subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}",
+                               "--collect-atstart=no", f"--toggle-collect={P}_run",
+                               "--toggle-collect=kf_fusion_run", str(t / "count"),
+                               str(t / "in.bin"), str(t / "fusion.bin"), str(trial.rate_hz)],
+                              capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise KinefuseError(f"valgrind failed: {proc.stderr.strip().splitlines()[-1:]}")
+        ann = subprocess.run(["callgrind_annotate", "--inclusive=yes", str(out)],
+                             capture_output=True, text=True).stdout
+    counts = {}
+    for key, fn in (("f32_c", f"{P}_run"), ("imufusion", "kf_fusion_run")):
+        m = re.search(r"^\s*([\d,]+)\s.*\b" + re.escape(fn) + r"\b", ann, re.M)
+        if m is None:
+            raise KinefuseError(f"callgrind reported no count for {fn}")
+        counts[key] = int(m.group(1).replace(",", "")) / enc.n
+    return counts
 
 
 def run(args) -> int:
@@ -139,6 +238,9 @@ def run(args) -> int:
         eprint("  VQF not measured: `pip install vqf` (benchmark extra)")
         sps["vqf"] = None
     result = {"filter": name, "samples_per_s": sps}
+    if args.instructions:
+        eprint("  counting instructions under valgrind (a few seconds)...")
+        result["instructions_per_sample"] = instructions_per_sample(name, inputs, prm, trial)
     if args.json:
         print(json.dumps(result))
         return 0
@@ -154,4 +256,9 @@ def run(args) -> int:
         print(f"  ratio float32 C / Fusion: {sps['f32_c'] / sps['imufusion']:.2f}")
     if sps.get("vqf"):
         print(f"  ratio float32 C / VQF:    {sps['f32_c'] / sps['vqf']:.2f}")
+    ips = result.get("instructions_per_sample")
+    if ips:
+        print(f"  instructions per sample (valgrind, x86-64, same flags): float32 C "
+              f"{ips['f32_c']:.1f}, x-io Fusion {ips['imufusion']:.1f} "
+              f"(Fusion / ours = {ips['imufusion'] / ips['f32_c']:.2f})")
     return 0

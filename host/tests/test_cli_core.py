@@ -96,6 +96,20 @@ def test_bench_speed_json(short_trial):
     assert sps["f32_c"] > sps["f32_model"] > 0
 
 
+def test_bench_speed_instruction_counts_are_deterministic(short_trial):
+    """--instructions: valgrind counts inside the two batch functions; the same count twice."""
+    runs = []
+    for _ in range(2):
+        r = kf("bench", "speed", "--data", str(short_trial), "--filter", "complementary",
+               "--repeat", "1", "--model-samples", "100", "--instructions", "--json")
+        assert r.returncode == 0, r.stderr
+        runs.append(json.loads(r.stdout)["instructions_per_sample"])
+    assert runs[0] == runs[1]
+    assert set(runs[0]) == {"f32_c", "imufusion"}
+    # a 9D update is hundreds of instructions, not a handful (a wrong function) nor 10^5
+    assert all(100 < v < 5000 for v in runs[0].values()), runs[0]
+
+
 def test_run_writes_ned_on_request(short_trial, tmp_path):
     """--frame ned: the same orientation with the earth axes swapped (x North, y East, z Down):
     the earth-frame images of the sensor axes must be the ENU ones with x<->y and z negated."""
