@@ -292,13 +292,21 @@ class Eskf(Estimator):
         # -- initial orientation: gravity (half-way quaternion), then heading from the field ----
         a_u, _ = acc.normalized(1e-6)
         a_u = Vec3(*(assume(c, -1.0, 1.0) for c in a_u))
-        q_tilt = Quat(fmax(1.0 + a_u.z, 1e-3), a_u.y, -a_u.x, 0.0).normalized(1e-12)
+        # half-angle forms (no trigonometry): (1 + cos, sin·axis) degenerates at 180 degrees, so
+        # past 90 degrees the equivalent (sin, (1 - cos)·axis) form is used (an upside-down
+        # start, or a heading opposite to magnetic north, would otherwise give the identity)
+        up = a_u.z >= 0.0
+        q_tilt = vselect(up, Quat(1.0 + a_u.z, a_u.y, -a_u.x, 0.0),
+                         Quat(a_u.y, 1.0 - a_u.z, 0.0, a_u.x)).normalized(1e-12)  # x by 180°, then tilt
         r_m, _ = rnorm(mag, 1e-6)
         m_unit = Vec3(*(assume(c * r_m, -1.0, 1.0) for c in mag))
         m_t = Vec3(*(assume(c, -1.0, 1.0) for c in q_tilt.rotate(m_unit)))
         rh0, _ = rnorm((m_t.x, m_t.y), 1e-9)
-        hq = Quat(fmax(1.0 + assume(m_t.y * rh0, -1.0, 1.0), 1e-3), 0.0, 0.0,
-                  assume(m_t.x * rh0, -1.0, 1.0)).normalized(1e-12)
+        cos_h = assume(m_t.y * rh0, -1.0, 1.0)
+        sin_h = assume(m_t.x * rh0, -1.0, 1.0)
+        ahead = cos_h >= 0.0
+        hq = vselect(ahead, Quat(1.0 + cos_h, 0.0, 0.0, sin_h),
+                     Quat(sin_h, 0.0, 0.0, 1.0 - cos_h)).normalized(1e-12)
         q_init = vselect(use_mag, hq * q_tilt, q_tilt)
 
         q = vselect(do_init, q_init, Quat(*x.q))

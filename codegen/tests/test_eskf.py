@@ -198,3 +198,4 @@ def test_tracks_simulated_motion_and_bias():
     # acc_noise: about 2.5 deg with the defaults, which cover gyroscope errors in fast motion)
     assert out["cov_att"][-1, 0] < out["cov_att"][10, 0]
     assert math.degrees(math.sqrt(out["cov_att"][-1, 0])) < 3.0
+
