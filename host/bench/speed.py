@@ -70,6 +70,13 @@ def _best(fn, repeat: int) -> float:
     return best
 
 
+def fusion_inputs(trial):
+    """Fusion's units: gyroscope deg/s, accelerometer g, magnetometer as recorded (float32)."""
+    return (np.ascontiguousarray(np.degrees(trial.gyr), dtype=np.float32),
+            np.ascontiguousarray(trial.acc / 9.80665, dtype=np.float32),
+            np.ascontiguousarray(trial.mag, dtype=np.float32))
+
+
 def fusion_runner():
     """The x-io Fusion C (imufusion sdist) in a batch loop, built with our host flags."""
     from pathlib import Path
@@ -156,8 +163,7 @@ def instructions_per_sample(name: str, inputs: dict, prm: dict, trial) -> dict[s
                                   .replace("%%", "%"))
         (t / "fusion_batch.c").write_text(_FUSION_WRAPPER)
         rec.tofile(t / "in.bin")
-        np.concatenate([np.degrees(trial.gyr).ravel(), (trial.acc / 9.80665).ravel(),
-                        trial.mag.ravel()]).astype(np.float32).tofile(t / "fusion.bin")
+        np.concatenate([v.ravel() for v in fusion_inputs(trial)]).tofile(t / "fusion.bin")
         flags = [f for f in HOST_CFLAGS if not f.startswith("-W")]
         cmd = (["gcc", *flags, "-I", str(GENERATED_DIR), "-I", str(fusion[0].parent), "-o",
                 str(t / "count"), str(t / "main.c"), str(GENERATED_DIR / f"{P}.c"),
@@ -214,9 +220,7 @@ def run(args) -> int:
     # competitors, same trial, same run
     try:
         ffi, lib = fusion_runner()
-        g = np.ascontiguousarray(np.degrees(trial.gyr), dtype=np.float32)
-        a = np.ascontiguousarray(trial.acc / 9.80665, dtype=np.float32)
-        mg = np.ascontiguousarray(trial.mag, dtype=np.float32)
+        g, a, mg = fusion_inputs(trial)
         q = np.zeros((n, 4), np.float32)
         fp = lambda arr, w=False: ffi.cast("float *", ffi.from_buffer(arr, require_writable=w))  # noqa: E731
         call = lambda: lib.kf_fusion_run(fp(g), fp(a), fp(mg), fp(q, True), n,  # noqa: E731
