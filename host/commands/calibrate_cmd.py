@@ -36,6 +36,9 @@ def register(subparsers) -> None:
                         help="recording (Xsens DOT/MATRIX/MetaBase/kinefuse CSV, BROAD .mat)")
         sp.add_argument("--format", dest="fmt", help="recording format (default: detected)")
         sp.add_argument("--fs", type=float, help="sampling rate (Hz) for formats without time stamps")
+        sp.add_argument("--unit", metavar="ID",
+                        help="unit in a .kfr recording holding several: its unit (MAVLink system) "
+                             "id, or s<stream>:<id>")
         sp.add_argument("--json", action="store_true", help="print exactly one JSON object")
         sp.add_argument("--out", metavar="CALIB.json", help="write/update the unit calibration file")
         sp.add_argument("--serial", help="unit serial number (needed when --out creates a new file)")
@@ -121,10 +124,16 @@ def _ranges(args) -> dict:
 
 
 def _read(args):
-    from kinefuse.host.readers import read_recording
+    from kinefuse.host.readers import detect_format, kfr, read_recording
     opts = {}
     if args.fs:
         opts["fs"] = args.fs
+    if args.unit is not None:
+        fmt = args.fmt or detect_format(args.input)
+        if fmt != kfr.FORMAT:
+            raise KinefuseError(f"--unit {args.unit}: {args.input} is not a .kfr unit recording "
+                                f"({fmt}); --unit selects a unit in a .kfr file")
+        opts["unit"] = args.unit
     rec = read_recording(args.input, args.fmt, **opts)
     for w in rec.warnings:
         print(f"kinefuse: warning: {w}", file=sys.stderr)

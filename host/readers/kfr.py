@@ -134,8 +134,8 @@ def _select(path: str, found: list[dict], unit) -> dict:
         if len(found) == 1:
             return found[0]
         raise ReaderError(path, f"{len(found)} units in this recording: {', '.join(u['label'] for u in found)}; "
-                                f"choose one with unit=ID (kinefuse report: --thigh-unit, --shank-unit, "
-                                f"--arm-unit, --forearm-unit)")
+                                f"choose one with unit=ID (kinefuse calibrate: --unit; kinefuse report: "
+                                f"--thigh-unit, --shank-unit, --arm-unit, --forearm-unit)")
     stream, sysid = _parse_unit(path, unit)
     hits = [u for u in found if (stream is None or u["stream"] == stream)
             and (sysid is None or u["sysid"] == sysid)]

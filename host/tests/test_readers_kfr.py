@@ -366,3 +366,31 @@ def test_report_knee_of_fake_units_and_errors(run, fake_recording, tmp_path):
     code, out, err = run("report", "elbow", "--arm", csv, "--arm-unit", 1, "--forearm", p, "--forearm-unit", 2,
                          "--out", tmp_path / "r")
     assert code == 2 and len(err.strip().splitlines()) == 1 and "--arm-unit 1" in err and "not a .kfr" in err
+
+
+def test_calibrate_selects_a_unit_of_a_kfr(monkeypatch, capsys, tmp_path):
+    """`kinefuse calibrate gyro --unit ID` reads one unit of a multi-unit .kfr; without it the
+    one-line error lists the units; --unit on a non-.kfr file is refused."""
+    monkeypatch.setattr(cli, "COMMAND_MODULES", ["kinefuse.host.commands.calibrate_cmd"])
+    monkeypatch.setattr(cli, "BENCH_MODULES", [])
+
+    def run(*argv):
+        code = cli.main([str(a) for a in argv])
+        out, err = capsys.readouterr()
+        return code, out, err
+
+    P = simulate.knee_protocol(seed=3, n_cycles=1)
+    _two_unit_kfr(tmp_path / "stand.kfr", P.standing["thigh"], P.standing["shank"], seed=4)
+    biases = {}
+    for unit in (1, 2):
+        code, out, err = run("calibrate", "gyro", "--input", tmp_path / "stand.kfr", "--unit", unit, "--json")
+        assert code == 0, err
+        biases[unit] = json.loads(out)
+    assert biases[1] != biases[2]          # two sensors, two readings
+    code, out, err = run("calibrate", "gyro", "--input", tmp_path / "stand.kfr")
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "2 units in this recording" in err
+    assert "--unit" in err
+    csv = tmp_path / "one.csv"
+    kinefuse_csv.write(str(csv), read_recording(str(tmp_path / "stand.kfr"), unit=1))
+    code, out, err = run("calibrate", "gyro", "--input", csv, "--unit", 1)
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "not a .kfr" in err
