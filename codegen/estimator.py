@@ -91,6 +91,10 @@ class Estimator:
     # number systems generated; an estimator that cannot run in fixed point says so here (and
     # documents why in its docstring)
     systems: ClassVar[tuple[str, ...]] = ("f32", "q")
+    # True when an unusable accelerometer reading drops only the accelerometer (the sample is
+    # counted as rejected and the gyroscope still propagates the orientation); False when any
+    # bad gyroscope/accelerometer value holds the whole state
+    gyro_only_on_bad_acc: ClassVar[bool] = False
 
     def step(self, x, u, p):  # pragma: no cover - abstract
         raise NotImplementedError

@@ -200,6 +200,7 @@ class Eskf(Estimator):
     """
 
     name = "eskf"
+    gyro_only_on_bad_acc = True   # an unusable accelerometer: prediction only
     title = "error-state Kalman filter (attitude, gyroscope bias, linear acceleration)"
     inputs = IMU
     params = (
@@ -412,15 +413,18 @@ class Eskf(Estimator):
         lin_new = _clamp3(lin + Vec3(dx[6], dx[7], dx[8]), -LIN_MAX, LIN_MAX)
 
         blocks = pack_p(P)
+        # a rejected sample (gyroscope or time step unusable) keeps the state bit for bit: the
+        # renormalisation of an unchanged q would otherwise move it by an LSB
+        step = logical_or(run, do_init)
         nx = {
-            "q": vselect(live, q_new, Quat(*x.q)),
+            "q": vselect(step, q_new, Quat(*x.q)),
             "bias": vselect(run, bias_new, bias),
-            "lin": vselect(live, lin_new, Vec3(*x.lin)),
+            "lin": vselect(step, lin_new, Vec3(*x.lin)),
             "th_prev": vselect(run, theta, th_prev),
-            **{k: tuple(select(live, a_, b_) for a_, b_ in zip(v_, getattr(x, k)))
+            **{k: tuple(select(step, a_, b_) for a_, b_ in zip(v_, getattr(x, k)))
                for k, v_ in blocks.items()},
-            "ref_n": clamp(select(live, ref_n, x.ref_n), 0.0, N_MAX),
-            "dist_t": select(live, dist_t, x.dist_t),
+            "ref_n": clamp(select(step, ref_n, x.ref_n), 0.0, N_MAX),
+            "dist_t": select(step, dist_t, x.dist_t),
             "t_mag": select(use_mag, 0.0, fmin(x.t_mag + dt, 2.0 * DT_MAX)),
             "initialised": live,
             "rejected": inc_if(x.rejected, bad),

@@ -108,6 +108,7 @@ class Flagship(Estimator):
     """
 
     name = "flagship"
+    gyro_only_on_bad_acc = True   # a saturated accelerometer: gyroscope-only step
     title = "kinefuse flagship orientation filter"
     inputs = IMU
     params = (

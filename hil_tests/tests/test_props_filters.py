@@ -27,6 +27,7 @@ from hypothesis import strategies as st
 
 from kinefuse.codegen import estimators
 from kinefuse.hil_tests.harness import chunked, loops, motion, props
+from kinefuse.host.bench.common import quat_angle_deg
 
 FILTERS = loops.imu_filters()
 CASES = [(n, s) for n in FILTERS for s in loops.systems(n)]
@@ -43,12 +44,6 @@ KNOWN_FAILURES = {
     ("mahony", "rest_convergence", "q"): (
         "mahony q: at rest upside down (q_rest = (0, 0, 1, 0)) after starting at (-0.90, 0.44, 0, "
         "0), the inclination error stays at 17.3 deg after 900 s (f32: converges)"),
-    ("flagship", "q_out_of_range", None): (
-        "flagship: a sample with an accelerometer value 1 % beyond its declared range is counted "
-        "as rejected but the orientation still changes (IMU record contract: state kept)"),
-    ("eskf", "q_out_of_range", None): (
-        "eskf: a sample with a gyroscope value 1 % beyond its declared range is counted as "
-        "rejected but the orientation still changes by a few LSB (contract: state kept)"),
 }
 
 
@@ -302,8 +297,9 @@ def test_fixed_point_states_do_not_saturate_within_ranges(name, seed, amplitude)
 def test_fixed_point_out_of_range_input_is_rejected_safely(name, which, factor, axis, at):
     """A sample beyond the declared input range (Q conversion saturates it) is rejected:
     the counter increments, orientation outputs repeat the previous sample's bits (the state
-    is kept; an out-of-range magnetometer reading only drops the magnetometer), outputs stay
-    unit-norm."""
+    is kept; an out-of-range magnetometer reading only drops the magnetometer; a filter that
+    declares gyro_only_on_bad_acc drops only an out-of-range accelerometer and turns by the
+    gyroscope's rotation), outputs stay unit-norm."""
     rng = np.random.default_rng(at)
     ins, _ = motion.synth(motion.random_unit_quaternion(rng), props.smooth_rates(rng, 90, 100.0, 2.0), 0.01)
     fld = estimators.get(name).inputs.field(which)
@@ -313,9 +309,14 @@ def test_fixed_point_out_of_range_input_is_rejected_safely(name, which, factor, 
         ins[which][at, axis] = fld.hi * factor
     raw = loops.run_loop("host-q", name, ins)
     assert raw["rejected"][at, 0] == raw["rejected"][at - 1, 0] + 1
-    if which != "mag":
+    out = loops.decode(name, "host-q", raw)
+    gyro_only = which == "acc" and estimators.get(name).gyro_only_on_bad_acc
+    if gyro_only:   # the accelerometer is dropped, the gyroscope still turns the estimate
+        turned = float(quat_angle_deg(out["q"][at - 1][None], out["q"][at][None])[0])
+        expected = np.degrees(np.linalg.norm(ins["gyr"][at]) * ins["dt"][at])
+        assert abs(turned - expected) < 0.05 * expected + 0.01, (turned, expected)
+    elif which != "mag":
         for qn in props.quaternion_outputs(name):
             assert np.array_equal(raw[qn][at], raw[qn][at - 1]), qn
-    out = loops.decode(name, "host-q", raw)
     for qn in props.quaternion_outputs(name):
         assert unit_norm_error(out[qn]) < 1e-5
