@@ -292,9 +292,9 @@ def test_fake_units_against_export_and_their_clocks(fake_recording, tmp_path):
 
 
 # ----------------------------------------------------------------------------- the reports
-@pytest.fixture
-def run(monkeypatch, capsys):
-    monkeypatch.setattr(cli, "COMMAND_MODULES", ["kinefuse.host.commands.report_cmd"])
+def _cli(monkeypatch, capsys, module):
+    """`kinefuse` with one command module; returns run(*argv) -> (code, stdout, stderr)."""
+    monkeypatch.setattr(cli, "COMMAND_MODULES", [f"kinefuse.host.commands.{module}"])
     monkeypatch.setattr(cli, "BENCH_MODULES", [])
 
     def _run(*argv):
@@ -302,6 +302,11 @@ def run(monkeypatch, capsys):
         out, err = capsys.readouterr()
         return code, out, err
     return _run
+
+
+@pytest.fixture
+def run(monkeypatch, capsys):
+    return _cli(monkeypatch, capsys, "report_cmd")
 
 
 def _two_unit_kfr(path, thigh, shank, *, shank_late_s=0.0, seed=0):
@@ -371,14 +376,7 @@ def test_report_knee_of_fake_units_and_errors(run, fake_recording, tmp_path):
 def test_calibrate_selects_a_unit_of_a_kfr(monkeypatch, capsys, tmp_path):
     """`kinefuse calibrate gyro --unit ID` reads one unit of a multi-unit .kfr; without it the
     one-line error lists the units; --unit on a non-.kfr file is refused."""
-    monkeypatch.setattr(cli, "COMMAND_MODULES", ["kinefuse.host.commands.calibrate_cmd"])
-    monkeypatch.setattr(cli, "BENCH_MODULES", [])
-
-    def run(*argv):
-        code = cli.main([str(a) for a in argv])
-        out, err = capsys.readouterr()
-        return code, out, err
-
+    run = _cli(monkeypatch, capsys, "calibrate_cmd")
     P = simulate.knee_protocol(seed=3, n_cycles=1)
     _two_unit_kfr(tmp_path / "stand.kfr", P.standing["thigh"], P.standing["shank"], seed=4)
     biases = {}
