@@ -66,10 +66,10 @@ class Madgwick(Estimator):
         f1 = 2.0 * (qx * qz - w * qy) - a.x
         f2 = 2.0 * (w * qx + qy * qz) - a.y
         f3 = 2.0 * (0.5 - qx * qx - qy * qy) - a.z
-        grad_g = Quat(-2.0 * qy * f1 + 2.0 * qx * f2,
-                      2.0 * qz * f1 + 2.0 * w * f2 - 4.0 * qx * f3,
-                      -2.0 * w * f1 + 2.0 * qz * f2 - 4.0 * qy * f3,
-                      2.0 * qx * f1 + 2.0 * qy * f2)
+        grad_g = Quat(qx * f2 - qy * f1,
+                      qz * f1 + w * f2 - 2.0 * qx * f3,
+                      qz * f2 - w * f1 - 2.0 * qy * f3,
+                      qx * f1 + qy * f2)
 
         # magnetic objective f_b = R(q)^T (b_x, 0, b_z) - m/|m|, reference from the measurement
         # rotated into the earth frame (eq. 27-28, 45-46); computed only when a reading arrived
@@ -81,14 +81,13 @@ class Madgwick(Estimator):
             fb1 = 2.0 * bx * (0.5 - qy * qy - qz * qz) + 2.0 * bz * (qx * qz - w * qy) - m.x
             fb2 = 2.0 * bx * (qx * qy - w * qz) + 2.0 * bz * (w * qx + qy * qz) - m.y
             fb3 = 2.0 * bx * (w * qy + qx * qz) + 2.0 * bz * (0.5 - qx * qx - qy * qy) - m.z
-            grad_b = Quat(-2.0 * bz * qy * fb1 + (-2.0 * bx * qz + 2.0 * bz * qx) * fb2
-                          + 2.0 * bx * qy * fb3,
-                          2.0 * bz * qz * fb1 + (2.0 * bx * qy + 2.0 * bz * w) * fb2
-                          + (2.0 * bx * qz - 4.0 * bz * qx) * fb3,
-                          (-4.0 * bx * qy - 2.0 * bz * w) * fb1 + (2.0 * bx * qx + 2.0 * bz * qz) * fb2
-                          + (2.0 * bx * w - 4.0 * bz * qy) * fb3,
-                          (-4.0 * bx * qz + 2.0 * bz * qx) * fb1 + (-2.0 * bx * w + 2.0 * bz * qy) * fb2
-                          + 2.0 * bx * qx * fb3)
+            grad_b = Quat(bx * qy * fb3 - bz * qy * fb1 + (bz * qx - bx * qz) * fb2,
+                          bz * qz * fb1 + (bx * qy + bz * w) * fb2
+                          + (bx * qz - 2.0 * bz * qx) * fb3,
+                          (bx * qx + bz * qz) * fb2 - (2.0 * bx * qy + bz * w) * fb1
+                          + (bx * w - 2.0 * bz * qy) * fb3,
+                          (bz * qx - 2.0 * bx * qz) * fb1 + (bz * qy - bx * w) * fb2
+                          + bx * qx * fb3)
 
         use_acc = a2 >= ACC_NORM_MIN_SQ
         use_mag = logical_and(chk.use_mag, m2 >= MAG_NORM_MIN_SQ)
