@@ -85,11 +85,13 @@ def generate(c_out: Path, py_out: Path, xml: Path = XML) -> int:
         _mavgen(xml, str(tmp_c), "C")
         _mavgen(xml, str(tmp_py), "Python3")
         value = dialect_hash(_load_module(tmp_py))
-        version_h = tmp_c / DIALECT_NAME / "version.h"
-        text = version_h.read_text()
-        text = re.sub(r'#define MAVLINK_BUILD_DATE "[^"]*"',
-                      f'#define MAVLINK_BUILD_DATE "kinefuse dialect {value:08X}"', text)
-        version_h.write_text(text)
+        # every included dialect gets a version.h with today's date: stamp them all with the
+        # dialect hash so that regenerating on another day changes nothing
+        for version_h in sorted(tmp_c.glob("*/version.h")):
+            text = re.sub(r'#define MAVLINK_BUILD_DATE "[^"]*"',
+                          f'#define MAVLINK_BUILD_DATE "kinefuse dialect {value:08X}"',
+                          version_h.read_text())
+            version_h.write_text(text)
         (tmp_c / "kf_dialect.h").write_text(
             _HASH_HEADER.format(xml=xml.name, pymavlink=_pymavlink_version(), hash=value))
         if c_out.exists():
