@@ -130,16 +130,19 @@ def check_excitation(raw, targets=None, *, model: str = "rotation", max_cond: fl
     """
     raw = np.asarray(raw, dtype=float)
     d = raw.shape[1]
-    dirs = raw / np.maximum(np.linalg.norm(raw, axis=1, keepdims=True), 1e-12)
+    _require_nonzero(raw, "pose", "measured acceleration")
+    dirs = raw / np.linalg.norm(raw, axis=1, keepdims=True)
     if targets is not None:
-        tdirs = targets / np.maximum(np.linalg.norm(targets, axis=1, keepdims=True), 1e-12)
+        targets = np.asarray(targets, dtype=float)
+        _require_nonzero(targets, "target", "expected gravity vector")
+        tdirs = targets / np.linalg.norm(targets, axis=1, keepdims=True)
         sv_t = np.linalg.svd(tdirs, compute_uv=False)
-        if len(sv_t) < d or sv_t[-1] / sv_t[0] < 1.0 / max_cond ** 0.5:
+        if len(sv_t) < d or not sv_t[-1] / sv_t[0] >= 1.0 / max_cond ** 0.5:
             raise KinefuseError(
                 f"degenerate pose set: the target gravity directions span fewer than {d} "
                 f"dimensions; use poses with gravity along every sensor axis")
     sv = np.linalg.svd(dirs, compute_uv=False)
-    if len(raw) < d or sv[-1] / sv[0] < 1.0 / max_cond ** 0.5:
+    if len(raw) < d or not sv[-1] / sv[0] >= 1.0 / max_cond ** 0.5:
         plane = "a line" if d == 2 else "a plane (e.g. all poses are rotations about one axis)"
         raise KinefuseError(
             f"degenerate pose set: the measured gravity directions lie in {plane}; "
@@ -148,7 +151,7 @@ def check_excitation(raw, targets=None, *, model: str = "rotation", max_cond: fl
     if model == "affine":
         D = np.column_stack([dirs, np.ones(len(raw))])
         svd = np.linalg.svd(D, compute_uv=False)
-        if len(raw) < d + 1 or svd[-1] / svd[0] < 1.0 / max_cond:
+        if len(raw) < d + 1 or not svd[-1] / svd[0] >= 1.0 / max_cond:
             raise KinefuseError(
                 "degenerate pose set for a bias fit: the poses do not surround the origin "
                 "(each axis needs gravity in both directions, e.g. the 6 ± axis poses)")
@@ -165,6 +168,20 @@ def check_excitation(raw, targets=None, *, model: str = "rotation", max_cond: fl
                 "degenerate pose set: all gravity directions crowd into one hemisphere, so the "
                 "bias cannot be separated from the scale; add poses turned upside down")
     return cond
+
+
+def _require_nonzero(v: np.ndarray, what: str, meaning: str, rel: float = 1e-3) -> None:
+    """Every row must be a usable direction: not (near) zero.  A static pose measures gravity,
+    so an all-zero row is a placeholder or a broken reading, and it would make every
+    direction test 0/0 (NaN compares false: the check would pass)."""
+    norms = np.linalg.norm(v, axis=1)
+    big = float(norms.max()) if len(norms) else 0.0
+    small = np.flatnonzero(~(norms > max(rel * big, 1e-9)))
+    if len(small):
+        k = int(small[0])
+        many = f" ({len(small)} of {len(v)})" if len(small) > 1 else ""
+        raise KinefuseError(f"degenerate pose set: {what} {k + 1} has a (near) zero {meaning} "
+                            f"(|v| = {norms[k]:.3g}){many}; every static pose measures gravity")
 
 
 def fit_ls(raw, targets) -> AccelCalibration:
@@ -203,6 +220,9 @@ def fit_full_targets(raw, targets, *, min_poses: int = 6) -> AccelCalibration:
     P, *_ = np.linalg.lstsq(D, targets, rcond=None)
     M = P[:3].T
     c = P[3]
+    if not abs(np.linalg.det(M)) > 1e-12 * max(float(np.abs(M).max()), 1e-300) ** 3:
+        raise KinefuseError("degenerate pose set: the fitted matrix is singular (det 0); "
+                            "use poses with gravity along each axis in both directions")
     b = -np.linalg.solve(M, c)
     res = apply_affine(raw, M, b) - targets
     return AccelCalibration("full", M, b, float(np.sqrt(np.mean(res**2))), len(raw),

@@ -127,6 +127,26 @@ def test_degenerate_pose_sets_are_refused_with_a_clear_message():
         accel.fit(RAW, None, method="ls")
 
 
+@pytest.mark.parametrize("method", ["ls", "procrustes", "full"])
+def test_zero_vectors_are_refused_without_warnings(method):
+    """All-zero poses or targets: 0/0 = NaN used to pass the excitation check (ls gave R = 0,
+    procrustes the identity, full a LinAlgError).  Now one clear error and no RuntimeWarning."""
+    import warnings
+    zeros = np.zeros((6, 3))
+    targets = accel.seed002_annex_g_targets()
+    one_zero = RAW.copy()
+    one_zero[2] = 0.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        for raw, tg, what in ((zeros, zeros, "pose 1"), (zeros, targets, "pose 1"), (RAW, zeros, "target 1"),
+                              (one_zero, targets, "pose 3")):
+            with pytest.raises(KinefuseError, match=f"degenerate pose set: {what} has a \\(near\\) zero"):
+                accel.fit(raw, tg, method=method)
+        if method == "full":
+            with pytest.raises(KinefuseError, match="pose 1 has a"):
+                accel.fit(zeros, None, method="full")
+
+
 def test_seed002_orthogonality_regression_is_degenerate():
     """Annex F: y = a_z·cos θ with θ stuck at 0 regressed on [a_x, a_y, a_z, 1] returns
     [0, 0, 1, 0] for any sensor — even a badly non-orthogonal one — so it detects nothing."""

@@ -74,6 +74,20 @@ def test_accel_cli_errors_are_one_line_exit_2(run, tmp_path):
         assert err.count("\n") == 1 and err.startswith("kinefuse: error:") and msg in err, err
 
 
+@pytest.mark.parametrize("method", ["ls", "procrustes", "full"])
+def test_accel_all_zero_poses_one_line_no_warnings(run, tmp_path, method):
+    import warnings
+    (tmp_path / "z.csv").write_text("0,0,0\n" * 6)
+    (tmp_path / "t.csv").write_text(TARGETS)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")          # a RuntimeWarning would be an internal error (exit 3)
+        for poses, targets in (("z.csv", "z.csv"), ("z.csv", "t.csv")):
+            code, out, err = run("calibrate", "accel", "--poses", tmp_path / poses, "--targets",
+                                 tmp_path / targets, "--method", method, "--json")
+            assert code == 2 and out == "", (code, out, err)
+            assert err.count("\n") == 1 and "zero" in err and "Warning" not in err, err
+
+
 def _six_pose_recording(path, rng):
     """Six still poses (±x, ±y, ±z up) joined by 2 s rotations, with accelerometer errors."""
     poses = [Q.identity(), Q.elementary("X", np.pi), Q.elementary("X", np.pi / 2),
