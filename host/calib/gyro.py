@@ -43,11 +43,13 @@ class GyroCalibration:
 
 
 def bias_from_static(t, gyr, acc, config: S.StaticConfig = S.StaticConfig(),
-                     windows: list[S.StaticWindow] | None = None) -> GyroCalibration:
-    """Gyroscope bias (rad/s) from the static windows of a recording."""
+                     windows: list[S.StaticWindow] | None = None, *,
+                     source: str | None = None) -> GyroCalibration:
+    """Gyroscope bias (rad/s) from the static windows of a recording (``source``: its file,
+    named in errors)."""
     gyr = np.asarray(gyr, dtype=float)
     if windows is None:
-        windows = S.detect_static(t, acc, gyr, config)
+        windows = S.detect_static(t, acc, gyr, config, source=source)
     S.require_windows(windows, 1, "gyroscope bias", config)
     sums = np.array([gyr[w.start:w.stop].sum(axis=0) for w in windows])
     counts = np.array([w.n for w in windows], dtype=float)
@@ -88,7 +90,8 @@ def fit_scale(measured_means, known_rates, *, rest_means=None) -> GyroCalibratio
                            residual_rms=float(np.sqrt(np.mean(res**2))), method="known-rates")
 
 
-def scale_from_recording(t, gyr, acc, rate_windows, config: S.StaticConfig = S.StaticConfig()) -> GyroCalibration:
+def scale_from_recording(t, gyr, acc, rate_windows, config: S.StaticConfig = S.StaticConfig(), *,
+                         source: str | None = None) -> GyroCalibration:
     """Known-rate calibration from one recording.
 
     ``rate_windows``: rows (t_start, t_end, ωx, ωy, ωz) — time span (s) during which the true
@@ -110,7 +113,7 @@ def scale_from_recording(t, gyr, acc, rate_windows, config: S.StaticConfig = S.S
         known.append(w)
     # rest rows: static windows that do not overlap a known-rate window (a slow turntable
     # can look "still" to the detector)
-    windows = [w for w in S.detect_static(t, acc, gyr, config)
+    windows = [w for w in S.detect_static(t, acc, gyr, config, source=source)
                if not any(w.t0 <= b_ and a <= w.t1 for a, b_, *_ in rw)]
     rest = S.window_means(gyr, windows) if windows else None
     cal = fit_scale(np.array(meas), np.array(known), rest_means=rest)

@@ -61,17 +61,21 @@ def _moving(x: np.ndarray, w: int) -> tuple[np.ndarray, np.ndarray]:
     return mean, np.sqrt(var)
 
 
-def still_mask(t, acc, gyr=None, config: StaticConfig = StaticConfig()) -> np.ndarray:
-    """Boolean per-sample stillness (before the minimum-duration rule)."""
+def still_mask(t, acc, gyr=None, config: StaticConfig = StaticConfig(), *,
+               source: str | None = None) -> np.ndarray:
+    """Boolean per-sample stillness (before the minimum-duration rule); ``source`` (the
+    recording's file) prefixes the error messages."""
+    where = f"{source}: " if source else ""
     t = np.asarray(t, dtype=float)
     acc = np.asarray(acc, dtype=float)
     if acc.ndim != 2 or acc.shape[1] != 3 or len(acc) != len(t):
-        raise KinefuseError("static detection needs N×3 accelerometer data matching the time base")
+        raise KinefuseError(f"{where}static detection needs N×3 accelerometer data matching the time base")
     if len(t) < 3:
-        raise KinefuseError("recording too short for static detection")
+        raise KinefuseError(f"{where}recording too short for static detection ({len(t)} sample(s), "
+                            f"need at least 3)")
     dt = float(np.median(np.diff(t)))
     if not dt > 0:
-        raise KinefuseError("time stamps do not increase; cannot detect static windows")
+        raise KinefuseError(f"{where}time stamps do not increase; cannot detect static windows")
     w = max(3, int(round(config.window_s / dt)))
     _, sa = _moving(acc, w)
     ok = np.all(sa <= config.acc_std_max, axis=1)
@@ -83,10 +87,12 @@ def still_mask(t, acc, gyr=None, config: StaticConfig = StaticConfig()) -> np.nd
     return ok
 
 
-def detect_static(t, acc, gyr=None, config: StaticConfig = StaticConfig()) -> list[StaticWindow]:
-    """Static windows (see the module docstring), in time order."""
+def detect_static(t, acc, gyr=None, config: StaticConfig = StaticConfig(), *,
+                  source: str | None = None) -> list[StaticWindow]:
+    """Static windows (see the module docstring), in time order; ``source`` names the file
+    in error messages."""
     t = np.asarray(t, dtype=float)
-    ok = still_mask(t, acc, gyr, config)
+    ok = still_mask(t, acc, gyr, config, source=source)
     dt = float(np.median(np.diff(t)))
     trim = int(round(config.trim_s / dt))
     edges = np.flatnonzero(np.diff(np.concatenate([[0], ok.astype(np.int8), [0]])))

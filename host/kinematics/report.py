@@ -95,7 +95,7 @@ def _on_one_clock(a: Recording, b: Recording, info: dict) -> tuple[Recording, Re
 
 def _posture_mean(rec: Recording, name: str, cfg: S.StaticConfig) -> tuple[np.ndarray, dict]:
     rec.require("acc")
-    wins = S.detect_static(rec.t, rec.acc, rec.gyr, cfg)
+    wins = S.detect_static(rec.t, rec.acc, rec.gyr, cfg, source=rec.source)
     S.require_windows(wins, 1, f"{name} posture ({rec.source})", cfg)
     w = max(wins, key=lambda w: w.n)
     return rec.acc[w.start:w.stop].mean(axis=0), {"window_s": [w.t0, w.t1], "samples": w.n}
@@ -105,7 +105,7 @@ def _gyro_bias(recs: list[Recording], cfg: S.StaticConfig) -> tuple[np.ndarray, 
     for r in recs:
         if r is None or r.gyr is None or r.acc is None:
             continue
-        wins = S.detect_static(r.t, r.acc, r.gyr, cfg)
+        wins = S.detect_static(r.t, r.acc, r.gyr, cfg, source=r.source)
         if sum(w.n for w in wins) * (1.0 / r.fs) >= 1.0:
             c = gyro_cal.bias_from_static(r.t, r.gyr, r.acc, cfg, wins)
             return c.b, f"{c.n_samples} static samples of {os.path.basename(r.source)}"
@@ -125,9 +125,9 @@ def _first_still(rec: Recording, cfg: S.StaticConfig, other: Recording | None = 
     n_default = max(2, int(0.5 * rec.fs)) if np.isfinite(rec.fs) else 10
     if rec.acc is None:
         return slice(0, min(n_default, len(rec.t)))
-    ok = S.still_mask(rec.t, rec.acc, rec.gyr, cfg)
+    ok = S.still_mask(rec.t, rec.acc, rec.gyr, cfg, source=rec.source)
     if other is not None and other.acc is not None:
-        ok_o = S.still_mask(other.t, other.acc, other.gyr, cfg)
+        ok_o = S.still_mask(other.t, other.acc, other.gyr, cfg, source=other.source)
         te = rec.t - rec.t[0]
         j = np.clip(np.searchsorted(other.t - other.t[0], te), 0, len(other.t) - 1)
         ok = ok & ok_o[j]

@@ -23,7 +23,8 @@ import datetime as _dt
 import numpy as np
 
 from kinefuse.host.readers import table as T
-from kinefuse.host.readers.recording import (DEG, G, ReaderError, Recording, check_acc_units)
+from kinefuse.host.readers.recording import (DEG, G, ReaderError, Recording, check_acc_units,
+                                             check_finite_columns)
 
 FORMAT = "matrix"
 SENTINEL = 8191.0
@@ -52,6 +53,7 @@ def read(path: str, *, fs: float | None = None, acc_range_g: float | None = 8.0,
     lines = tab.lines
     names = ["acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"]
     data = tab.numeric([tab.col(c) for c in names])
+    check_finite_columns(path, data, names, lines)
     if np.any(data == SENTINEL):
         r, c = map(int, np.argwhere(data == SENTINEL)[0])
         raise ReaderError(path, f"column {names[c]!r} holds the no-data sentinel 8191", int(lines[r]))

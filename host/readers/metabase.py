@@ -35,10 +35,13 @@ import numpy as np
 
 from kinefuse.host.readers import table as T
 from kinefuse.host.readers.recording import (DEG, G, ReaderError, Recording, check_acc_units,
-                                             check_gyro_range, check_time, zero_order_hold)
+                                             check_gyro_range, check_rate, check_time, zero_order_hold)
 
 FORMAT = "metabase"
 _SENSORS = ("Accelerometer", "Gyroscope", "Magnetometer")
+#: rates of the seed-001 MetaMotionR recordings (a different rate is warned about)
+RATE_HZ = 100.0
+MAG_RATE_HZ = 20.0
 
 
 def sniff(header_cells: list[str]) -> bool:
@@ -59,9 +62,16 @@ def _check_mag_units(path: str, mag_T: np.ndarray) -> None:
 
 def _column_stream(path, tab, t_idx, val_idx, name):
     """Numeric stream whose cells may end early; returns (t, x, lines)."""
-    arr = tab.numeric([t_idx] + val_idx, allow_empty=True)
-    filled = np.isfinite(arr).all(axis=1)
-    partial = np.isfinite(arr).any(axis=1) & ~filled
+    idx = [t_idx] + val_idx
+    arr = tab.numeric(idx, allow_empty=True)
+    empty = tab.empty(idx)
+    bad = ~empty & ~np.isfinite(arr)          # 'nan', 'inf', 1e400: a value, but not a finite one
+    if bad.any():
+        k, c = map(int, np.argwhere(bad)[0])
+        raise ReaderError(path, f"{name}: column {tab.header[idx[c]]!r}: {arr[k, c]!r} is not a finite number",
+                          int(tab.lines[k]))
+    filled = ~empty.any(axis=1)
+    partial = ~empty.all(axis=1) & ~filled
     if partial.any():
         k = int(np.argmax(partial))
         raise ReaderError(path, f"{name}: incomplete row (some axes empty)", int(tab.lines[k]))
@@ -88,17 +98,27 @@ def _read_combined(path: str, tab: T.Table, gyro_range_dps):
     low = [h.strip().lower() for h in tab.header]
     if "x-axis (t)" in low:
         jm = low.index("x-axis (t)")
-        em = max(i for i in range(jm) if low[i] == "elapsed (s)")
+        em = _time_column(path, tab, low, jm)
         mag_t, mag, mln = _column_stream(path, tab, em, _axes(tab, "T", em), "magnetometer")
         fsm, w = check_time(path, mag_t, mln, what="magnetometer elapsed (s)")
         warnings += w
+        check_rate(path, fsm, (MAG_RATE_HZ,), "magnetometer", warnings)
     temp = None
     if "temperature (c)" in low:
         jt = low.index("temperature (c)")
-        et = max(i for i in range(jt) if low[i] == "elapsed (s)")
+        et = _time_column(path, tab, low, jt)
         tt, tv, _ = _column_stream(path, tab, et, [jt], "temperature")
         temp = (tt, tv[:, 0])
     return t, acc_g, gyr, ln, mag_t, mag, temp, warnings
+
+
+def _time_column(path: str, tab: T.Table, low: list[str], j: int) -> int:
+    """The ``elapsed (s)`` column that times column ``j``: the nearest one before it."""
+    before = [i for i in range(j) if low[i] == "elapsed (s)"]
+    if not before:
+        raise ReaderError(path, f"column {tab.header[j]!r} has no 'elapsed (s)' column before it "
+                                f"(each sensor's values follow their own time column)", 1 + len(tab.preamble))
+    return before[-1]
 
 
 def _siblings(path: str) -> dict:
@@ -160,11 +180,13 @@ def read(path: str, *, gyro_range_dps: float | None = None, **_) -> Recording:
         mag_t = mag = None
         if "Magnetometer" in streams:
             mag_t, mag, mln, pm = streams["Magnetometer"]
-            _, w = check_time(pm, mag_t, mln, what="magnetometer elapsed (s)")
+            fsm, w = check_time(pm, mag_t, mln, what="magnetometer elapsed (s)")
             warnings += w
+            check_rate(pm, fsm, (MAG_RATE_HZ,), "magnetometer", warnings)
         temp = None
     fs, w = check_time(path, t, ln, what="elapsed (s)")
     warnings += w
+    check_rate(path, fs, (RATE_HZ,), "accelerometer/gyroscope", warnings)
     check_acc_units(path, acc_g, "g")
     meta.update(check_gyro_range(path, gyr, gyro_range_dps, warnings))
     rec = Recording(t=t, acc=acc_g * G, gyr=gyr * DEG, fs=fs, source=path, fmt=FORMAT,

@@ -123,6 +123,25 @@ def check_finite(path: str, a: np.ndarray, name: str, lines: np.ndarray | None =
         raise ReaderError(path, f"{name} value missing or not a number", _line(lines, k))
 
 
+def check_finite_columns(path: str, a: np.ndarray, names: list[str], lines: np.ndarray | None = None) -> None:
+    """Every value finite (NaN, inf and overflowing numbers such as 1e400 refused), naming
+    the column and the line of the first bad one."""
+    bad = ~np.isfinite(a)
+    if bad.any():
+        k, c = map(int, np.argwhere(bad)[0])
+        raise ReaderError(path, f"column {names[c]!r}: {a[k, c]!r} is not a finite number", _line(lines, k))
+
+
+def check_rate(path: str, fs: float, expected: tuple[float, ...], what: str, warnings: list,
+               tol: float = 0.05) -> None:
+    """Warn (one line) when the measured rate is not within ``tol`` of one of the rates the
+    format is recorded at."""
+    if not any(abs(fs - e) <= tol * e for e in expected):
+        exp = " or ".join(f"{e:g}" for e in expected)
+        warnings.append(f"{path}: {what} rate is {fs:.4g} Hz, not the expected {exp} Hz "
+                        f"(check the export settings; times are used as recorded)")
+
+
 def check_acc_units(path: str, acc: np.ndarray, unit: str) -> None:
     """Median |acc| must be near 1 g in the declared unit (catches g vs m/s² mix-ups)."""
     med = float(np.median(np.linalg.norm(acc, axis=1)))

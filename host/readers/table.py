@@ -49,6 +49,11 @@ class Table:
             out[:, c] = col
         return out
 
+    def empty(self, idx: list[int]) -> np.ndarray:
+        """N×k: True where the cell of column ``idx[c]`` is blank (or the row ends before it)."""
+        return np.array([[not (row[j].strip() if j < len(row) else "") for j in idx]
+                         for row in self.rows], dtype=bool).reshape(len(self.rows), len(idx))
+
     def _locate_bad(self, cells, j, c, names):
         nm = names[c] if names else self.header[j]
         for cell, ln in zip(cells, self.lines):

@@ -21,9 +21,12 @@ import numpy as np
 
 from kinefuse.host.readers import table as T
 from kinefuse.host.readers.recording import (DEG, ReaderError, Recording, check_acc_units,
-                                             check_finite, check_time)
+                                             check_finite, check_rate, check_time)
 
 FORMAT = "xsens-dot"
+#: output rates of the DOT recordings (seed 002: 60 Hz; the DOT also records at 120 Hz)
+RATES_HZ = (60.0, 120.0)
+ST_MAX = 2**32                       # SampleTimeFine is a uint32 microsecond counter
 
 
 def sniff(header_cells: list[str]) -> bool:
@@ -67,6 +70,11 @@ def read(path: str, **_) -> Recording:
 
     # --- time: unwrap the 32-bit microsecond counter
     check_finite(path, st, "SampleTimeFine", lines)
+    bad = (st < 0) | (st >= ST_MAX) | (st != np.floor(st))
+    if bad.any():
+        k = int(np.argmax(bad))
+        raise ReaderError(path, f"SampleTimeFine {st[k]:.10g} is not a 32-bit microsecond count "
+                                f"(0 .. {ST_MAX - 1})", int(lines[k]))
     st = st.astype(np.int64)
     d = np.diff(st)
     wraps = d < -(2**31)
@@ -76,6 +84,7 @@ def read(path: str, **_) -> Recording:
     t = st / 1e6
     fs, w = check_time(path, t, lines, what="SampleTimeFine")
     warnings += w
+    check_rate(path, fs, RATES_HZ, "sample", warnings)
 
     if acc is not None:
         check_finite(path, acc, "Acc", lines)
