@@ -6,6 +6,7 @@ Examples::
     kinefuse calibrate accel --input six_poses.csv --out unit7.json --serial DOT-7
     kinefuse calibrate gyro --input still.csv --json
     kinefuse calibrate mag --input figure8.csv --field-norm 22.6 --json
+    kinefuse calibrate apply --calib unit7.json --port /dev/ttyUSB0   # write it to the unit
 
 POSES.csv: one row per pose, the mean raw accelerometer x,y,z (or x,y for the seed-002 2-D
 protocol); TARGETS.csv: the expected gravity vector of each pose (same shape).  Both accept an
@@ -76,6 +77,20 @@ def register(subparsers) -> None:
                    help="seed-001 gating: report the samples whose calibrated |m| leaves ±UT of the "
                         "mean (seed: 0.5); the report command applies it with --mag-gate")
     m.set_defaults(func=run_mag)
+
+    ap = sub.add_parser("apply", help="write a unit calibration file to the unit (parameters, read back)",
+                        description="Write the calibration file's accelerometer, gyroscope and magnetometer "
+                                    "maps to the unit as its KF_ACC/GYR/MAG_M<ij>, _B<i> parameters, then read "
+                                    "every value back.  Refused when the file's serial number is not the "
+                                    "unit's KF_SERIAL_NO.  Sensors absent from the file keep their values.")
+    ap.add_argument("--calib", required=True, metavar="CALIB.json", help="unit calibration file")
+    ap.add_argument("--port", metavar="CONN", help="serial port or connection string of the unit")
+    ap.add_argument("--baud", default=921600, metavar="BAUD", help="serial baud rate (default 921600)")
+    ap.add_argument("--unit", type=int, metavar="SYSID", help="system id of the unit (default: first heartbeat)")
+    ap.add_argument("--timeout", type=float, default=3.0, metavar="S", help="wait this long for the unit (default 3)")
+    ap.add_argument("--dry-run", action="store_true", help="print the parameters without connecting")
+    ap.add_argument("--json", action="store_true", help="print exactly one JSON object")
+    ap.set_defaults(func=run_apply)
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -174,7 +189,7 @@ def run_accel(args) -> int:
         rec = _read(args)
         rec.require("acc")
         cfg = _static_cfg(args)
-        wins = static.detect_static(rec.t, rec.acc, rec.gyr, cfg)
+        wins = static.detect_static(rec.t, rec.acc, rec.gyr, cfg, source=args.input)
         static.require_windows(wins, 3, "accelerometer poses", cfg)
         raw = static.window_means(rec.acc, wins)
         n_samples = int(sum(w.n for w in wins))
@@ -215,9 +230,9 @@ def run_gyro(args) -> int:
     cfg = _static_cfg(args)
     if args.rate_windows:
         rw = _numeric_csv(args.rate_windows, (5,), "rate window")
-        cal = gyro.scale_from_recording(rec.t, rec.gyr, rec.acc, rw, cfg)
+        cal = gyro.scale_from_recording(rec.t, rec.gyr, rec.acc, rw, cfg, source=args.input)
     else:
-        cal = gyro.bias_from_static(rec.t, rec.gyr, rec.acc, cfg)
+        cal = gyro.bias_from_static(rec.t, rec.gyr, rec.acc, cfg, source=args.input)
     _save(args, "gyro", cal.M, cal.b, method=cal.method, n_windows=cal.n_windows,
           n_samples=cal.n_samples, window_spread=cal.window_spread, residual_rms=cal.residual_rms)
     text = [f"gyroscope calibration ({cal.method}): {cal.n_windows} windows, {cal.n_samples} samples",
@@ -259,4 +274,34 @@ def run_mag(args) -> int:
             f"coverage: {100 * cal.coverage['cells_visited']:.0f}% of directions, "
             f"smallest spread {cal.coverage['min_eigenvalue']:.3f} (sphere 0.333)"] + gate_txt
     _emit(args, obj, text)
+    return 0
+
+
+# ----------------------------------------------------------------------------- apply
+def run_apply(args) -> int:
+    from kinefuse.host.calib import unitfile, unitparams
+    doc = unitfile.load(args.calib)
+    values = unitparams.plan(doc, args.calib)
+    if args.dry_run:
+        _emit(args, {"serial": doc["serial"], "sensors": sorted(doc["sensors"]), "params": values},
+              [f"{k} = {v!r}" for k, v in values.items()])
+        return 0
+    if not args.port:
+        raise KinefuseError("calibrate apply needs --port CONN (or --dry-run)")
+    from kinefuse.host.link.connection import open_connection, parse_baud
+    from kinefuse.host.link.session import Session
+    conn = open_connection(args.port, parse_baud(args.baud))
+    with Session(conn) as s:
+        sysid = args.unit
+        if sysid is None:
+            hb = s.wait_for(lambda f: f.msgid == 0 and f.sysid != 255, timeout=args.timeout)
+            if hb is None:
+                raise KinefuseError(f"no HEARTBEAT on {args.port} within {args.timeout:g} s "
+                                    f"(unit off, wrong port or wrong baud rate?)")
+            sysid = hb.sysid
+        res = unitparams.apply_to_unit(s, sysid, doc, args.calib,
+                                       warn=lambda m: print(f"kinefuse: warning: {m}", file=sys.stderr))
+    _emit(args, res, [f"unit {sysid}: wrote {len(res['written'])} calibration parameters "
+                      f"({', '.join(res['sensors'])}; {len(res['changed'])} changed) from {args.calib}, "
+                      f"read back and verified"])
     return 0
