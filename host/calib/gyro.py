@@ -38,7 +38,7 @@ class GyroCalibration:
     def to_json(self) -> dict:
         return {"M": self.M.tolist(), "bias": self.b.tolist(), "units": "rad/s",
                 "method": self.method, "n_windows": self.n_windows, "n_samples": self.n_samples,
-                "window_spread": self.window_spread,
+                "window_spread": None if not np.isfinite(self.window_spread) else self.window_spread,
                 "residual_rms": None if not np.isfinite(self.residual_rms) else self.residual_rms}
 
 

@@ -203,6 +203,11 @@ def run_accel(args) -> int:
                                 f"({raw.shape[1]} columns each)")
     method = args.method or ("ls" if targets is not None else "full")
     cal = accel.fit(raw, targets, method=method, g=args.g)
+    if not cal.det > 0:
+        # a unit file refuses such a map, so --json refuses it too (consistently, before output)
+        raise KinefuseError(f"accelerometer fit ({method}) has det = {cal.det:.4f} ≤ 0: a reflection, not a "
+                            f"calibration (are the targets in a left-handed frame, or one axis' sign "
+                            f"flipped?); refused")
     if args.out:
         M = np.eye(3)
         d = cal.M.shape[0]

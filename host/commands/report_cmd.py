@@ -53,6 +53,14 @@ def register(subparsers) -> None:
         sp.add_argument("--max-cycle-rmse", type=float, default=10.0, metavar="DEG",
                         help="reject cycles deviating more than this from the mean flexion curve")
         sp.add_argument("--json", action="store_true", help="print the summary as one JSON object")
+        from kinefuse.host.calib.static import StaticConfig
+        g = sp.add_argument_group("static detection (postures, gyroscope bias, heading alignment)")
+        d = StaticConfig()
+        g.add_argument("--static-window", type=float, default=d.window_s, help="moving window (s)")
+        g.add_argument("--gyr-std-max", type=float, default=d.gyr_std_max, help="rad/s")
+        g.add_argument("--gyr-abs-max", type=float, default=d.gyr_abs_max, help="rad/s")
+        g.add_argument("--acc-std-max", type=float, default=d.acc_std_max, help="m/s²")
+        g.add_argument("--min-duration", type=float, default=d.min_duration_s, help="s")
 
     k = sub.add_parser("knee", help="knee step-up report (seed 001 protocol)")
     k.add_argument("--thigh", required=True, metavar="REC", help="step-up recording, thigh sensor")
@@ -61,6 +69,9 @@ def register(subparsers) -> None:
     k.add_argument("--shank-unit", metavar="ID", help=UNIT_HELP.format(seg="shank"))
     k.add_argument("--calib-standing", nargs=2, metavar=("THIGH", "SHANK"), help="standing still recordings")
     k.add_argument("--calib-lying", nargs=2, metavar=("THIGH", "SHANK"), help="lying supine recordings")
+    k.add_argument("--calib-functional", nargs=2, metavar=("THIGH", "SHANK"),
+                   help="functional calibration instead of lying: flexion-extension recordings (squats or "
+                        "step-ups; each gyroscope's principal axis is the flexion axis), with --calib-standing")
     k.add_argument("--mag-cal", nargs=2, metavar=("THIGH", "SHANK"),
                    help="figure-eight recordings for the magnetometer calibration")
     k.add_argument("--unit-cal", nargs=2, metavar=("THIGH.json", "SHANK.json"),
@@ -84,6 +95,18 @@ def register(subparsers) -> None:
     e.add_argument("--init", choices=list(joint.ELBOW_INITS), default="zero-at-start")
     common(e)
     e.set_defaults(func=run_elbow)
+
+
+def _static_cfg(args):
+    """The same thresholds and flags as ``kinefuse calibrate``."""
+    from kinefuse.host.calib import static
+    cfg = static.StaticConfig(window_s=args.static_window, gyr_std_max=args.gyr_std_max,
+                              gyr_abs_max=args.gyr_abs_max, acc_std_max=args.acc_std_max,
+                              min_duration_s=args.min_duration)
+    for name, v in cfg.to_dict().items():
+        if not v > 0 and name != "trim_s":
+            raise KinefuseError(f"static detection: {name} must be positive, got {v:g}")
+    return cfg
 
 
 def _reader(args):
@@ -145,7 +168,8 @@ def _finish(args, kind, res, title, inputs) -> int:
     from kinefuse.host.kinematics import report
     cs = report.detect_cycles(res, kind, drop_edge=args.drop_edge_cycles,
                               max_rmse_deg=args.max_cycle_rmse)
-    summary = report.write_report(args.out, kind, res, cs, title=title, inputs=inputs)
+    summary = report.write_report(args.out, kind, res, cs, title=title, inputs=inputs,
+                                  max_cycle_rmse_deg=args.max_cycle_rmse)
     for w in summary["warnings"]:
         print(f"kinefuse: warning: {w}", file=sys.stderr)
     if args.json:
@@ -164,7 +188,12 @@ def _finish(args, kind, res, title, inputs) -> int:
 def run_knee(args) -> int:
     from kinefuse.host.calib import static, unitfile
     from kinefuse.host.kinematics import report
-    if (args.calib_standing is None) != (args.calib_lying is None):
+    if args.calib_functional is not None:
+        if args.calib_lying is not None:
+            raise KinefuseError("give --calib-lying (two-posture) or --calib-functional, not both")
+        if args.calib_standing is None:
+            raise KinefuseError("--calib-functional needs --calib-standing (the vertical axis)")
+    elif (args.calib_standing is None) != (args.calib_lying is None):
         raise KinefuseError("--calib-standing and --calib-lying go together (two-posture method)")
     read = _reader(args)
     units = None
@@ -178,12 +207,14 @@ def run_knee(args) -> int:
         res = report.knee_from_recordings(
             thigh, shank, standing=_pair(read, args.calib_standing, seg_units),
             lying=_pair(read, args.calib_lying, seg_units),
+            functional=_pair(read, args.calib_functional, seg_units),
             mag_recordings=_pair(read, args.mag_cal, seg_units), unit_calibrations=units, filter=args.filter,
             orientation=args.orientation, side=args.side, convention=args.convention,
             field_norm=args.field_norm, mag_gate=args.mag_gate,
-            static_config=static.StaticConfig(), progress=prog)
+            static_config=_static_cfg(args), progress=prog)
     inputs = {"thigh": _with_unit(args.thigh, args.thigh_unit), "shank": _with_unit(args.shank, args.shank_unit),
               "standing": " ".join(args.calib_standing or []), "lying": " ".join(args.calib_lying or []),
+              "functional": " ".join(args.calib_functional or []),
               "magnetometer calibration": " ".join(args.mag_cal or []),
               "unit calibration": " ".join(args.unit_cal or [])}
     return _finish(args, "knee", res, f"{args.side.capitalize()} knee, step-up", inputs)
@@ -202,7 +233,8 @@ def run_elbow(args) -> int:
         forearm = read(args.forearm, args.forearm_unit, "--forearm-unit")
         res = report.elbow_from_recordings(arm, forearm, filter=args.filter,
                                            orientation=args.orientation, sequence=args.sequence,
-                                           init=args.init, unit_calibrations=units, progress=prog)
+                                           init=args.init, unit_calibrations=units,
+                                           static_config=_static_cfg(args), progress=prog)
     inputs = {"arm": _with_unit(args.arm, args.arm_unit), "forearm": _with_unit(args.forearm, args.forearm_unit),
               "unit calibration": " ".join(args.unit_cal or [])}
     return _finish(args, "elbow", res, "Elbow flexion–extension", inputs)

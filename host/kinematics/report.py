@@ -9,8 +9,14 @@ and task.  Pipeline, in order — each step is reported in the summary:
    unit file; without either the magnetometer is *not* used (raw hard iron of tens of µT would
    corrupt the heading) and the filter runs in 6-D;
 3. sensor-to-segment offsets q_SB from the standing and lying recordings (two-posture method,
-   mean accelerometer over the longest static window of each); without them the sensor axes
-   are taken as the segment axes (seed 001 §8.2 "manual" mounting) — flagged in the report;
+   mean accelerometer over the longest static window of each), or functionally from a
+   flexion–extension recording and the standing one (X = each sensor's gyroscope principal
+   axis, sign towards the sensor's +x, i.e. the sensor mounted roughly along the segment;
+   Y = the standing vertical orthogonalised; :func:`.alignment.functional_flexion_axis`
+   without orientations, so no common heading is needed; both segments must rotate mainly
+   about their medio-lateral axes, as in squats or the step-up task itself); without either
+   the sensor axes are taken as the segment axes (seed 001 §8.2 "manual" mounting) —
+   flagged in the report;
 4. sensor orientations q_GS: the device's own quaternions if present (``orientation="auto"``
    or ``"device"``), else the orientation filter (a parameter; see :mod:`.orientation`) run on
    bias-corrected gyroscope data (bias from static windows);
@@ -150,18 +156,19 @@ def sensor_orientation(rec: Recording, *, filter=None, orientation: str = "auto"
     if orientation == "device":
         raise KinefuseError(f"{rec.source}: no device quaternions in this {rec.fmt} recording")
     rec.require("acc", "gyr")
-    f = O.resolve_filter(filter if filter is not None else O.default_filter_name())
+    spec = filter if filter is not None else O.default_filter_name()
+    f = O.resolve_filter(spec)
     g = rec.gyr - (np.zeros(3) if gyro_bias is None else gyro_bias)
     q = np.asarray(f(rec.t, rec.acc, g, mag), dtype=float)
     if q.shape != (len(rec.t), 4) or not np.all(np.isfinite(q)):
         raise KinefuseError(f"orientation filter {filter!r} returned {q.shape} values or non-finite "
                             f"numbers; expected {len(rec.t)}×4 quaternions")
-    name = filter if isinstance(filter, str) else getattr(filter, "__name__", "custom")
+    name = spec if isinstance(spec, str) else getattr(spec, "__name__", "custom")
     return Q.normalize(q), f"filter '{name}' ({'9-D' if mag is not None else '6-D'})"
 
 
 def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, lying=None,
-                         mag_recordings=None, mag_calibrations=None, unit_calibrations=None,
+                         functional=None, mag_recordings=None, mag_calibrations=None, unit_calibrations=None,
                          filter=None, orientation: str = "auto", side: str = "right",
                          convention: str = "grood-suntay", field_norm: float | None = None,
                          mag_gate: float | None = None,
@@ -169,7 +176,9 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
                          progress: Callable | None = None) -> JointResult:
     """Knee angles from thigh/shank recordings (see the module docstring for the pipeline).
 
-    ``standing``/``lying``/``mag_recordings``: (thigh, shank) Recording pairs or None;
+    ``standing``/``lying``/``functional``/``mag_recordings``: (thigh, shank) Recording pairs
+    or None (``functional``: flexion–extension recordings, used with ``standing`` instead of
+    ``lying``);
     ``mag_calibrations``: (thigh, shank) MagCalibration pairs (alternative to recordings);
     ``unit_calibrations``: (thigh, shank) unit-file dicts or None.
     """
@@ -218,7 +227,32 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
     # --- 3. sensor-to-segment offsets
     _note(progress, "sensor-to-segment calibration")
     q_SB = [Q.identity(), Q.identity()]
-    if stand[0] is not None and lie[0] is not None:
+    if functional is not None:
+        if stand[0] is None:
+            raise KinefuseError("functional calibration needs the standing recordings too "
+                                "(--calib-standing: the vertical Y axis)")
+        if lie[0] is not None:
+            raise KinefuseError("give either the lying (two-posture) or the functional calibration, not both")
+        func = [_apply_unit(r, u) for r, u in zip(functional, units)]
+        for k in range(2):
+            func[k].require("gyr")
+            a_st, i_st = _posture_mean(stand[k], f"{segs[k]} standing", static_config)
+            bias, _ = _gyro_bias([func[k], stand[k]], static_config)
+            try:
+                axis, planarity = alignment.principal_axis(func[k].gyr - bias, sign_ref=[1.0, 0.0, 0.0])
+                if planarity > 0.5:
+                    raise KinefuseError(
+                        f"the recorded motion is not a clean flexion–extension (second/first singular "
+                        f"value {planarity:.2f} > 0.5); repeat the functional trial")
+                q_SB[k] = alignment.functional_standing(axis, a_st)
+            except KinefuseError as exc:
+                raise KinefuseError(f"{func[k].source}: {segs[k]} functional calibration: {exc}") from None
+            info[f"{segs[k]}_mounting_deg"] = float(np.degrees(Q.angle_between(q_SB[k], Q.identity())))
+            info[f"{segs[k]}_functional"] = {"flexion_axis_sensor": axis.tolist(), "planarity": planarity,
+                                             "standing": i_st}
+        info["alignment"] = ("functional: flexion axis from each gyroscope's principal axis, "
+                             "vertical from the standing posture")
+    elif stand[0] is not None and lie[0] is not None:
         for k in range(2):
             a_st, i_st = _posture_mean(stand[k], f"{segs[k]} standing", static_config)
             a_ly, i_ly = _posture_mean(lie[k], f"{segs[k]} lying", static_config)
@@ -389,8 +423,9 @@ def _csv(path: str, header_comment: str, cols: list[str], data: np.ndarray, fmt=
 
 
 def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet, *,
-                 title: str, inputs: dict) -> dict:
-    """Write PNG, CSVs and Markdown for ``kind`` ('knee' or 'elbow'); returns the summary."""
+                 title: str, inputs: dict, max_cycle_rmse_deg: float = 10.0) -> dict:
+    """Write PNG, CSVs and Markdown for ``kind`` ('knee' or 'elbow'); returns the summary.
+    ``max_cycle_rmse_deg``: the rejection threshold ``cs`` was made with (stated in the summary)."""
     try:
         os.makedirs(out_dir, exist_ok=True)
     except OSError as exc:
@@ -415,6 +450,7 @@ def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet,
     summary = {
         "kind": kind, "title": title, "convention": res.convention, "inputs": inputs,
         "n_cycles_detected": len(cs.bounds), "n_cycles_kept": len(cs.curves),
+        "max_cycle_rmse_deg": float(max_cycle_rmse_deg),
         "rejected_cycles": [{"cycle": k + 1, "rmse_deg": e} for k, e in cs.rejected],
         "cycle_duration_s": {"mean": float(cs.durations_s.mean()),
                              "sd": float(cs.durations_s.std(ddof=1)) if len(cs.durations_s) > 1 else 0.0},
@@ -445,7 +481,7 @@ def _markdown(path: str, s: dict) -> None:
     L += [f"- {k}: `{v}`" for k, v in s["inputs"].items() if v]
     L += ["", "## Cycles", "",
           f"- detected: {s['n_cycles_detected']}, kept: {s['n_cycles_kept']}"
-          f" (cycles deviating > 10° RMS from the mean flexion curve are rejected)",
+          f" (cycles deviating > {s['max_cycle_rmse_deg']:g}° RMS from the mean flexion curve are rejected)",
           f"- duration: {s['cycle_duration_s']['mean']:.2f} ± {s['cycle_duration_s']['sd']:.2f} s"]
     for r in s["rejected_cycles"]:
         L.append(f"- rejected cycle {r['cycle']}: {r['rmse_deg']:.1f}° RMS from the mean")

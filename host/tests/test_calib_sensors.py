@@ -99,6 +99,18 @@ def test_magnetometer_figure_offset_and_spread():
     assert hard.spread_reduction < cal.spread_reduction
 
 
+def test_magnetometer_second_seed001_unit_offset():
+    """Seed 001's second unit: hard iron about [−5, −4, −22] µT (the larger z offset, nearly the
+    field magnitude itself), with soft iron and 0.2 µT noise: recovered within 0.5 µT."""
+    hard2 = np.array([-5.0, -4.0, -22.0])
+    rec = simulate.tumble(60.0, 100.0, rng=np.random.default_rng(12), hard_iron=hard2, soft_iron=SOFT)
+    cal = mag.calibrate(rec.mag, field_norm=22.6)
+    assert np.linalg.norm(cal.b - hard2) < 0.5, cal.b
+    assert cal.spread_reduction >= 10.0
+    assert np.abs(np.linalg.norm(cal.apply(rec.mag), axis=1).mean() - 22.6) < 0.05
+    assert not cal.warnings
+
+
 def test_magnetometer_poor_coverage_warns_and_planar_refuses():
     rng = np.random.default_rng(2)
     t = np.arange(0, 30, 0.01)
