@@ -31,6 +31,8 @@ COMMAND_MODULES = [
     "kinefuse.host.commands.stats_cmd",
     "kinefuse.host.commands.live_cmd",
     "kinefuse.host.commands.params_cmd",
+    "kinefuse.host.commands.signing_cmd",
+    "kinefuse.host.commands.command_cmd",
     "kinefuse.host.commands.ports_cmd",
     "kinefuse.host.commands.sil_cmd",
     "kinefuse.host.commands.flash_cmd",

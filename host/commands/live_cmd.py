@@ -9,7 +9,10 @@ KF_UNIT_STATUS), samples lost (32-bit ``sample_counter``, wrap-safe), CRC errors
 the latest KF_ORIENTATION as roll/pitch/yaw in degrees (intrinsic Z-Y'-X'' of the quaternion
 sensor -> earth; the earth frame the unit states: ENU = yaw about Up, counter-clockwise from
 East; NED = yaw about Down, clockwise from North), battery and status from KF_UNIT_STATUS.
-The view only listens (nothing is sent to the units).  Ctrl-C or --seconds ends it; with
+The view only listens unless --start is given: then it sends MAV_CMD_KF_STREAM start (and
+--rate's SET_MESSAGE_INTERVAL) to every unit first, checks the COMMAND_ACKs (a refusal is a
+one-line error, exit status 2; a unit with a signing key needs --key/--key-file) and sends stop
+at the end.  Ctrl-C or --seconds ends it; with
 stdout not a terminal it prints plain lines every --interval seconds instead of a table.
 """
 from __future__ import annotations
@@ -24,6 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.link.signing import add_key_args, key_from_args
 
 MSG_RAW, MSG_ORI, MSG_STATUS = 52500, 52501, 52504
 RATE_WINDOW_US = 2_000_000
@@ -218,7 +222,40 @@ def register(subparsers) -> None:
     p.add_argument("--baud", default=921600, metavar="BAUD", help="serial baud rate (default 921600)")
     p.add_argument("--interval", type=float, default=1.0, metavar="S",
                    help="seconds between plain lines when stdout is not a terminal (default 1)")
+    p.add_argument("--start", action="store_true", help="start the units' streaming first (and stop it at the end)")
+    p.add_argument("--rate", type=float, metavar="HZ", help="with --start: request this KF_RAW_SAMPLE rate")
+    add_key_args(p, "--start's commands")
     p.set_defaults(func=run)
+
+
+def start_streaming(sessions, rate_hz: float | None) -> list[str]:
+    """MAV_CMD_KF_STREAM start (after SET_MESSAGE_INTERVAL) to every unit of every session;
+    a refusal raises CommandError; returns warnings for connections where nobody answered."""
+    from kinefuse.host.link import command as C
+    warnings = []
+    steps = ([(C.MAV_CMD_SET_MESSAGE_INTERVAL, (float(C.MSG_KF_RAW_SAMPLE), 1e6 / rate_hz))] if rate_hz else []) \
+        + [(C.MAV_CMD_KF_STREAM, (1.0,))]
+    for s in sessions:
+        for cmd, params in steps:
+            acks = C.broadcast_command(s, cmd, *params)
+            for sysid, r in sorted(acks.items()):
+                if r != 0:
+                    raise C.CommandError(f"{s.conn.url}: {C.refusal_text(sysid, cmd, r, s.encoder.key is not None)}", r)
+            if not acks:
+                warnings.append(f"{s.conn.url}: no COMMAND_ACK for {C.command_name(cmd)} (no unit answering?)")
+                break
+    return warnings
+
+
+def stop_streaming(sessions) -> None:
+    from kinefuse.host.link import command as C
+    for s in sessions:
+        try:
+            s.send("COMMAND_LONG", target_system=0, target_component=0, command=C.MAV_CMD_KF_STREAM,
+                   confirmation=0, param1=0.0, param2=0.0, param3=0.0, param4=0.0, param5=0.0,
+                   param6=0.0, param7=0.0)
+        except OSError:
+            pass
 
 
 def run(args) -> int:
@@ -230,11 +267,17 @@ def run(args) -> int:
         raise KinefuseError("--interval must be positive")
     if args.unit is not None and not 0 < args.unit < 256:
         raise KinefuseError("--unit must be a unit (MAVLink system) id 1..255")
+    if args.rate is not None and (not args.start or not 0 < args.rate <= 10_000):
+        raise KinefuseError("--rate goes with --start and must be in (0, 10000] Hz")
     baud = parse_baud(args.baud)
+    key = key_from_args(args)
     sessions = []
     try:
         for url in args.port:
-            sessions.append(Session(open_connection(url, baud)))
+            sessions.append(Session(open_connection(url, baud), key=key))
+        if args.start:
+            for w in start_streaming(sessions, args.rate):
+                print(f"kinefuse: warning: {w}", file=sys.stderr)
     except BaseException:
         for s in sessions:
             s.close()
@@ -260,6 +303,8 @@ def run(args) -> int:
     finally:
         if prev is not None:
             signal.signal(signal.SIGTERM, prev)
+        if args.start:
+            stop_streaming(sessions)
         for s in sessions:
             s.close()
     for u in mon.units.values():

@@ -3,11 +3,16 @@
     kinefuse params --port /dev/ttyUSB0                       # list all
     kinefuse params --port /dev/ttyUSB0 --get KF_RATE_HZ
     kinefuse params --port /dev/ttyUSB0 --set KF_RATE_HZ=500 --set KF_MAG_ENABLE=0
+    kinefuse params --port /dev/ttyUSB0 --key-file unit.key --set KF_RATE_HZ=500   # signed writes
+
+A unit with a signing key (``kinefuse signing``) refuses unsigned writes: a refused write is a
+one-line error with exit status 2.  Reading needs no key.
 """
 from __future__ import annotations
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.cli_util import console, print_json
+from kinefuse.host.link.signing import add_key_args, key_from_args
 
 
 def register(subparsers) -> None:
@@ -19,6 +24,7 @@ def register(subparsers) -> None:
     p.add_argument("--get", action="append", default=[], metavar="NAME", help="read one parameter (repeatable)")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE", help="write one parameter (repeatable)")
     p.add_argument("--timeout", type=float, default=3.0, metavar="S", help="wait this long for the unit (default 3)")
+    add_key_args(p, "parameter writes")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=run)
 
@@ -42,11 +48,12 @@ def _parse_set(items: list[str]) -> list[tuple[str, float | int]]:
 
 def run(args) -> int:
     from kinefuse.host.link.connection import open_connection, parse_baud
-    from kinefuse.host.link.params import ParamClient
+    from kinefuse.host.link.params import PERMISSION_DENIED, ParamClient, ParamError
     from kinefuse.host.link.session import Session
     sets = _parse_set(args.set)
+    key = key_from_args(args)
     conn = open_connection(args.port, parse_baud(args.baud))
-    with Session(conn) as s:
+    with Session(conn, key=key) as s:
         sysid = args.unit
         if sysid is None:
             hb = s.wait_for(lambda f: f.msgid == 0 and f.sysid != 255, timeout=args.timeout)
@@ -57,7 +64,19 @@ def run(args) -> int:
         client = ParamClient(s, sysid)
         result: dict = {"unit": sysid}
         if sets:
-            result["set"] = {name: client.set(name, value) for name, value in sets}
+            result["set"] = {}
+            for name, value in sets:
+                try:
+                    result["set"][name] = client.set(name, value)
+                except ParamError as exc:
+                    if exc.code == PERMISSION_DENIED:
+                        hint = ("the key given is not the unit's" if key is not None
+                                else "the unit requires signed writes: give its key with --key/--key-file")
+                        raise ParamError(f"unit {sysid}: {exc} ({hint})", exc.code) from None
+                    if exc.code is None and key is not None:
+                        raise ParamError(f"unit {sysid}: {exc} (a unit drops frames signed with a key "
+                                         f"other than its own: is it the right key?)") from None
+                    raise ParamError(f"unit {sysid}: {exc}", exc.code) from None
         if args.get:
             result["get"] = {name: client.get(name) for name in args.get}
         if not sets and not args.get:

@@ -7,6 +7,10 @@
 The file holds every received byte with host receive times, the header describes the host,
 the dialect and the connections; units' status and parameters are added as they are learned.
 Stop with Ctrl-C (the file stays valid; a killed recorder loses at most the last second).
+Every unit's parameter list is read into the file first (--no-params: not); a unit that does
+not answer gives a warning.  --start/--rate commands are checked: a unit that refuses one (a
+unit with a signing key refuses unsigned commands: --key/--key-file) ends the recording with
+a one-line error and exit status 2.
 """
 from __future__ import annotations
 
@@ -16,6 +20,7 @@ from pathlib import Path
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.cli_util import console, fmt_bytes, print_json
+from kinefuse.host.link.signing import add_key_args, key_from_args
 
 
 def register(subparsers) -> None:
@@ -29,9 +34,13 @@ def register(subparsers) -> None:
     p.add_argument("--baud", default=921600, metavar="BAUD", help="serial baud rate (default 921600)")
     p.add_argument("--start", action="store_true", help="send MAV_CMD_KF_STREAM start (and stop at the end)")
     p.add_argument("--rate", type=float, metavar="HZ", help="request this KF_RAW_SAMPLE rate (SET_MESSAGE_INTERVAL)")
-    p.add_argument("--params", action="store_true", help="read every unit's parameters into the file first")
+    p.add_argument("--params", action="store_true", default=True,
+                   help="read every unit's parameter list into the file first (the default)")
+    p.add_argument("--no-params", dest="params", action="store_false",
+                   help="do not request the parameter lists (a unit that does not answer only gives a warning)")
     p.add_argument("--no-timesync", action="store_true", help="do not send TIMESYNC requests (1 Hz, for latency)")
     p.add_argument("--note", help="free text stored in the header")
+    add_key_args(p, "the commands sent (--start, --rate)")
     p.add_argument("--force", action="store_true", help="overwrite FILE if it exists")
     p.add_argument("--json", action="store_true", help="print the summary as one JSON object")
     p.set_defaults(func=run)
@@ -50,8 +59,9 @@ def run(args) -> int:
     if args.rate is not None and not 0 < args.rate <= 100_000:
         raise KinefuseError("--rate must be in (0, 100000] Hz")
     baud = parse_baud(args.baud)
+    key = key_from_args(args)
     rec = Recorder(out, args.port, baud=baud, note=args.note, timesync=not args.no_timesync,
-                   start_streaming=args.start, rate_hz=args.rate, fetch_params=args.params)
+                   start_streaming=args.start, rate_hz=args.rate, fetch_params=args.params, key=key)
     con = console(args.json)
     for w in rec.warnings:
         con.print(f"[yellow]warning:[/] {w}")
@@ -71,15 +81,25 @@ def run(args) -> int:
                 for w in summary["warnings"][shown_warnings:]:
                     live.console.print(f"[yellow]warning:[/] {w}")
                 shown_warnings = len(summary["warnings"])
+            failed = None
             try:
                 summary = rec.run(args.duration, on_tick=tick)
             except KeyboardInterrupt:
                 rec.close()
                 summary = rec.summary()
+            except KinefuseError as exc:      # a unit refused --start/--rate: the file says so too
+                failed = exc
+                summary = rec.summary()
             live.update(_table(summary, args.duration))
+            for w in summary["warnings"][shown_warnings:]:
+                live.console.print(f"[yellow]warning:[/] {w}")
     finally:
         if prev is not None:
             signal.signal(signal.SIGTERM, prev)
+    if failed is not None:
+        if not con.is_terminal:
+            con.print()
+        raise failed
     if args.json:
         print_json(summary)
     else:

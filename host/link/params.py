@@ -27,8 +27,18 @@ TYPE_NAMES = {1: "UINT8", 2: "INT8", 3: "UINT16", 4: "INT16", 5: "UINT32", 6: "I
 UNIT_COMPONENT = 200
 
 
+PERMISSION_DENIED = 3
+
+
 class ParamError(KinefuseError):
-    """A parameter could not be read or written (no answer, rejected, unknown name)."""
+    """A parameter could not be read or written (no answer, rejected, unknown name).
+
+    ``code``: the unit's MAV_PARAM_ERROR when it sent one (3: permission denied -- a unit with
+    a signing key refuses unsigned writes), else None."""
+
+    def __init__(self, text: str, code: int | None = None):
+        super().__init__(text)
+        self.code = code
 
 
 def encode_value(value, ptype: int) -> float:
@@ -118,7 +128,7 @@ class ParamClient:
             if f is None:
                 continue
             if f.msgid == 345:
-                raise ParamError(f"{name}: {_error_text(f.msg.error)}")
+                raise ParamError(f"{name}: {_error_text(f.msg.error)}", int(f.msg.error))
             self.types[name] = f.msg.param_type
             return decode_value(f.msg.param_value, f.msg.param_type)
         raise ParamError(f"no answer for parameter {name} from system {self.sys}")
@@ -144,7 +154,7 @@ class ParamClient:
                 continue
             if f.msgid == 345:
                 self.s.wait_for(lambda f: f.msgid == 22 and f.msg.param_id == name, timeout=self.timeout)
-                raise ParamError(f"{name} = {value!r} rejected: {_error_text(f.msg.error)}")
+                raise ParamError(f"{name} = {value!r} rejected: {_error_text(f.msg.error)}", int(f.msg.error))
             got = decode_value(f.msg.param_value, f.msg.param_type)
             if same_value(got, want):
                 return got

@@ -13,6 +13,7 @@ import time
 from dataclasses import dataclass, field
 
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.link.command import CommandError, command_name, refusal_text
 from kinefuse.host.link.connection import DEFAULT_BAUD, open_connection
 from kinefuse.host.link.dialect import DIALECT_HASH
 from kinefuse.host.link.recording import RecordingWriter, make_header
@@ -40,13 +41,20 @@ class StreamState:
     closed: bool = False
     error: str | None = None
     warned_baud: bool = False
+    warned_garbage: bool = False
     warnings: list = field(default_factory=list)
+    acks: list = field(default_factory=list)      # (sysid, command, result) of COMMAND_ACKs seen
 
 
 class Recorder:
     def __init__(self, out, ports: list[str], baud: int = DEFAULT_BAUD, note: str | None = None,
                  timesync: bool = True, start_streaming: bool = False, rate_hz: float | None = None,
-                 fetch_params: bool = False, chunk_interval: float = 0.25, fsync_interval: float = 1.0):
+                 fetch_params: bool = False, chunk_interval: float = 0.25, fsync_interval: float = 1.0,
+                 key: bytes | None = None, ack_timeout: float = 1.0):
+        """``key``: MAVLink 2 signing key for the commands sent (a unit with a key set refuses
+        unsigned ones); ``fetch_params``: ask every unit for its parameter list first (stored as
+        a META chunk; a unit that does not answer gives a warning, not a failure).  A command
+        (--rate, --start) refused by a unit ends the recording with a CommandError."""
         if not ports:
             raise KinefuseError("no port given (--port)")
         self.streams: list[StreamState] = []
@@ -54,6 +62,8 @@ class Recorder:
         self.start_streaming = start_streaming
         self.rate_hz = rate_hz
         self.fetch_params = fetch_params
+        self.key = key
+        self.ack_timeout = ack_timeout
         self.chunk_interval_ns = int(chunk_interval * 1e9)
         self.warnings: list[str] = []
         self._stop = threading.Event()
@@ -75,7 +85,8 @@ class Recorder:
             if latency is not None and latency > 2:
                 self.warnings.append(f"{conn.url}: FTDI latency timer is {latency} ms (1 ms gives smoother timing: "
                                      f"echo 1 > /sys/bus/usb-serial/devices/<tty>/latency_timer)")
-        self.header = make_header(infos, note=note)
+        extra = {"params_requested": bool(fetch_params), "commands_signed": key is not None}
+        self.header = make_header(infos, note=note, extra=extra)
         try:
             self.writer = RecordingWriter(out, self.header, fsync_interval=fsync_interval)
         except Exception:
@@ -84,7 +95,7 @@ class Recorder:
             raise
         for sid, conn in enumerate(conns):
             st = StreamState(sid, conn.url, None)  # session created below (its tap needs ``st``)
-            st.session = Session(conn, tap=self._tap(st))
+            st.session = Session(conn, tap=self._tap(st), key=key)
             self.streams.append(st)
         self.started_ns = time.monotonic_ns()
 
@@ -107,11 +118,13 @@ class Recorder:
             st.pending, st.pending_bytes = [], 0
 
     # ------------------------------------------------------------------------------ live view
-    def _look(self, st: StreamState) -> None:
+    def _look(self, st: StreamState, final: bool = False) -> None:
         for t_ns, f in st.session.drain():
             name = f.msg._msgname
             st.msg_counts[name] = st.msg_counts.get(name, 0) + 1
             unit = st.units.setdefault(f.sysid, {"sysid": f.sysid, "first_t_ns": t_ns})
+            if f.msgid == 77:
+                st.acks.append((f.sysid, int(f.msg.command), int(f.msg.result)))
             if f.msgid == MSG_STATUS:
                 m = f.msg
                 fw = firmware_version_text(m.firmware_version)
@@ -125,10 +138,15 @@ class Recorder:
                         self._warn(st, f"unit {f.sysid} on {st.url} was built with dialect hash "
                                        f"0x{m.dialect_hash:08X}, host has 0x{DIALECT_HASH():08X}: update one of them")
         c = st.session.decoder.counters
-        if not st.warned_baud and c.bytes_in >= 4096 and c.frames_ok == 0:
+        if not st.warned_baud and (c.bytes_in >= 4096 or (final and c.bytes_in)) and c.frames_ok == 0:
             st.warned_baud = True
             self._warn(st, f"{st.url}: {c.bytes_in} bytes but no valid MAVLink 2 frame: wrong baud rate "
                            f"(--baud) or not a kinefuse unit?")
+        if not st.warned_garbage and c.bytes_in >= 65536 and c.frames_ok \
+                and c.bytes_skipped > 0.5 * c.bytes_in:
+            st.warned_garbage = True
+            self._warn(st, f"{st.url}: {c.bytes_skipped} of {c.bytes_in} bytes are not MAVLink 2 frames "
+                           f"({c.crc_errors} CRC errors): a damaged link or a wrong baud rate?")
 
     def _warn(self, st: StreamState, text: str) -> None:
         st.warnings.append(text)
@@ -136,24 +154,52 @@ class Recorder:
         self.writer.meta(st.id, {"type": "warning", "text": text})
 
     # ------------------------------------------------------------------------------ control
-    def _command(self, st: StreamState, command: int, *params: float) -> None:
+    def _command(self, st: StreamState, command: int, *params: float, confirmation: int = 0) -> None:
         p = list(params) + [0.0] * (7 - len(params))
-        st.session.send("COMMAND_LONG", target_system=0, target_component=0, command=command, confirmation=0,
-                        param1=p[0], param2=p[1], param3=p[2], param4=p[3], param5=p[4], param6=p[5], param7=p[6])
+        st.session.send("COMMAND_LONG", target_system=0, target_component=0, command=command,
+                        confirmation=confirmation, param1=p[0], param2=p[1], param3=p[2], param4=p[3],
+                        param5=p[4], param6=p[5], param7=p[6])
+
+    def _keep_recording(self, st: StreamState) -> None:
+        st.session.poll(0.02)
+        self._look(st)
+        self._flush_stream(st)
+
+    def _checked_command(self, st: StreamState, command: int, *params: float, retries: int = 2) -> None:
+        """Send to every unit of the stream; a refusal raises CommandError (after noting it in
+        the file), no answer at all is a warning (a one-way link, or no unit)."""
+        n0 = len(st.acks)
+        for attempt in range(retries):
+            self._command(st, command, *params, confirmation=attempt)
+            deadline = time.monotonic() + self.ack_timeout
+            while time.monotonic() < deadline:
+                self._keep_recording(st)
+                if any(c == command for _, c, _ in st.acks[n0:]):
+                    deadline = min(deadline, time.monotonic() + 0.2)   # gather the other units' ACKs
+            got = [(u, r) for u, c, r in st.acks[n0:] if c == command]
+            if got:
+                refused = [(u, r) for u, r in got if r != 0]
+                if refused:
+                    u, r = refused[0]
+                    text = f"{st.url}: {refusal_text(u, command, r, self.key is not None)}"
+                    self.writer.meta(st.id, {"type": "error", "text": text})
+                    raise CommandError(text, r)
+                return
+        self._warn(st, f"{st.url}: no COMMAND_ACK for {command_name(command)} within "
+                       f"{retries} x {self.ack_timeout:g} s (no unit answering on this connection?)")
 
     def _setup(self) -> None:
-        for st in self.streams:
-            try:
-                if self.rate_hz:
-                    self._command(st, CMD_SET_INTERVAL, float(MSG_RAW), 1e6 / self.rate_hz)
-                if self.start_streaming:
-                    self._command(st, CMD_STREAM, 1.0)
-            except OSError as exc:
-                self._warn(st, f"{st.url}: cannot send commands: {exc}")
         if self.fetch_params:
             from kinefuse.host.link.params import ParamClient, ParamError
             for st in self.streams:
-                hb = st.session.wait_for(lambda f: f.msgid == 0, timeout=2.5)
+                # a TIMESYNC request first: its answer names the unit sooner than the 1 Hz
+                # HEARTBEAT, and a unit that starts on the first byte it receives starts
+                try:
+                    st.session.send("TIMESYNC", tc1=0, ts1=time.monotonic_ns())
+                except OSError:
+                    pass
+                hb = st.session.wait_for(lambda f: f.sysid != 255 and (f.msgid == 0 or (
+                    f.msgid == 111 and f.msg.tc1 != 0)), timeout=2.5)
                 if hb is None:
                     self._warn(st, f"{st.url}: no HEARTBEAT within 2.5 s: parameters not read")
                     continue
@@ -163,17 +209,29 @@ class Recorder:
                     self.writer.meta(st.id, {"type": "params", "sysid": hb.sysid, "params": params})
                     st.units.setdefault(hb.sysid, {"sysid": hb.sysid})["params"] = len(params)
                 except ParamError as exc:
-                    self._warn(st, f"{st.url}: parameters not read: {exc}")
+                    self._warn(st, f"{st.url}: parameters of unit {hb.sysid} not read: {exc}")
+                self._look(st)
+                self._flush_stream(st)
+        for st in self.streams:
+            try:
+                if self.rate_hz:
+                    self._checked_command(st, CMD_SET_INTERVAL, float(MSG_RAW), 1e6 / self.rate_hz)
+                if self.start_streaming:
+                    self._checked_command(st, CMD_STREAM, 1.0)
+            except OSError as exc:
+                self._warn(st, f"{st.url}: cannot send commands: {exc}")
 
     def stop(self) -> None:
         self._stop.set()
 
     def run(self, duration: float | None = None, on_tick=None, tick: float = 0.25) -> dict:
         """Record until ``duration`` s, ``stop()``, or every connection closed; returns a summary."""
-        t_end = None if duration is None else time.monotonic() + duration
         next_sync = next_tick = time.monotonic()
         try:
             self._setup()
+            # the duration counts from the end of the setup (parameters, commands): that long
+            # of streaming is recorded, whatever the setup took
+            t_end = None if duration is None else time.monotonic() + duration
             while not self._stop.is_set():
                 now = time.monotonic()
                 if t_end is not None and now >= t_end:
@@ -219,7 +277,7 @@ class Recorder:
                     pass
             try:
                 st.session.poll(0)
-                self._look(st)
+                self._look(st, final=True)
             except Exception:  # noqa: BLE001 - closing must go on
                 pass
             self._flush_stream(st, force=True)

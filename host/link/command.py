@@ -1,0 +1,102 @@
+"""COMMAND_LONG with its COMMAND_ACK checked: a refused command is an error, not silence.
+
+    result = send_command(session, 1, MAV_CMD_KF_STREAM, 1.0)     # raises CommandError if refused
+    acks = broadcast_command(session, MAV_CMD_KF_STREAM, 1.0)     # {sysid: result} of every unit
+
+MAV_RESULT_DENIED from a kinefuse unit almost always means it requires signed commands (a key
+is set on it): the error says so.
+"""
+from __future__ import annotations
+
+import time
+
+from kinefuse.host.errors import KinefuseError
+
+UNIT_COMPONENT = 200
+MSG_COMMAND_ACK = 77
+MAV_CMD_KF_STREAM, MAV_CMD_KF_HEADING_TARE, MAV_CMD_KF_FILTER_RESET = 52500, 52501, 52502
+MAV_CMD_SET_MESSAGE_INTERVAL, MAV_CMD_REQUEST_MESSAGE, MAV_CMD_REBOOT = 511, 512, 246
+MSG_KF_RAW_SAMPLE = 52500
+COMMAND_NAMES = {MAV_CMD_KF_STREAM: "MAV_CMD_KF_STREAM", MAV_CMD_KF_HEADING_TARE: "MAV_CMD_KF_HEADING_TARE",
+                 MAV_CMD_KF_FILTER_RESET: "MAV_CMD_KF_FILTER_RESET",
+                 MAV_CMD_SET_MESSAGE_INTERVAL: "MAV_CMD_SET_MESSAGE_INTERVAL",
+                 MAV_CMD_REQUEST_MESSAGE: "MAV_CMD_REQUEST_MESSAGE", MAV_CMD_REBOOT: "MAV_CMD_PREFLIGHT_REBOOT_SHUTDOWN"}
+RESULTS = {0: "ACCEPTED", 1: "TEMPORARILY_REJECTED", 2: "DENIED", 3: "UNSUPPORTED", 4: "FAILED",
+           5: "IN_PROGRESS", 6: "CANCELLED"}
+RESULT_HINTS = {
+    1: "not possible now (e.g. no orientation yet for a heading tare)",
+    2: "the unit requires signed commands: give its key with --key/--key-file",
+    3: "this unit does not support it",
+    4: "the unit could not do it",
+}
+
+
+class CommandError(KinefuseError):
+    """A command was refused by a unit or not answered."""
+
+    def __init__(self, text: str, result: int | None = None):
+        super().__init__(text)
+        self.result = result
+
+
+def command_name(cmd: int) -> str:
+    return COMMAND_NAMES.get(cmd, f"command {cmd}")
+
+
+def refusal_text(sysid: int, cmd: int, result: int, signed: bool = False) -> str:
+    """One line for a refused command; ``signed``: it was sent signed (DENIED then means an
+    out-of-range value, not a missing key)."""
+    hint = "a value out of range" if signed and result == 2 else RESULT_HINTS.get(result)
+    return (f"unit {sysid} refused {command_name(cmd)}: MAV_RESULT_{RESULTS.get(result, result)}"
+            + (f" ({hint})" if hint else ""))
+
+
+def _pack(command: int, params, target_system: int, confirmation: int) -> dict:
+    p = [float(x) for x in params] + [0.0] * (7 - len(params))
+    return dict(target_system=target_system, target_component=0 if target_system == 0 else UNIT_COMPONENT,
+                command=command, confirmation=confirmation, param1=p[0], param2=p[1], param3=p[2],
+                param4=p[3], param5=p[4], param6=p[5], param7=p[6])
+
+
+def _is_ack(command: int, sysid: int | None):
+    return lambda f: (f.msgid == MSG_COMMAND_ACK and f.msg.command == command
+                      and (sysid is None or f.sysid == sysid))
+
+
+def send_command(session, sysid: int, command: int, *params: float, timeout: float = 1.0,
+                 retries: int = 3, check: bool = True) -> int:
+    """Send to one unit and wait for its ACK (re-sent with confirmation+1 on timeout).
+
+    Returns the MAV_RESULT; with ``check`` a refusal raises CommandError; no answer at all
+    always raises CommandError (result None)."""
+    for attempt in range(retries):
+        session.send("COMMAND_LONG", **_pack(command, params, sysid, attempt))
+        f = session.wait_for(_is_ack(command, sysid), timeout=timeout)
+        if f is not None:
+            r = int(f.msg.result)
+            if check and r != 0:
+                raise CommandError(refusal_text(sysid, command, r, session.encoder.key is not None), r)
+            return r
+    raise CommandError(f"no COMMAND_ACK for {command_name(command)} from unit {sysid} "
+                       f"within {retries} x {timeout:g} s")
+
+
+def broadcast_command(session, command: int, *params: float, timeout: float = 1.0, retries: int = 2,
+                      settle: float = 0.2, on_wait=None) -> dict:
+    """Send to every unit on the connection (target 0); {sysid: MAV_RESULT} of the ACKs seen
+    (empty: nobody answered).  After the first ACK, others are gathered for ``settle`` s.
+    ``on_wait`` is called while waiting (the recorder keeps writing what arrives)."""
+    acks: dict = {}
+    for attempt in range(retries):
+        session.send("COMMAND_LONG", **_pack(command, params, 0, attempt))
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            f = session.wait_for(_is_ack(command, None), timeout=min(0.05, max(0.0, deadline - time.monotonic())))
+            if on_wait is not None:
+                on_wait()
+            if f is not None:
+                acks.setdefault(f.sysid, int(f.msg.result))
+                deadline = min(deadline, time.monotonic() + settle)
+        if acks:
+            return acks
+    return acks
