@@ -7,11 +7,17 @@ the magnetometer in any unit (uT in BROAD): only its direction and relative magn
 
 * strapdown: q_i (S -> I) integrates the bias-corrected gyroscope with the two-sample coning
   term and a fourth-order step quaternion; every sample carries its own time step;
-* inclination: the specific force is rotated into I and low-pass filtered there (second-order
-  Butterworth, DC group delay tau_acc).  Linear acceleration integrates to a velocity change, so
-  its mean in an inertial frame is small: the filtered vector is gravity.  q_a (I -> E6) is
-  corrected so that it points up.  Only q_a is corrected, so the low-pass state is never rotated
-  by the filter's own corrections;
+* inclination: the specific force is rotated into I and low-pass filtered there.  Linear
+  acceleration integrates to a velocity change, so its mean in an inertial frame is small: the
+  filtered vector is gravity.  The low-pass is the steady-state Kalman filter of (g, v) -- g the
+  gravity in I, a random walk (the drift of I), v the velocity the specific force minus g
+  integrates to, observed as zero-mean -- i.e. a second-order Butterworth low-pass of natural
+  frequency (q/r)^(1/4).  q grows with the rotation rate (gyroscope scale and misalignment
+  errors drift I in proportion to it) and r with the mean-square residual velocity
+  (translation), so the time constant is tau_acc when slow and still (VQF's low-pass), shorter
+  in fast rotation and longer under translation.  q_a (I -> E6) is corrected so that g points
+  up.  Only q_a is corrected, so the low-pass state is never rotated by the filter's own
+  corrections;
 * heading: one rotation delta about the vertical (stored as (cos, sin) of delta/2) from the
   horizontal magnetic field, so the magnetometer never touches inclination.  A scalar Kalman
   filter sets the gain: the heading variance grows with time and shrinks with each accepted
@@ -46,7 +52,7 @@ from kinefuse.codegen.ir import BOOL
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
 from kinefuse.codegen.scalar import (all_of, any_of, assume, clamp, fabs, fmax, fmin, inc_if,
                                      logical_and, logical_not, logical_or, rnorm, rsqrt, select,
-                                     when)
+                                     sqrt, when)
 
 DEG = math.pi / 180.0
 T_SAT = 1.0e4              # s; timers saturate here
@@ -55,7 +61,8 @@ P_BIAS_MAX = (5.0 * DEG) ** 2
 P_HEAD_MAX = 4.0           # rad^2; heading variance ceiling (about 115 deg)
 N_MAX = 2.0 * MAG_MAX      # magnetometer magnitude range (any unit up to the input range)
 LP_MAX = 2.0 * ACC_MAX     # m/s^2; range of the filtered specific force
-LPV_MAX = 8.0 * ACC_MAX    # m/s^3; range of its rate (natural frequency <= 2.9 rad/s)
+V_MAX = 20.0               # m/s; range of the residual velocity of the inclination filter
+RATIO_MAX = 1.0e4          # bound of each term of the adaptation ratio (time constant x/ 10)
 STEP_MAX = 2.0             # rad; largest rotation accepted in one step (per axis)
 UNIT = (-1.0, 1.0)
 
@@ -115,10 +122,12 @@ class Flagship(Estimator):
         Param("mode", 1.0, "", 0.0, 1.0, "0: 6D (magnetometer ignored), 1: 9D; q6 and q9 are "
               "output in both"),
         Param("tau_acc", 3.0, "s", 0.5, 20.0,
-              "inclination time constant: DC group delay of the accelerometer low-pass filter "
-              "in the almost-inertial frame"),
-        Param("tau_mag", 9.0, "s", 1.0, 60.0,
-              "steady-state time constant of the heading correction"),
+              "inclination time constant when rotating slowly without translation: DC group "
+              "delay of the accelerometer low-pass filter in the almost-inertial frame"),
+        Param("tau_mag", 20.0, "s", 1.0, 60.0,
+              "steady-state time constant of the heading correction (longer than VQF's 9 s: "
+              "the bias estimation keeps the gyroscope's heading drift small, and a long "
+              "average rejects the field's spatial inhomogeneity indoors)"),
         Param("heading_rw", 0.2 * DEG, "rad/s^0.5", 0.01 * DEG, 5.0 * DEG,
               "heading random walk between magnetometer corrections (gyroscope bias residual)"),
         Param("tau_bias", 40.0, "s", 5.0, 1000.0,
@@ -167,6 +176,15 @@ class Flagship(Estimator):
               "gyroscope full scale: a sample at or beyond it is saturated and rejected"),
         Param("acc_range", ACC_MAX, "m/s^2", 1.0, ACC_MAX,
               "accelerometer full scale: a saturated sample is not used (gyroscope only)"),
+        Param("incl_rate_ref", 0.9, "rad/s", 0.05, 30.0,
+              "rotation rate at which the inclination time constant has shortened by 2^(1/4): "
+              "gyroscope scale and misalignment errors drift the inertial frame in proportion "
+              "to the rate, so faster rotation needs a faster inclination correction"),
+        Param("incl_vel_ref", 0.2, "m/s", 0.01, 10.0,
+              "residual velocity (RMS per axis) at which the inclination time constant has "
+              "lengthened by 2^(1/4): under translation the accelerometer is trusted less"),
+        Param("tau_vel", 2.0, "s", 0.1, 60.0,
+              "time constant of the mean-square residual velocity"),
     )
     state = (
         Var("q_i", 4, -1.0, 1.0, "", "strapdown orientation, sensor -> almost-inertial frame",
@@ -179,10 +197,14 @@ class Flagship(Estimator):
             init=(0.0, 0.0, 0.0)),
         Var("p_bias", 1, 0.0, P_BIAS_MAX, "(rad/s)^2", "bias variance (each axis)",
             init=(0.5 * DEG) ** 2),
-        Var("lp_x", 3, -LP_MAX, LP_MAX, "m/s^2", "low-pass filtered specific force, frame I",
+        Var("lp_x", 3, -LP_MAX, LP_MAX, "m/s^2", "low-pass filtered specific force (gravity), "
+            "frame I", init=(0.0, 0.0, 0.0)),
+        Var("vel", 3, -V_MAX, V_MAX, "m/s", "residual velocity of the inclination filter, frame I",
             init=(0.0, 0.0, 0.0)),
-        Var("lp_v", 3, -LPV_MAX, LPV_MAX, "m/s^3", "rate of the low-pass output, frame I",
+        Var("vel_mean", 3, -V_MAX, V_MAX, "m/s", "low-pass of the residual velocity, frame I",
             init=(0.0, 0.0, 0.0)),
+        Var("vel_ms", 1, 0.0, 4.0 * V_MAX * V_MAX, "(m/s)^2",
+            "variance of the residual velocity per axis (low-pass)", init=0.0),
         Var("th_prev", 3, -STEP_MAX, STEP_MAX, "rad",
             "previous rotation increment (coning term)", init=(0.0, 0.0, 0.0)),
         Var("rest_gyr", 3, -GYR_MAX, GYR_MAX, "rad/s", "rest detection: gyroscope low-pass",
@@ -191,6 +213,10 @@ class Flagship(Estimator):
             init=(0.0, 0.0, 0.0)),
         Var("rest_t", 1, 0.0, T_SAT, "s", "time the rest conditions have held", init=0.0),
         Var("p_head", 1, 0.0, P_HEAD_MAX, "rad^2", "heading variance", init=P_HEAD_MAX),
+        Var("dt_lp", 1, 0.0, DT_MAX, "s", "usual sample period (low-pass of the time steps)",
+            init=0.0),
+        Var("t_skip", 1, 0.0, DT_MAX, "s", "time of the rejected readings since the last "
+            "regular step (bridged by the next one)", init=0.0),
         Var("t_mag", 1, 0.0, 2.0 * DT_MAX, "s", "time since the previous magnetometer sample",
             init=0.0),
         Var("cur_n", 1, 0.0, N_MAX, "", "current field through the noise low-pass: magnitude (input unit)", init=0.0),
@@ -248,14 +274,24 @@ class Flagship(Estimator):
         run = logical_and(gyr_ok, x.initialised)        # a regular step
         acc_ok = logical_and(acc_ok, live)
         use_mag = all_of(gyr_ok, live, nine, u.mag_valid, mag_fine)
-        dt = select(run, clamp(u.dt, 0.0, DT_MAX), 0.0)  # a rejected sample advances nothing
+        # a rejected reading leaves a gap: its time (one usual period when its own time step
+        # is unusable; none for a duplicate, dt = 0) is bridged by the next regular step
+        dt_lp = select(do_init, 0.0, x.dt_lp)
+        dt_in_ok = logical_and(u.dt > 0.0, u.dt <= DT_MAX)
+        dup = logical_and(u.dt >= 0.0, u.dt <= 0.0)
+        skipped = select(dt_in_ok, clamp(u.dt, 0.0, DT_MAX), select(dup, 0.0, dt_lp))
+        dt = select(run, fmin(clamp(u.dt, 0.0, DT_MAX) + x.t_skip, DT_MAX), 0.0)
+        t_skip_new = select(run, 0.0, select(x.initialised, fmin(x.t_skip + skipped, DT_MAX),
+                                             0.0))
 
         one = Quat(1.0, 0.0, 0.0, 0.0)
         zero3 = Vec3(0.0, 0.0, 0.0)
         q_i = vselect(do_init, one, Quat(*x.q_i))
         q_a = vselect(do_init, one, Quat(*x.q_a))
         lp_x = vselect(do_init, acc, Vec3(*x.lp_x))
-        lp_v = vselect(do_init, zero3, Vec3(*x.lp_v))
+        vel = vselect(do_init, zero3, Vec3(*x.vel))
+        vel_mean = vselect(do_init, zero3, Vec3(*x.vel_mean))
+        vel_ms = select(do_init, 0.0, x.vel_ms)
         th_prev = vselect(do_init, zero3, Vec3(*x.th_prev))
         hw = select(do_init, 1.0, x.hd[0])
         hz = select(do_init, 0.0, x.hd[1])
@@ -278,20 +314,41 @@ class Flagship(Estimator):
         # its norm is 1 - a^4/192, so one Newton step renormalises the product
         s0 = 0.5 - th2 * (1.0 / 48.0)
         dq = Quat(1.0 - 0.125 * th2, s0 * phi.x, s0 * phi.y, s0 * phi.z)
-        q_i_new = _renorm(q_i * dq)
+        q_i_new = vselect(run, _renorm(q_i * dq), q_i)   # a rejected step keeps it bit for bit
 
         # -- inclination ----------------------------------------------------------------------
-        # second-order Butterworth low-pass of the specific force in frame I (natural frequency
-        # wn = sqrt(2)/tau_acc, damping 1/sqrt(2), DC group delay tau_acc), semi-implicit step:
-        # v += dt (wn^2 (a - x) - sqrt(2) wn v);  x += dt v
-        inv_tau = 1.0 / p.tau_acc
-        kv = fmin(2.0 * dt * inv_tau, 1.0)               # dt sqrt(2) wn
-        kx = kv * inv_tau                                # dt wn^2
+        # gravity in frame I (the module doc): predict v += (a - g) dt, then the steady-state
+        # gains of the zero-velocity pseudo-measurement, g += dt wn^2 v, v -= dt sqrt(2) wn v,
+        # with wn^4 = wn0^4 (1 + |w|^2 / rate_ref^2) / (1 + <v^2> / vel_ref^2) and
+        # wn0 = sqrt(2) / tau_acc (damping 1/sqrt(2), DC group delay sqrt(2)/wn)
         a_i = Vec3(*(assume(c, -ACC_MAX * 1.7321, ACC_MAX * 1.7321)
                      for c in q_i_new.rotate(acc)))
-        lp_v_new = _clamp3(Vec3(*(vi + kx * (ai - xi) - kv * vi
-                                  for vi, ai, xi in zip(lp_v, a_i, lp_x))), -LPV_MAX, LPV_MAX)
-        lp_x_new = _clamp3(lp_x + lp_v_new * dt, -LP_MAX, LP_MAX)
+        vel_p = _clamp3(vel + (a_i - lp_x) * dt, -V_MAX, V_MAX)
+        # the variance, not the mean square: a tilt error makes v grow steadily in one
+        # direction (a mean), translation makes it oscillate; only the latter must lengthen
+        # the time constant, or a large error would slow its own correction
+        k_vel = fmin(dt / p.tau_vel, 1.0)
+        vel_mean_new = _clamp3(vel_mean + (vel_p - vel_mean) * k_vel, -V_MAX, V_MAX)
+        vel_dev = vel_p - vel_mean_new
+        vel_ms_new = clamp(vel_ms + (vel_dev.norm_sq() * (1.0 / 3.0) - vel_ms) * k_vel,
+                           0.0, 4.0 * V_MAX * V_MAX)
+        rate_term = fmin(w.norm_sq() * (1.0 / (p.incl_rate_ref * p.incl_rate_ref)), RATIO_MAX)
+        # at rest the velocity is zero whatever v says: no lengthening (the last step's rest
+        # state; a large initial error would otherwise look like translation)
+        was_rest = x.rest_t >= p.rest_time
+        # a velocity that persists in one direction is not translation (nobody keeps moving
+        # one way in a room): it is the tilt error itself, so its mean power is discounted
+        vel_osc = fmax(vel_ms_new - vel_mean_new.norm_sq() * (1.0 / 3.0), 0.0)
+        vel_term = select(was_rest, 0.0,
+                          fmin(vel_osc * (1.0 / (p.incl_vel_ref * p.incl_vel_ref)), RATIO_MAX))
+        ratio = assume((1.0 + rate_term) / (1.0 + vel_term), 1.0 / (1.0 + RATIO_MAX),
+                       1.0 + RATIO_MAX)
+        s4 = assume(sqrt(sqrt(ratio)), 0.09, 10.01)      # wn / wn0, in [0.1, 10]
+        inv_tau = 1.0 / p.tau_acc
+        kv = fmin(2.0 * dt * inv_tau * s4, 1.0)          # dt sqrt(2) wn
+        kx = fmin(kv * s4 * inv_tau, 1.0)                # dt wn^2
+        lp_x_new = _clamp3(lp_x + vel_p * kx, -LP_MAX, LP_MAX)
+        lp_v_new = _clamp3(vel_p * (1.0 - kv), -V_MAX, V_MAX)
         g_e = Vec3(*(assume(c, -LP_MAX * 1.7321, LP_MAX * 1.7321)
                      for c in q_a.rotate(lp_x_new)))
         gh, _ = g_e.normalized(1e-6)
@@ -307,7 +364,9 @@ class Flagship(Estimator):
             q_a_first = Quat(fmax(1.0 + gh.z, 1e-9), gy_f, -gh.x, 0.0).normalized(1e-12)
         q_a_new = vselect(acc_ok, vselect(do_init, q_a_first, q_a_run), q_a)
         lp_x_new = vselect(acc_ok, lp_x_new, lp_x)
-        lp_v_new = vselect(acc_ok, lp_v_new, lp_v)
+        lp_v_new = vselect(acc_ok, lp_v_new, vel)
+        vel_ms_new = select(acc_ok, vel_ms_new, vel_ms)
+        vel_mean_new = vselect(acc_ok, vel_mean_new, vel_mean)
         q6 = q_a_new * q_i_new                           # product of unit quaternions
         # this step's correction (rad, E6 frame; sin of the angle): input of the bias estimation
         # (a bias of at most bias_max turns the frame by bias_max dt per step: a larger
@@ -333,8 +392,15 @@ class Flagship(Estimator):
         # -- magnetometer --------------------------------------------------------------------
         # the heading variance grows every step (random walk: gyroscope bias residual); the
         # rest runs only with a reading (a conditional region: cost only, never results)
+        # a step longer than twice the usual period means samples were lost: the rotation in
+        # the missing time was integrated from one reading, so its variance (|w| t_missing)^2
+        # is added (the heading then re-converges quickly after a gap)
+        t_missing = assume(fmax(dt - 2.0 * dt_lp, 0.0), 0.0, DT_MAX)
+        gap_var = fmin(w.norm_sq(), 4.0) * (t_missing * t_missing)
+        dt_lp_new = select(run, dt_lp + (dt - dt_lp) * fmin(dt, 1.0), dt_lp)
         p_head_pred = select(do_init, P_HEAD_MAX,
-                             fmin(x.p_head + p.heading_rw * p.heading_rw * dt, P_HEAD_MAX))
+                             fmin(x.p_head + p.heading_rw * p.heading_rw * dt + gap_var,
+                                  P_HEAD_MAX))
         t_mag = fmin(x.t_mag + dt, 2.0 * DT_MAX)
         cur_old = _fld(x.cur_n, x.cur_d)
         cand_old = _fld(x.cand_n, x.cand_d)
@@ -477,12 +543,16 @@ class Flagship(Estimator):
             "bias": bias_new,
             "p_bias": p_bias,
             "lp_x": lp_x_new,
-            "lp_v": lp_v_new,
+            "vel": lp_v_new,
+            "vel_mean": vel_mean_new,
+            "vel_ms": vel_ms_new,
             "th_prev": theta,
             "rest_gyr": vselect(gyr_ok, rest_gyr, Vec3(*x.rest_gyr)),
             "rest_acc": rest_acc,
             "rest_t": rest_t,
             "p_head": select(live, p_head, x.p_head),
+            "dt_lp": dt_lp_new,
+            "t_skip": t_skip_new,
             "t_mag": on_mag(0.0, t_mag),
             **_unfld("cur", von_mag(cur, cur_old)),
             **_unfld("ref", von_mag(ref_new, ref)),
