@@ -9,8 +9,16 @@ The image is the application built for ``--target`` (``m4f``: float32 filters, `
 fixed-point filters; ``--filters`` builds a subset) unless ``--image`` names one.  pyOCD gets
 the HEX (addresses included, or the ELF), dfu-util the raw BIN at ``--address`` (default: the
 image's load address).  pyOCD needs the MCU's target type (``--mcu``; ``pyocd list --targets``):
-the generic Cortex-M target cannot program flash.  Note: the images built here are linked for
-the QEMU MPS2 board port (flash at 0x0); a real board needs its own port.
+the generic Cortex-M target cannot program flash.
+
+Only the QEMU MPS2 board ports exist (firmware/boards/mps2: flash and RAM at 0x00000000, CMSDK
+UART, SysTick): the images built here run on ``mps2-an386`` (m4f) and ``mps2-an385`` (m0), not
+on a real MCU, so ``kinefuse flash`` refuses to program a build into one (there is no board
+port to match any ``--mcu``).  An image made elsewhere (``--image``, e.g. from your own board
+port) is checked against the MCU's memory map before anything runs: every byte in its flash,
+the initial stack pointer in its RAM, the reset vector a Thumb address in its flash (memory
+maps: a built-in table of common parts -- ``MCU_MEMORY`` -- else pyOCD's built-in targets; an
+MCU known to neither is refused).  dfu-util needs ``--mcu`` for that check too.
 """
 from __future__ import annotations
 
@@ -40,6 +48,28 @@ KNOWN_ERRORS = (
 )
 
 
+# Memory of common parts (reference manuals / datasheets): flash regions, RAM regions, (start, size).
+# pyOCD 0.46 has no built-in target for e.g. stm32f411re (it comes from a CMSIS pack), so the
+# check does not depend on packs being installed.
+_K = 1024
+MCU_MEMORY = {
+    "stm32f401xe": {"flash": [(0x08000000, 512 * _K)], "ram": [(0x20000000, 96 * _K)]},
+    "stm32f411xe": {"flash": [(0x08000000, 512 * _K)], "ram": [(0x20000000, 128 * _K)]},
+    "stm32f411xc": {"flash": [(0x08000000, 256 * _K)], "ram": [(0x20000000, 128 * _K)]},
+    "stm32f405xg": {"flash": [(0x08000000, 1024 * _K)], "ram": [(0x20000000, 128 * _K), (0x10000000, 64 * _K)]},
+    "stm32f407xg": {"flash": [(0x08000000, 1024 * _K)], "ram": [(0x20000000, 128 * _K), (0x10000000, 64 * _K)]},
+    "stm32f051x8": {"flash": [(0x08000000, 64 * _K)], "ram": [(0x20000000, 8 * _K)]},
+    "nrf52832": {"flash": [(0x00000000, 512 * _K)], "ram": [(0x20000000, 64 * _K)]},
+    "nrf52840": {"flash": [(0x00000000, 1024 * _K)], "ram": [(0x20000000, 256 * _K)]},
+}
+MCU_ALIASES = {"stm32f401re": "stm32f401xe", "stm32f411re": "stm32f411xe", "stm32f411ce": "stm32f411xe",
+               "stm32f411cc": "stm32f411xc", "stm32f405rg": "stm32f405xg", "stm32f407vg": "stm32f407xg",
+               "stm32f051r8": "stm32f051x8"}
+# QEMU board of each build target; real MCUs with a board port for it (none yet)
+TARGET_BOARDS = {"m4f": "mps2-an386", "m0": "mps2-an385"}
+BOARD_PORTS: dict[str, tuple[str, ...]] = {"mps2-an386": (), "mps2-an385": ()}
+
+
 def register(subparsers) -> None:
     p = subparsers.add_parser("flash", help="program a unit (pyOCD or dfu-util)",
                               description=__doc__.split("\n\n")[0].split(": ", 1)[-1])
@@ -48,7 +78,8 @@ def register(subparsers) -> None:
     p.add_argument("--image", metavar="FILE", help="flash this .hex/.elf/.bin instead of building")
     p.add_argument("--filters", metavar="A,B", help="build only these wired filters (smaller image)")
     p.add_argument("--tool", choices=TOOLS, default="pyocd", help="flashing tool (default pyocd)")
-    p.add_argument("--mcu", metavar="TYPE", help="pyOCD target type of the unit's MCU (e.g. stm32f411re)")
+    p.add_argument("--mcu", metavar="TYPE", help="the unit's MCU: pyOCD target type (e.g. stm32f411re); "
+                                                 "the image is checked against its memory map")
     p.add_argument("--probe", metavar="UID", help="pyOCD: debug probe unique ID (default: the only one)")
     p.add_argument("--erase", choices=("auto", "chip", "sector"), help="pyOCD erase mode")
     p.add_argument("--address", metavar="ADDR", help="dfu-util (or a .bin with pyOCD): load address, "
@@ -98,6 +129,135 @@ def hex_load_address(path: Path) -> int:
     return low
 
 
+def hex_segments(path: Path) -> list[tuple[int, bytes]]:
+    """(address, bytes) of the data records of an Intel HEX file, merged where contiguous."""
+    base, segs = 0, []
+    for n, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+        line = line.strip()
+        if not line:
+            continue
+        if not line.startswith(":") or len(line) < 11:
+            raise KinefuseError(f"{path}: line {n} is not an Intel HEX record")
+        try:
+            raw = bytes.fromhex(line[1:])
+        except ValueError:
+            raise KinefuseError(f"{path}: line {n} is not hexadecimal") from None
+        count, addr, kind = raw[0], (raw[1] << 8) | raw[2], raw[3]
+        if len(raw) != count + 5 or sum(raw) & 0xFF:
+            raise KinefuseError(f"{path}: line {n} has a bad length or checksum (damaged image?)")
+        data = raw[4:4 + count]
+        if kind == 0 and count:
+            a = base + addr
+            if segs and segs[-1][0] + len(segs[-1][1]) == a:
+                segs[-1] = (segs[-1][0], segs[-1][1] + data)
+            else:
+                segs.append((a, data))
+        elif kind == 2:
+            base = int.from_bytes(data[:2], "big") << 4
+        elif kind == 4:
+            base = int.from_bytes(data[:2], "big") << 16
+    return segs
+
+
+def elf_segments(path: Path) -> list[tuple[int, bytes]]:
+    """(load address, bytes) of the PT_LOAD segments of a 32-bit little-endian ELF."""
+    import struct
+    b = path.read_bytes()
+    if len(b) < 52 or b[:4] != b"\x7fELF" or b[4] != 1 or b[5] != 1:
+        raise KinefuseError(f"{path} is not a 32-bit little-endian ELF file")
+    phoff, = struct.unpack_from("<I", b, 28)
+    phentsize, phnum = struct.unpack_from("<HH", b, 42)
+    segs = []
+    for k in range(phnum):
+        o = phoff + k * phentsize
+        if o + 32 > len(b):
+            raise KinefuseError(f"{path}: truncated ELF program header")
+        ptype, offset, _vaddr, paddr, filesz = struct.unpack_from("<IIIII", b, o)
+        if ptype == 1 and filesz:
+            segs.append((paddr, b[offset:offset + filesz]))
+    return sorted(segs)
+
+
+def image_segments(img: dict, address: int | None) -> list[tuple[int, bytes]]:
+    if img.get("hex") is not None:
+        return hex_segments(Path(img["hex"]))
+    if img.get("elf") is not None:
+        return elf_segments(Path(img["elf"]))
+    if img.get("bin") is not None and address is not None:
+        return [(address, Path(img["bin"]).read_bytes())]
+    return []
+
+
+def mcu_memory(mcu: str) -> dict | None:
+    """{'flash': [(start, size)], 'ram': [...], 'source': ...} of an MCU, or None if unknown."""
+    name = mcu.lower()
+    key = MCU_ALIASES.get(name, name)
+    if key in MCU_MEMORY:
+        return {**MCU_MEMORY[key], "source": "kinefuse's table"}
+    try:
+        from pyocd.target.builtin import BUILTIN_TARGETS
+    except Exception:  # noqa: BLE001 - pyOCD missing or broken: no second source
+        return None
+    cls = BUILTIN_TARGETS.get(name)
+    if cls is None:
+        return None
+    mm = getattr(cls, "MEMORY_MAP", None)
+    regions = list(mm) if mm is not None else []
+    flash = [(r.start, r.length) for r in regions if r.is_flash]
+    ram = [(r.start, r.length) for r in regions if r.is_ram]
+    if not flash:
+        return {"flash": [], "ram": ram, "source": "pyOCD (no flash in its memory map)"}
+    return {"flash": flash, "ram": ram, "source": "pyOCD"}
+
+
+def _inside(regions, start: int, end: int) -> bool:
+    return any(a <= start and end <= a + n for a, n in regions)
+
+
+def check_image_for_mcu(args, img: dict) -> None:
+    """Refuse (one line) an image that cannot run on --mcu; see the module docstring."""
+    board = img.get("board")
+    mcu = args.mcu
+    if board is not None:
+        ports = BOARD_PORTS.get(board, ())
+        if mcu is None or mcu.lower() not in ports:
+            raise KinefuseError(
+                f"the {img['target']} build is linked for QEMU's {board} board (flash and RAM at 0x00000000, "
+                f"CMSDK UART): no board port exists for {mcu or 'a real MCU'}, so it would not run there; "
+                f"only the QEMU MPS2 ports exist (firmware/boards/mps2); flash your own port's image with --image")
+        return
+    if mcu is None:
+        raise KinefuseError(f"name the unit's MCU with --mcu (e.g. stm32f411re): the image is checked against "
+                            f"its memory map before {args.tool} runs")
+    mem = mcu_memory(mcu)
+    if mem is None:
+        raise KinefuseError(f"the memory map of --mcu {mcu} is unknown (neither kinefuse's table nor pyOCD's "
+                            f"built-in targets): cannot check that the image fits it")
+    if not mem["flash"]:
+        raise KinefuseError(f"--mcu {mcu} has no flash in its memory map ({mem['source']}): name the unit's "
+                            f"actual MCU type, e.g. stm32f411re")
+    segs = image_segments(img, _parse_address(args.address))
+    if not segs:
+        raise KinefuseError(f"image {img['source']} holds no data")
+    fl = ", ".join(f"0x{a:08X}-0x{a + n - 1:08X}" for a, n in mem["flash"])
+    for a, data in segs:
+        if not _inside(mem["flash"], a, a + len(data)):
+            raise KinefuseError(f"image {img['source']} has data at 0x{a:08X}-0x{a + len(data) - 1:08X}, outside "
+                                f"{mcu}'s flash ({fl}): it is linked for another board")
+    first = segs[0]
+    if len(first[1]) < 8:
+        raise KinefuseError(f"image {img['source']}: no vector table at its start (0x{first[0]:08X})")
+    sp = int.from_bytes(first[1][0:4], "little")
+    reset = int.from_bytes(first[1][4:8], "little")
+    ram = ", ".join(f"0x{a:08X}-0x{a + n - 1:08X}" for a, n in mem["ram"])
+    if mem["ram"] and not any(a < sp <= a + n for a, n in mem["ram"]):
+        raise KinefuseError(f"image {img['source']}: initial stack pointer 0x{sp:08X} is outside {mcu}'s RAM ({ram}): "
+                            f"it is linked for another board")
+    if not reset & 1 or not _inside(mem["flash"], reset & ~1, (reset & ~1) + 2):
+        raise KinefuseError(f"image {img['source']}: reset vector 0x{reset:08X} is not a Thumb address in {mcu}'s "
+                            f"flash ({fl}): it is linked for another board")
+
+
 def _image(args) -> dict:
     """The files to flash: {'hex', 'bin', 'elf', 'address', 'source'} (missing ones None)."""
     if args.image:
@@ -118,6 +278,7 @@ def _image(args) -> dict:
     subset = [f.strip() for f in args.filters.split(",") if f.strip()] if args.filters else None
     res = build_target(args.target, with_git=True, filters=subset)
     return {"hex": res.hex, "bin": res.bin, "elf": res.elf, "address": hex_load_address(res.hex),
+            "board": TARGET_BOARDS[args.target], "target": args.target,
             "source": f"build {args.target}" + (f" ({','.join(subset)})" if subset else ""),
             "flash_bytes": res.size.flash, "ram_bytes": res.size.ram}
 
@@ -184,9 +345,12 @@ def run(args) -> int:
         raise KinefuseError("--timeout must be positive")
     if args.tool == "pyocd" and not args.mcu:
         command_line(args, {"hex": None, "bin": None, "elf": None})   # the one-line error, before building
+    if not args.image:      # before building: no board port matches any real MCU
+        check_image_for_mcu(args, {"board": TARGET_BOARDS[args.target], "target": args.target})
     with con.status("building the application..." if not args.image else "checking the image..."):
         img = _image(args)
     cmd = command_line(args, img)
+    check_image_for_mcu(args, img)
     result = {"tool": args.tool, "command": cmd, "image": img["source"], "file": cmd[-1]}
     for k in ("flash_bytes", "ram_bytes"):
         if k in img:
