@@ -47,9 +47,13 @@ class StreamState:
 
 
 class Recorder:
+    CHUNK_INTERVAL_S = 0.25
+    FSYNC_INTERVAL_S = 0.5   # + a 0.25 s chunk + a loop turn: a power cut loses < 1 s
+
     def __init__(self, out, ports: list[str], baud: int = DEFAULT_BAUD, note: str | None = None,
                  timesync: bool = True, start_streaming: bool = False, rate_hz: float | None = None,
-                 fetch_params: bool = False, chunk_interval: float = 0.25, fsync_interval: float = 1.0,
+                 fetch_params: bool = False, chunk_interval: float = CHUNK_INTERVAL_S,
+                 fsync_interval: float = FSYNC_INTERVAL_S,
                  key: bytes | None = None, ack_timeout: float = 1.0):
         """``key``: MAVLink 2 signing key for the commands sent (a unit with a key set refuses
         unsigned ones); ``fetch_params``: ask every unit for its parameter list first (stored as

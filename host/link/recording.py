@@ -14,7 +14,9 @@ Layout (all little-endian)::
 - TX payload = bytes the host sent; META payload = JSON (unit status, parameters, requested
   rates, events such as a disconnect).
 - The recorder flushes every chunk to the OS (a killed process loses at most the chunk being
-  gathered, <= 0.25 s) and fsyncs at least every second (a power cut loses <= 1 s).
+  gathered, <= 0.25 s plus one loop turn) and fsyncs every 0.5 s (a power cut loses what came
+  after the last fsync and what was still being gathered: < 1 s); both checked by the state
+  machine in host/tests/test_recorder_kill.py.
 - A truncated file decodes up to the truncation: a partial last chunk still yields the bytes
   it holds (MAVLink CRCs protect the frames); a damaged chunk is skipped by searching the next
   chunk marker whose CRC matches.
