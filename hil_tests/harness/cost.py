@@ -37,22 +37,45 @@ CLOCK_HZ = 64_000_000
 K_MIX = 50                 # updates traced for the instruction mix
 
 
+def _kind(name: str) -> str:
+    """'imu' or 'angle' (the seed-004 joint-angle smoothers); others cannot be costed here."""
+    kind = estimators.get(name).inputs.name
+    if kind not in ("imu", "angle"):
+        raise KinefuseError(f"cost measurement needs an IMU filter or a joint-angle smoother; "
+                            f"{name} takes {kind}")
+    return kind
+
+
+def _table_names(name: str, system: str) -> tuple[str, str]:
+    """(file stem, array name) of the input table: IMU motion or a joint-angle series."""
+    if _kind(name) == "imu":
+        return f"kf_cost_{system}", f"kf_cost_in_{system}"
+    return f"kf_cost_angle_{system}", f"kf_cost_angle_in_{system}"
+
+
 def _table_sources(name: str, system: str) -> tuple[Path, Path, str, int]:
-    """Input records of the competitors' motion as a C table; returns (c, dir, ctype, n)."""
+    """Input records of the competitors' motion as a C table; returns (c, dir, ctype, n).
+    The joint-angle smoothers get the same number of samples of the seed-004 servo protocol
+    (20° sine at 5 rad/s, 35 Hz, 1.8° noise, 23 ms latency: ``kinefuse bench seed004``)."""
     from kinefuse.hil_tests.qemu.batch import write_generated
     from kinefuse.hil_tests.qemu.competitors import N_SAMPLES, RATE_HZ, motion
 
     est = estimators.get(name)
-    if est.inputs.name != "imu":
-        raise KinefuseError(f"cost measurement needs an IMU filter; {name} takes {est.inputs.name}")
-    m = motion()
+    kind = _kind(name)
     n = N_SAMPLES
-    inputs = {"gyr": m["gyr"].astype(float), "acc": m["acc"].astype(float),
-              "mag": m["mag"].astype(float), "mag_valid": np.ones(n, bool),
-              "dt": np.full(n, 1.0 / RATE_HZ)}
+    if kind == "imu":
+        m = motion()
+        inputs = {"gyr": m["gyr"].astype(float), "acc": m["acc"].astype(float),
+                  "mag": m["mag"].astype(float), "mag_valid": np.ones(n, bool),
+                  "dt": np.full(n, 1.0 / RATE_HZ)}
+    else:
+        from kinefuse.host.bench.seed004 import long_series
+        inputs = long_series(n)
     info = ModelInfo(name, system)
     enc = info.encode(inputs, est.resolve_params(None))
-    ctype = f"kf_imu_input_{system}"
+    ctype = f"kf_{kind}_input_{system}"
+    tag, arr = _table_names(name, system)
+    guard = tag.upper() + "_H"
 
     def lit(v, typ):
         if typ == "bool":
@@ -71,13 +94,13 @@ def _table_sources(name: str, system: str) -> tuple[Path, Path, str, int]:
             else:
                 parts.append("{" + ", ".join(lit(x, typ) for x in vals) + "}")
         rows.append("{" + ", ".join(parts) + "}")
-    header = (f'#ifndef KF_COST_{system.upper()}_H\n#define KF_COST_{system.upper()}_H\n'
-              f'#include "kf_imu_{system}.h"\n#define KF_COST_N {n}u\n#define KF_WARMUP 400u\n'
-              f"extern const {ctype} kf_cost_in_{system}[KF_COST_N];\n#endif\n")
-    body = (f'#include "kf_cost_{system}.h"\nconst {ctype} kf_cost_in_{system}[KF_COST_N] = {{\n'
+    header = (f'#ifndef {guard}\n#define {guard}\n'
+              f'#include "kf_{kind}_{system}.h"\n#define KF_COST_N {n}u\n#define KF_WARMUP 400u\n'
+              f"extern const {ctype} {arr}[KF_COST_N];\n#endif\n")
+    body = (f'#include "{tag}.h"\nconst {ctype} {arr}[KF_COST_N] = {{\n'
             + ",\n".join(rows) + "\n};\n")
-    hpath = write_generated(header, f"kf_cost_{system}.h")
-    cpath = write_generated(body, f"kf_cost_{system}.c")
+    hpath = write_generated(header, f"{tag}.h")
+    cpath = write_generated(body, f"{tag}.c")
     sibling = cpath.parent / hpath.name
     if not sibling.is_file() or sibling.read_text() != header:
         tmp = sibling.with_name(f".{hpath.name}.{os.getpid()}")
@@ -87,15 +110,16 @@ def _table_sources(name: str, system: str) -> tuple[Path, Path, str, int]:
 
 
 def _snippets(name: str, system: str):
-    P = f"{name}_{system}"
-    prelude = (f'#include "{P}.h"\n#include "kf_cost_{system}.h"\n'
+    P = f"{name.replace('-', '_')}_{system}"
+    tag, arr = _table_names(name, system)
+    prelude = (f'#include "{P}.h"\n#include "{tag}.h"\n'
                f"static {P}_state kf_st;\nstatic {P}_params kf_p;\nstatic {P}_output kf_out;\n"
                "static volatile uintptr_t kf_keep_sink;\n")
     setup = (f"{P}_default_params(&kf_p);\nif ({P}_init(&kf_st, &kf_p) != 0) {{ return 5; }}\n"
-             f"for (uint32_t w = 0u; w < KF_WARMUP; ++w) {{ {P}_update(&kf_st, &kf_cost_in_{system}[w], &kf_out); }}")
-    call = f"{P}_update(&kf_st, &kf_cost_in_{system}[KF_WARMUP + kf_i], &kf_out);"
+             f"for (uint32_t w = 0u; w < KF_WARMUP; ++w) {{ {P}_update(&kf_st, &{arr}[w], &kf_out); }}")
+    call = f"{P}_update(&kf_st, &{arr}[KF_WARMUP + kf_i], &kf_out);"
     finish = "kf_keep_sink = (uintptr_t)&kf_out;"
-    baseline = f"kf_keep_sink = (uintptr_t)&kf_cost_in_{system}[0];"
+    baseline = f"kf_keep_sink = (uintptr_t)&{arr}[0];"
     return prelude, setup, call, finish, baseline
 
 
@@ -104,7 +128,7 @@ def measure_filter(name: str, system: str, target: str, *, k: int = 1000,
     """Instructions per update (exact), cycle estimate, flash/RAM added (bytes)."""
     from kinefuse.hil_tests.qemu.cost import measure_call_cost
 
-    src = GENERATED_DIR / f"{name}_{system}.c"
+    src = GENERATED_DIR / f"{name.replace('-', '_')}_{system}.c"
     if not src.is_file():
         raise KinefuseError(f"{src} does not exist")
     table_c, table_dir, _ctype, n = _table_sources(name, system)

@@ -1,5 +1,11 @@
 """`kinefuse bench bitexact`: generated C against its Python model, bit for bit, on every output
-of every sample; and the deviation of both number systems from the float64 reference."""
+of every sample; and the deviation of both number systems from the float64 reference.
+
+IMU filters run on BROAD trials (deviation: orientation angle between the number system's
+quaternion and the reference's).  The seed-004 joint-angle smoothers run on the seed-004 servo
+protocol as ``kinefuse bench seed004`` simulates it (20 series of 1,050 samples; or ``--data``
+an angle series: seed-004 Arduino CSV or a t,angle_deg CSV); their deviation is that of the
+filtered angle output."""
 from __future__ import annotations
 
 import json
@@ -25,14 +31,23 @@ def register_bench(sub):
 
 def compare_trial(name: str, path: str, params: dict, with_ref: bool = True) -> dict:
     """Per-trial result for f32 and q: samples, differing samples, angle deviations, first diff."""
+    from kinefuse.host.broad import load_trial
+    return compare_inputs(name, runner.imu_inputs(load_trial(path)), params, with_ref)
+
+
+def _angle_dev_deg(ref, got):
+    return np.degrees(np.abs(np.asarray(got, float).reshape(-1) - np.asarray(ref, float).reshape(-1)))
+
+
+def compare_inputs(name: str, inputs: dict, params: dict, with_ref: bool = True) -> dict:
+    """:func:`compare_trial` on an input record (IMU: quaternion deviation; angle smoothers:
+    deviation of the filtered angle)."""
     from kinefuse.codegen import runner as cg
     from kinefuse.codegen import estimators
-    from kinefuse.host.broad import load_trial
-    trial = load_trial(path)
     est = estimators.get(name)
     prm = est.resolve_params(params)
-    inputs = runner.imu_inputs(trial)
-    ref = cg.run(name, "ref", inputs, prm)["q"] if with_ref else None
+    key, deviation = ("q", quat_angle_deg) if est.inputs.name == "imu" else ("angle", _angle_dev_deg)
+    ref = cg.run(name, "ref", inputs, prm)[key] if with_ref else None
     n = len(inputs["dt"])
     out = {}
     for system in ("f32", "q"):
@@ -42,8 +57,8 @@ def compare_trial(name: str, path: str, params: dict, with_ref: bool = True) -> 
         for k in c:
             differ |= np.any(cg.bits(c[k]).reshape(n, -1) != cg.bits(m[k]).reshape(n, -1), axis=1)
         r = cg.runner(name, f"{system}-model")
-        q = r.decode_values("output", "q", "real", c["q"])
-        dev = quat_angle_deg(ref, q) if with_ref else np.full(1, np.nan)
+        q = r.decode_values("output", key, "real", c[key])
+        dev = deviation(ref, q) if with_ref else np.full(1, np.nan)
         first = None
         if differ.any():
             i = int(np.argmax(differ))
@@ -61,17 +76,35 @@ def run(args) -> int:
     if name not in runner.filter_names():
         from kinefuse.host.errors import KinefuseError
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
-    files, where = trial_files(args.data)
     params = runner.parse_params(args.param)
-    eprint(f"bench bitexact: {name} on {len(files)} trial(s) from {where}")
+    from kinefuse.host import angle_series
+    angle = angle_series.is_angle_filter(name)
+    if not angle and name not in runner.imu_filter_names():
+        from kinefuse.host.errors import KinefuseError
+        raise KinefuseError(f"bench bitexact runs IMU filters and the joint-angle smoothers; "
+                            f"{name!r} takes {_input_kind(name)}")
     results = {}
-    with progress(not args.json) as bar, ProcessPoolExecutor(max(1, args.jobs)) as pool:
-        task = bar.add_task(f"{name}: C vs model vs reference", total=len(files))
-        futs = {pool.submit(compare_trial, name, str(f), params, not args.no_ref): f for f in files}
-        for fut in futs:
-            results[futs[fut].stem] = fut.result()
-            bar.advance(task)
+    if angle:
+        series, where = _angle_data(args.data)
+        eprint(f"bench bitexact: {name} on {len(series)} angle series from {where}")
+        with progress(not args.json) as bar:
+            task = bar.add_task(f"{name}: C vs model vs reference", total=len(series))
+            for label, inp in series:
+                results[label] = compare_inputs(name, inp, params, not args.no_ref)
+                bar.advance(task)
+    else:
+        files, where = trial_files(args.data)
+        eprint(f"bench bitexact: {name} on {len(files)} trial(s) from {where}")
+        with progress(not args.json) as bar, ProcessPoolExecutor(max(1, args.jobs)) as pool:
+            task = bar.add_task(f"{name}: C vs model vs reference", total=len(files))
+            futs = {pool.submit(compare_trial, name, str(f), params, not args.no_ref): f for f in files}
+            for fut in futs:
+                results[futs[fut].stem] = fut.result()
+                bar.advance(task)
     summary = {"filter": name}
+    if angle:
+        summary["data"] = where
+        summary["deviation_of"] = "filtered angle output, degrees"
     for system in ("f32", "q"):
         n = sum(r[system]["samples"] for r in results.values())
         summary[system] = {
@@ -86,7 +119,7 @@ def run(args) -> int:
         print(json.dumps(summary))
     else:
         print(f"{name}: generated C vs its Python model (bits of every output), and vs the float64 "
-              f"reference (orientation angle)")
+              f"reference ({'filtered angle' if angle else 'orientation angle'})")
         print(f"{'system':<8}{'samples':>10}{'differing':>11}{'RMS dev [deg]':>15}{'max dev [deg]':>15}")
         for system in ("f32", "q"):
             s = summary[system]
@@ -100,3 +133,18 @@ def run(args) -> int:
                 eprint(f"MISMATCH {system} in {tname} at sample {fd['sample']}: inputs {fd['inputs']}; "
                        f"C {fd['c']}; model {fd['model']}")
     return 1 if any(summary[s]["differing"] for s in ("f32", "q")) else 0
+
+
+def _input_kind(name: str) -> str:
+    from kinefuse.codegen import estimators
+    return f"{estimators.ESTIMATORS[name].inputs.name} inputs"
+
+
+def _angle_data(data: str | None) -> tuple[list[tuple[str, dict]], str]:
+    """[(label, angle input record)], description: the seed-004 servo protocol, or a file."""
+    from kinefuse.host import angle_series
+    if data is None:
+        from kinefuse.host.bench.seed004 import PROTOCOL_TEXT, protocol_series
+        return [(f"servo{i:02d}", inp) for i, inp in enumerate(protocol_series())], PROTOCOL_TEXT
+    s = angle_series.load(data)
+    return [(str(data), angle_series.inputs(s))], f"{data} ({s.fmt})"

@@ -1,5 +1,6 @@
-"""``kinefuse bench cost``: per-update cost of every IMU filter on Cortex-M4F and M0, with
-x-io Fusion and VQF measured in the same run with the same flags and the same motion.
+"""``kinefuse bench cost``: per-update cost of every IMU filter and of the seed-004 joint-angle
+smoothers on Cortex-M4F and M0, with x-io Fusion and VQF measured in the same run with the same
+flags and the same motion (the smoothers get as many samples of the seed-004 servo protocol).
 
 Per filter, number format and target: executed instructions per update (exact, QEMU counting
 plugin, averaged over K updates after 400 warm-up updates of the same synthetic motion the
@@ -31,7 +32,8 @@ def register_bench(bench_subparsers) -> None:
     p = bench_subparsers.add_parser(
         "cost", help="instructions per update (exact, QEMU), cycle estimate, flash/RAM on "
                      "Cortex-M4F and M0 for every filter, with Fusion and VQF")
-    p.add_argument("--filters", default=None, help="comma-separated filters (default: every IMU filter)")
+    p.add_argument("--filters", default=None,
+                   help="comma-separated filters (default: every IMU filter and joint-angle smoother)")
     p.add_argument("--formats", default="f32,q", help="comma-separated number formats (default f32,q)")
     p.add_argument("--targets", default="m4f,m0", help="comma-separated targets (default m4f,m0)")
     p.add_argument("--k", type=int, default=1000, help="counted updates (default 1000, at most 1000)")
@@ -59,16 +61,16 @@ def measure_ours(name: str, system: str, target: str, k: int, mix: bool) -> dict
     table_c, table_dir, _ct, _n = hc._table_sources(name, system)
     prelude, setup, call, finish, baseline = hc._snippets(name, system)
     from kinefuse.codegen.generate import GENERATED_DIR
-    total, origin = qc.size_delta_by_origin([GENERATED_DIR / f"{name}_{system}.c", table_c], setup, call,
+    stem = f"{name.replace('-', '_')}_{system}"
+    total, origin = qc.size_delta_by_origin([GENERATED_DIR / f"{stem}.c", table_c], setup, call,
                                             target, opt="-Os", prelude=prelude, finish=finish,
                                             baseline_code=baseline,
                                             include_dirs=[GENERATED_DIR, table_dir])
-    stem = f"{name}_{system}"
     row["own_flash_bytes"] = sum(v.flash for kk, v in origin.items() if kk == stem)
     row["own_ram_bytes"] = sum(v.ram for kk, v in origin.items() if kk in (stem, "kf_cost_driver"))
     row["size_by_origin"] = {kk: v.as_dict() for kk, v in origin.items()}
     if mix:
-        prog = qc.cost_program([GENERATED_DIR / f"{name}_{system}.c", table_c], setup, call, target,
+        prog = qc.cost_program([GENERATED_DIR / f"{stem}.c", table_c], setup, call, target,
                                prelude=prelude, finish=finish, baseline_code=baseline,
                                include_dirs=[GENERATED_DIR, table_dir])
         row.update(hc.cycle_estimate(prog, target))
@@ -121,10 +123,13 @@ def run(args: argparse.Namespace) -> int:
     reason = qemu_unavailable()
     if reason:
         raise KinefuseError(reason)
-    filters = [f.strip() for f in args.filters.split(",")] if args.filters else loops.imu_filters()
-    unknown = [f for f in filters if f not in loops.imu_filters()]
+    from kinefuse.host.angle_series import angle_filter_names
+    costable = loops.imu_filters() + angle_filter_names()
+    filters = [f.strip() for f in args.filters.split(",")] if args.filters else costable
+    unknown = [f for f in filters if f not in costable]
     if unknown:
-        raise KinefuseError(f"unknown IMU filter {unknown[0]!r} (available: {', '.join(loops.imu_filters())})")
+        raise KinefuseError(f"unknown IMU filter or joint-angle smoother {unknown[0]!r} "
+                            f"(available: {', '.join(costable)})")
     formats = [f.strip() for f in args.formats.split(",") if f.strip()]
     targets = [t.strip() for t in args.targets.split(",") if t.strip()]
     if any(f not in ("f32", "q") for f in formats) or any(t not in ("m4f", "m0") for t in targets):

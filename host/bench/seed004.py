@@ -75,6 +75,40 @@ def make_take(omega: float, take: int, args):
     return t, truth, z
 
 
+def protocol_args(**over):
+    """This bench's defaults as an argument namespace (for :func:`make_take` elsewhere)."""
+    import types
+    d = {"amplitude_deg": 20.0, "rate_hz": 35.0, "duration_s": 30.0, "takes": 5,
+         "noise_deg": 1.8, "latency_ms": 23.0, "seed": 0}
+    d.update(over)
+    return types.SimpleNamespace(**d)
+
+
+PROTOCOL_OMEGAS = (1.0, 5.0, 10.0, 15.0)
+PROTOCOL_TEXT = ("seed-004 servo protocol as `kinefuse bench seed004` simulates it: 20° sine at "
+                 "ω = 1, 5, 10, 15 rad/s, 35 Hz, 30 s per take, 5 takes each, measured = truth "
+                 "delayed 23 ms + 1.8° white noise, seed 0")
+
+
+def protocol_series() -> list[dict]:
+    """The bench's default protocol (every ω, every take) as 'angle' input records (20 series
+    of 1,050 samples): the data of ``bench bitexact`` for the angle smoothers."""
+    args = protocol_args()
+    out = []
+    for w in PROTOCOL_OMEGAS:
+        for k in range(args.takes):
+            _, _, z = make_take(w, k, args)
+            out.append(inputs_of(z, args.rate_hz))
+    return out
+
+
+def long_series(n: int = 52_500, omega: float = 5.0) -> dict:
+    """One long take of the protocol (default 1,500 s at 35 Hz): ``bench speed``'s data."""
+    args = protocol_args(duration_s=n / 35.0)
+    _, _, z = make_take(omega, 0, args)
+    return inputs_of(z, args.rate_hz)
+
+
 def inputs_of(z, rate_hz):
     n = len(z)
     return {"angle": z, "angle_valid": np.ones(n, bool), "dt": np.full(n, 1.0 / rate_hz)}

@@ -116,17 +116,24 @@ int main(int argc, char **argv)
 {
     long len_in, len_f;
     const %(P)s_input *in = slurp(argv[1], &len_in);
-    const float *fus = slurp(argv[2], &len_f);
     const int n = (int)(len_in / (long)sizeof(*in));
     %(P)s_output *out = malloc(sizeof(*out) * (size_t)n);
-    float *q = malloc(sizeof(float) * 4u * (size_t)n);
     %(P)s_params p;
     %(P)s_state s;
     %(P)s_default_params(&p);
     %(P)s_init(&s, &p);
     %(P)s_run(&s, in, out, (uint32_t)n);
-    kf_fusion_run(fus, fus + 3 * n, fus + 6 * n, q, n, (float)atof(argv[3]));
-    printf("%%d %%g %%g\n", n, (double)out[n - 1].q[0], (double)q[4 * n - 4]);
+#ifdef KF_WITH_FUSION
+    {
+        const float *fus = slurp(argv[2], &len_f);
+        float *q = malloc(sizeof(float) * 4u * (size_t)n);
+        kf_fusion_run(fus, fus + 3 * n, fus + 6 * n, q, n, (float)atof(argv[3]));
+        printf("%%d %%g %%g\n", n, (double)out[n - 1].%(OUT)s, (double)q[4 * n - 4]);
+    }
+#else
+    (void)len_f;
+    printf("%%d %%g\n", n, (double)out[n - 1].%(OUT)s);
+#endif
     return 0;
 }
 """
@@ -134,7 +141,8 @@ int main(int argc, char **argv)
 
 def instructions_per_sample(name: str, inputs: dict, prm: dict, trial) -> dict[str, float]:
     """Instructions per sample of our f32 batch path and of Fusion's, same flags, same trial,
-    counted by valgrind (callgrind, only inside the two batch functions)."""
+    counted by valgrind (callgrind, only inside the two batch functions).  ``trial`` None (the
+    angle smoothers): ours only."""
     import re
     import shutil
     import subprocess
@@ -149,25 +157,31 @@ def instructions_per_sample(name: str, inputs: dict, prm: dict, trial) -> dict[s
     P = f"{name.replace('-', '_')}_f32"
     header = (GENERATED_DIR / f"{P}.h").read_text()
     in_type = re.search(r"const (kf_\w+_input_f32) \*in", header).group(1)
+    fusion_too = trial is not None
+    first_out = "q[0]" if fusion_too else "angle"
     r = cg.runner(name, "f32")
     enc = r.encode(inputs, prm)
     rec = np.zeros(enc.n, dtype=r._dtype(in_type, "input"))
     for fname, size, _typ in r.fields["input"]:
         rec[fname] = enc.inputs[fname].reshape(enc.n) if size == 1 else enc.inputs[fname]
-    root = fetch_sdist("imufusion")
-    fusion = _fusion_sources(root)
+    fusion = _fusion_sources(fetch_sdist("imufusion")) if fusion_too else []
     with tempfile.TemporaryDirectory(prefix="kf-count-") as tmp:
         t = Path(tmp)
         (t / "main.c").write_text(_COUNT_MAIN.replace("%(header)s", f"{P}.h")
                                   .replace("%(P)s_input", in_type).replace("%(P)s", P)
-                                  .replace("%%", "%"))
-        (t / "fusion_batch.c").write_text(_FUSION_WRAPPER)
+                                  .replace("%(OUT)s", first_out).replace("%%", "%"))
         rec.tofile(t / "in.bin")
-        np.concatenate([v.ravel() for v in fusion_inputs(trial)]).tofile(t / "fusion.bin")
         flags = [f for f in HOST_CFLAGS if not f.startswith("-W")]
-        cmd = (["gcc", *flags, "-I", str(GENERATED_DIR), "-I", str(fusion[0].parent), "-o",
-                str(t / "count"), str(t / "main.c"), str(GENERATED_DIR / f"{P}.c"),
-                str(t / "fusion_batch.c"), *map(str, fusion), "-lm"])
+        extra = []
+        if fusion_too:
+            (t / "fusion_batch.c").write_text(_FUSION_WRAPPER)
+            np.concatenate([v.ravel() for v in fusion_inputs(trial)]).tofile(t / "fusion.bin")
+            extra = ["-DKF_WITH_FUSION", "-I", str(fusion[0].parent), str(t / "fusion_batch.c"),
+                     *map(str, fusion)]
+        else:
+            (t / "fusion.bin").write_bytes(b"")
+        cmd = (["gcc", *flags, "-I", str(GENERATED_DIR), "-o", str(t / "count"), str(t / "main.c"),
+                str(GENERATED_DIR / f"{P}.c"), *extra, "-lm"])
         proc = subprocess.run(cmd, capture_output=True, text=True)
         if proc.returncode != 0:
             raise KinefuseError(f"could not build the instruction counter: {proc.stderr[-400:]}")
@@ -175,14 +189,15 @@ def instructions_per_sample(name: str, inputs: dict, prm: dict, trial) -> dict[s
         proc = subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}",
                                "--collect-atstart=no", f"--toggle-collect={P}_run",
                                "--toggle-collect=kf_fusion_run", str(t / "count"),
-                               str(t / "in.bin"), str(t / "fusion.bin"), str(trial.rate_hz)],
+                               str(t / "in.bin"), str(t / "fusion.bin"),
+                               str(trial.rate_hz if fusion_too else 0)],
                               capture_output=True, text=True)
         if proc.returncode != 0:
             raise KinefuseError(f"valgrind failed: {proc.stderr.strip().splitlines()[-1:]}")
         ann = subprocess.run(["callgrind_annotate", "--inclusive=yes", str(out)],
                              capture_output=True, text=True).stdout
     counts = {}
-    for key, fn in (("f32_c", f"{P}_run"), ("imufusion", "kf_fusion_run")):
+    for key, fn in (("f32_c", f"{P}_run"),) + ((("imufusion", "kf_fusion_run"),) if fusion_too else ()):
         m = re.search(r"^\s*([\d,]+)\s.*\b" + re.escape(fn) + r"\b", ann, re.M)
         if m is None:
             raise KinefuseError(f"callgrind reported no count for {fn}")
@@ -197,13 +212,31 @@ def run(args) -> int:
     name = args.filter or runner.default_filter()
     if name not in runner.filter_names():
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
-    files, where = trial_files(args.data)
-    trial = load_trial(files[0])
-    n = trial.n
+    from kinefuse.host import angle_series
+    angle = angle_series.is_angle_filter(name)
+    if not angle and name not in runner.imu_filter_names():
+        raise KinefuseError(f"bench speed times IMU filters and the joint-angle smoothers; "
+                            f"{name!r} takes {estimators.ESTIMATORS[name].inputs.name} inputs")
     est = estimators.get(name)
     prm = est.resolve_params(runner.parse_params(None))
-    inputs = runner.imu_inputs(trial)
-    eprint(f"bench speed: {name} on {files[0].name} ({n} samples)")
+    if angle:
+        # no IMU competitor applies; data: one long take of the seed-004 servo protocol
+        trial = None
+        if args.data is None:
+            from kinefuse.host.bench.seed004 import long_series
+            inputs = long_series()
+            what = "a 1,500 s seed-004 servo take (20° sine at 5 rad/s, 35 Hz, 1.8° noise)"
+        else:
+            inputs = angle_series.inputs(angle_series.load(args.data))
+            what = str(args.data)
+        n = len(inputs["dt"])
+    else:
+        files, where = trial_files(args.data)
+        trial = load_trial(files[0])
+        n = trial.n
+        inputs = runner.imu_inputs(trial)
+        what = files[0].name
+    eprint(f"bench speed: {name} on {what} ({n} samples)")
     sps: dict[str, float | None] = {}
     for system in ("f32", "q"):
         r = cg.runner(name, system)
@@ -217,30 +250,8 @@ def run(args) -> int:
         enc = r.encode(small, prm)
         sps[f"{system}_model"] = m / _best(lambda: r.run_encoded(enc), 1)
     sps["ref"] = m / _best(lambda: cg.run(name, "ref", small, prm), 1)
-    # competitors, same trial, same run
-    try:
-        ffi, lib = fusion_runner()
-        g, a, mg = fusion_inputs(trial)
-        q = np.zeros((n, 4), np.float32)
-        fp = lambda arr, w=False: ffi.cast("float *", ffi.from_buffer(arr, require_writable=w))  # noqa: E731
-        call = lambda: lib.kf_fusion_run(fp(g), fp(a), fp(mg), fp(q, True), n,  # noqa: E731
-                                         float(trial.rate_hz))
-        call()
-        sps["imufusion"] = n / _best(call, args.repeat)
-    except Exception as exc:  # competitor sources unavailable (offline) -> report, do not fail
-        eprint(f"  x-io Fusion not measured: {exc}")
-        sps["imufusion"] = None
-    try:
-        import vqf
-        g = np.ascontiguousarray(trial.gyr, dtype=np.float64)
-        a = np.ascontiguousarray(trial.acc, dtype=np.float64)
-        mg = np.ascontiguousarray(trial.mag, dtype=np.float64)
-        call = lambda: vqf.VQF(float(trial.dt)).updateBatch(g, a, mg)  # noqa: E731
-        call()
-        sps["vqf"] = n / _best(call, args.repeat)
-    except ImportError:
-        eprint("  VQF not measured: `pip install vqf` (benchmark extra)")
-        sps["vqf"] = None
+    if not angle:                        # competitors, same trial, same run
+        _competitors(sps, trial, n, args.repeat)
     result = {"filter": name, "samples_per_s": sps}
     if args.instructions:
         eprint("  counting instructions under valgrind (a few seconds)...")
@@ -248,7 +259,7 @@ def run(args) -> int:
     if args.json:
         print(json.dumps(result))
         return 0
-    print(f"{name}: samples per second on {files[0].name} ({n} samples; models and reference on "
+    print(f"{name}: samples per second on {what} ({n} samples; models and reference on "
           f"{m})")
     labels = {"f32_c": "generated float32 C (batch)", "q_c": "generated fixed-point C (batch)",
               "f32_model": "float32 Python model", "q_model": "fixed-point Python model",
@@ -261,8 +272,38 @@ def run(args) -> int:
     if sps.get("vqf"):
         print(f"  ratio float32 C / VQF:    {sps['f32_c'] / sps['vqf']:.2f}")
     ips = result.get("instructions_per_sample")
-    if ips:
+    if ips and "imufusion" in ips:
         print(f"  instructions per sample (valgrind, x86-64, same flags): float32 C "
               f"{ips['f32_c']:.1f}, x-io Fusion {ips['imufusion']:.1f} "
               f"(Fusion / ours = {ips['imufusion'] / ips['f32_c']:.2f})")
+    elif ips:
+        print(f"  instructions per sample (valgrind, x86-64, same flags): float32 C "
+              f"{ips['f32_c']:.1f}")
     return 0
+
+
+def _competitors(sps: dict, trial, n: int, repeat: int) -> None:
+    """x-io Fusion's C and VQF's C++ on the same trial (None when unavailable)."""
+    try:
+        ffi, lib = fusion_runner()
+        g, a, mg = fusion_inputs(trial)
+        q = np.zeros((n, 4), np.float32)
+        fp = lambda arr, w=False: ffi.cast("float *", ffi.from_buffer(arr, require_writable=w))  # noqa: E731
+        call = lambda: lib.kf_fusion_run(fp(g), fp(a), fp(mg), fp(q, True), n,  # noqa: E731
+                                         float(trial.rate_hz))
+        call()
+        sps["imufusion"] = n / _best(call, repeat)
+    except Exception as exc:  # competitor sources unavailable (offline) -> report, do not fail
+        eprint(f"  x-io Fusion not measured: {exc}")
+        sps["imufusion"] = None
+    try:
+        import vqf
+        g = np.ascontiguousarray(trial.gyr, dtype=np.float64)
+        a = np.ascontiguousarray(trial.acc, dtype=np.float64)
+        mg = np.ascontiguousarray(trial.mag, dtype=np.float64)
+        call = lambda: vqf.VQF(float(trial.dt)).updateBatch(g, a, mg)  # noqa: E731
+        call()
+        sps["vqf"] = n / _best(call, repeat)
+    except ImportError:
+        eprint("  VQF not measured: `pip install vqf` (benchmark extra)")
+        sps["vqf"] = None

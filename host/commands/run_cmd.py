@@ -16,13 +16,20 @@ def register(sub):
     p.add_argument("--impl", default="f32", choices=runner.IMPLS,
                    help="ref: Python reference (float64); f32: generated float32 C; "
                         "q: generated fixed-point C (default f32)")
-    p.add_argument("--input", required=True, help="recording: BROAD .mat or bundled .npz trial")
-    p.add_argument("--out", required=True, help="output CSV: t,w,x,y,z (+ status columns)")
+    p.add_argument("--input", required=True,
+                   help="recording: BROAD .mat or bundled .npz trial (IMU filters); joint-angle "
+                        "series for the angle smoothers: seed-004 Arduino CSV, or a CSV with t (s) "
+                        "and angle_deg columns")
+    p.add_argument("--out", required=True,
+                   help="output CSV: t,w,x,y,z (+ status columns); angle smoothers: "
+                        "t,angle_deg,rate_deg_s[,omega_rad_s] (+ rejected)")
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter override")
     p.add_argument("--preset", help="named parameter set (see `kinefuse filters`)")
     p.add_argument("--status", action="store_true", help="append the filter's status outputs")
     p.add_argument("--frame", default="enu", choices=runner.FRAMES,
                    help="earth frame of the written quaternions (default enu, as BROAD)")
+    p.add_argument("--fs", type=float, default=None, metavar="HZ",
+                   help="sampling rate of a seed-004 Arduino CSV (it has no time column; default 35)")
     p.set_defaults(func=run)
 
 
@@ -32,6 +39,16 @@ def run(args) -> int:
     if name not in runner.filter_names():
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
     prm = runner.parse_params(args.param)
+    from kinefuse.host import angle_series
+    if angle_series.is_angle_filter(name):
+        return _run_angle(name, args, prm)
+    kind = angle_series.sniff(args.input)
+    if kind is not None and name in runner.imu_filter_names():
+        raise KinefuseError(f"filter {name!r} takes IMU samples, but {args.input} is a joint-angle "
+                            f"series ({kind}); smooth it with "
+                            f"{', '.join(angle_series.angle_filter_names())}")
+    if args.fs is not None:
+        raise KinefuseError("--fs applies to the seed-004 Arduino CSV only (angle smoothers)")
     trial = load_trial(args.input)
     res = runner.run_filter(name, args.impl, trial, prm, args.preset)
     n = len(res.q)
@@ -39,5 +56,44 @@ def run(args) -> int:
     runner.write_estimates_csv(args.out, t, res, f"kinefuse run --filter {name} --impl {args.impl}; t in s; "
                                f"quaternion w,x,y,z sensor->earth, {runner.FRAME_TEXT[args.frame]}; "
                                f"input {args.input}", status=args.status, frame=args.frame)
+    print(f"wrote {n} rows to {args.out} ({name}, {args.impl})", file=sys.stderr)
+    return 0
+
+
+def _run_angle(name: str, args, prm) -> int:
+    """A seed-004 joint-angle smoother over a joint-angle series (host/angle_series.py)."""
+    from pathlib import Path
+    from kinefuse.host import angle_series
+    path = str(args.input)
+    if Path(path).suffix.lower() in angle_series.IMU_SUFFIXES:
+        raise KinefuseError(f"filter {name!r} smooths a joint-angle series (seed-004 Arduino CSV, "
+                            f"or a CSV with t [s] and angle_deg columns), but {path} is an IMU "
+                            f"recording; use an IMU filter (e.g. {runner.default_filter()})")
+    if Path(path).is_file() and angle_series.sniff(path) is None:
+        from kinefuse.host.readers import ReaderError, detect_format
+        try:
+            fmt = detect_format(path)
+        except ReaderError:
+            fmt = None
+        if fmt is not None:
+            raise KinefuseError(f"filter {name!r} smooths a joint-angle series, but {path} is an "
+                                f"IMU recording ({fmt}); use an IMU filter (e.g. "
+                                f"{runner.default_filter()})")
+    series = angle_series.load(path, fs=args.fs)
+    out = angle_series.run(name, args.impl, series, prm, args.preset)
+    cols = ("t s, angle_deg deg, rate_deg_s deg/s" + (", omega_rad_s rad/s (oscillator "
+            "frequency)" if "omega" in out else "") + (", rejected (cumulative count)"
+                                                        if args.status else ""))
+    n = angle_series.write_csv(args.out, series.t, out,
+                               f"kinefuse run --filter {name} --impl {args.impl}; {cols}; filtered "
+                               f"joint angle; time base {series.time_base}; input {path} "
+                               f"({series.fmt})", status=args.status)
+    rejected = int(out["rejected"][-1, 0]) if n else 0
+    if rejected:
+        print(f"kinefuse: {rejected} sample(s) rejected by the filter (angle beyond ±3.2 rad or "
+              f"time step not in (0, 0.2] s): state kept", file=sys.stderr)
+    missing = int(np.count_nonzero(~np.isfinite(series.angle)))
+    if missing:
+        print(f"kinefuse: {missing} sample(s) without an angle (predicted only)", file=sys.stderr)
     print(f"wrote {n} rows to {args.out} ({name}, {args.impl})", file=sys.stderr)
     return 0
