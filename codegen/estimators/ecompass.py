@@ -17,12 +17,17 @@ from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, MAG_NORM_M
 from kinefuse.codegen.ir import BOOL
 from kinefuse.codegen.linalg import Quat, vselect
 from kinefuse.codegen.mathlib import sin
-from kinefuse.codegen.scalar import all_of, inc_if, logical_not, logical_or, select
+from kinefuse.codegen.scalar import all_of, inc_if, logical_and, logical_not, logical_or, select
 
 DEGENERATE = Var("degenerate", 1, 0, 1, "",
-                 "1 when this sample gave no orientation: gravity and field (nearly) parallel "
-                 "(angle below min_angle_deg), no magnetometer reading, or a rejected sample; "
-                 "q then holds the last valid orientation", BOOL)
+                 "1 when gravity and the field are (nearly) parallel (angle below "
+                 "min_angle_deg: no orientation defined) on a sample whose accelerometer and "
+                 "magnetometer readings are otherwise usable; q is then held (see held)", BOOL)
+HELD = Var("held", 1, 0, 1, "",
+           "1 when q repeats the last valid orientation (the initial identity before the first) "
+           "instead of one from this sample: degenerate, no magnetometer reading on this sample, "
+           "an accelerometer or field norm below 1 m/s^2 or 1 uT, or a rejected sample (the "
+           "rejected counter increments)", BOOL)
 VALID = Var("valid", 1, 0, 1, "", "1 once a valid orientation was computed", BOOL, init=False)
 
 
@@ -30,9 +35,9 @@ class Ecompass(Estimator):
     """Memoryless accelerometer + magnetometer orientation (MATLAB ecompass / Valenti's algebraic
     quaternion), sensor → ENU.  Every sample with a magnetometer reading gives an independent
     orientation; samples without one, or where gravity and the field are within
-    ``min_angle_deg`` of parallel (no heading defined), repeat the last valid orientation and
-    raise ``degenerate``.  Exact only at rest: linear acceleration tilts the estimate and
-    magnetic disturbances turn it."""
+    ``min_angle_deg`` of parallel (no heading defined; ``degenerate``), repeat the last valid
+    orientation and raise ``held``.  Exact only at rest: linear acceleration tilts the estimate
+    and magnetic disturbances turn it."""
 
     name = "ecompass"
     title = "eCompass (accelerometer + magnetometer, memoryless)"
@@ -43,7 +48,7 @@ class Ecompass(Estimator):
               "a heading (below it the sample is flagged degenerate)"),
     )
     state = (Q_STATE, VALID, REJECTED)
-    outputs = (Q_OUT, DEGENERATE, REJECTED)
+    outputs = (Q_OUT, DEGENERATE, HELD, REJECTED)
 
     def step(self, x, u, p):
         chk = SampleCheck(u)
@@ -52,10 +57,12 @@ class Ecompass(Estimator):
         q_am, _, _, gamma = aqua(a, m)
         # gamma = sin² of the angle between field and vertical; compared with sin²(min angle)
         s = sin(p.min_angle_deg * (math.pi / 180.0))
-        ok = all_of(chk.use_mag, a2 >= ACC_NORM_MIN_SQ, m2 >= MAG_NORM_MIN_SQ, gamma >= s * s)
+        usable = all_of(chk.use_mag, a2 >= ACC_NORM_MIN_SQ, m2 >= MAG_NORM_MIN_SQ)
+        parallel = logical_and(usable, gamma < s * s)
+        ok = logical_and(usable, logical_not(parallel))
         flip = q_am.w < 0.0          # canonical sign w >= 0 (same rotation)
         q_am = Quat(*(select(flip, -c, c) for c in q_am))
         q = vselect(ok, q_am, x.q)
         rejected = inc_if(x.rejected, chk.bad)
         nx = {"q": q, "valid": logical_or(x.valid, ok), "rejected": rejected}
-        return nx, {"q": q, "degenerate": logical_not(ok), "rejected": rejected}
+        return nx, {"q": q, "degenerate": parallel, "held": logical_not(ok), "rejected": rejected}

@@ -17,11 +17,11 @@ import math
 from kinefuse.codegen.estimator import Estimator, Param, Var
 from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, MAG_NORM_MIN_SQ, Q_OUT,
                                                 Q_STATE, REJECTED, SampleCheck, quat_from_rows)
-from kinefuse.codegen.estimators.ecompass import DEGENERATE
+from kinefuse.codegen.estimators.ecompass import DEGENERATE, HELD
 from kinefuse.codegen.ir import BOOL
 from kinefuse.codegen.linalg import Vec3, vselect
 from kinefuse.codegen.mathlib import sin, sincos
-from kinefuse.codegen.scalar import all_of, assume, inc_if, logical_not, logical_or
+from kinefuse.codegen.scalar import all_of, assume, inc_if, logical_and, logical_not, logical_or
 
 
 def _unit_cross(a: Vec3, b: Vec3):
@@ -48,8 +48,8 @@ def triad_matrix(b1: Vec3, b2: Vec3, r1: Vec3, r2: Vec3):
 
 class Triad(Estimator):
     """TRIAD from one accelerometer + magnetometer sample, sensor → ENU.  Samples without a
-    magnetometer reading, or with the two vectors within ``min_angle_deg`` of parallel, repeat
-    the last valid orientation and raise ``degenerate``."""
+    magnetometer reading, or with the two vectors within ``min_angle_deg`` of parallel
+    (``degenerate``), repeat the last valid orientation and raise ``held``."""
 
     name = "triad"
     title = "TRIAD (two-vector attitude, memoryless)"
@@ -64,7 +64,7 @@ class Triad(Estimator):
     )
     state = (Q_STATE, Var("valid", 1, 0, 1, "", "1 once a valid orientation was computed",
                           BOOL, init=False), REJECTED)
-    outputs = (Q_OUT, DEGENERATE, REJECTED)
+    outputs = (Q_OUT, DEGENERATE, HELD, REJECTED)
     presets = {
         # seed 001's site: Montevideo, field 22.6 uT with a dip of about -36 deg (upward)
         "montevideo": {"dip_deg": -36.0},
@@ -85,8 +85,10 @@ class Triad(Estimator):
         rows, s2 = triad_matrix(b1, b2, r1, r2)
         q_t = quat_from_rows(*rows)
         s = sin(p.min_angle_deg * (math.pi / 180.0))
-        ok = all_of(chk.use_mag, a2 >= ACC_NORM_MIN_SQ, m2 >= MAG_NORM_MIN_SQ, s2 >= s * s)
+        usable = all_of(chk.use_mag, a2 >= ACC_NORM_MIN_SQ, m2 >= MAG_NORM_MIN_SQ)
+        parallel = logical_and(usable, s2 < s * s)
+        ok = logical_and(usable, logical_not(parallel))
         q = vselect(ok, q_t, x.q)
         rejected = inc_if(x.rejected, chk.bad)
         nx = {"q": q, "valid": logical_or(x.valid, ok), "rejected": rejected}
-        return nx, {"q": q, "degenerate": logical_not(ok), "rejected": rejected}
+        return nx, {"q": q, "degenerate": parallel, "held": logical_not(ok), "rejected": rejected}

@@ -303,16 +303,32 @@ def test_triad_gravity_primary_equals_ecompass_and_field_primary_is_exact_with_t
     assert np.min(_angles(qw, rec.q_true[:n])) > 5.0      # a wrong dip tilts field-primary TRIAD
 
 
-def test_ecompass_flags_parallel_gravity_and_field_and_holds_the_last_orientation():
-    n = 4
+@pytest.mark.parametrize("name", ("ecompass", "triad"))
+def test_degenerate_means_parallel_only_and_held_says_why_q_was_kept(name):
+    """degenerate: gravity and field within min_angle_deg of parallel; held: q is the last valid
+    orientation (parallel, no magnetometer reading, free fall, rejected sample)."""
+    n = 7
     acc = np.tile([0.0, 0.0, 9.81], (n, 1))
-    mag = np.array([[0.0, 20.0, -40.0], [0.0, 0.5, -45.0], [0.0, 20.0, -40.0], [0.0, 20.0, -40.0]])
-    inp = {"gyr": np.zeros((n, 3)), "acc": acc, "mag": mag, "mag_valid": [1, 1, 0, 1],
+    acc[4] = [0.0, 0.0, 0.3]                     # free fall: gravity not observable
+    acc[5] = [np.nan, 0.0, 9.81]                 # rejected sample
+    mag = np.tile([0.0, 20.0, -40.0], (n, 1))
+    mag[1] = [0.0, 0.5, -45.0]                   # 0.6 deg from the vertical
+    mag[3] = [0.0, -30.0, -40.0]                 # turned: a different orientation
+    inp = {"gyr": np.zeros((n, 3)), "acc": acc, "mag": mag, "mag_valid": [1, 1, 0, 1, 1, 1, 1],
            "dt": np.full(n, 0.01)}
     for impl in ("ref", "f32", "q"):
-        out = runner.run("ecompass", impl, inp)
-        assert out["degenerate"][:, 0].tolist() == [False, True, True, False]
+        out = runner.run(name, impl, inp)
+        assert out["degenerate"][:, 0].tolist() == [False, True, False, False, False, False, False], impl
+        assert out["held"][:, 0].tolist() == [False, True, True, False, True, True, False], impl
+        assert out["rejected"][:, 0].tolist() == [0, 0, 0, 0, 0, 1, 1], impl
         assert np.allclose(out["q"][1], out["q"][0], atol=1e-6)   # held
+        assert np.allclose(out["q"][2], out["q"][0], atol=1e-6)
+        assert np.max(_angles(out["q"][3:4], out["q"][0:1])) > 30.0   # a new orientation ...
+        assert np.allclose(out["q"][4], out["q"][3], atol=1e-6)      # ... then held twice
+        assert np.allclose(out["q"][5], out["q"][3], atol=1e-6)
+    # before the first valid orientation: the identity, held
+    out = runner.run(name, "ref", {k: v[1:2] if k != "mag_valid" else [1] for k, v in inp.items()})
+    assert out["held"][0, 0] and np.allclose(out["q"][0], [1.0, 0.0, 0.0, 0.0])
 
 
 @pytest.mark.parametrize("name", ("angle-kf", "angle-ekf", "angle-ukf", "angle-srukf"))

@@ -426,30 +426,33 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t405 = (t398 ? t384 : t404);  /* triad.py:87 */
     const int t407 = (0x1p+0f <= t65);  /* triad.py:88 */
     const int t408 = (0x1p+0f <= t77);  /* triad.py:88 */
-    const float t409 = (t405 * t405);  /* triad.py:88 */
-    const int t410 = (t409 <= t183);  /* triad.py:88 */
-    const int t411 = (t55 && t407);  /* triad.py:88 */
-    const int t412 = (t411 && t408);  /* triad.py:88 */
-    const int t413 = (t412 && t410);  /* triad.py:88 */
-    const float t414 = (t413 ? t353 : x_q0);  /* triad.py:89 */
-    const float t415 = (t413 ? t355 : x_q1);  /* triad.py:89 */
-    const float t416 = (t413 ? t357 : x_q2);  /* triad.py:89 */
-    const float t417 = (t413 ? t359 : x_q3);  /* triad.py:89 */
-    const int32_t t418 = kf_inc_if(x_rejected, t60);  /* triad.py:90 */
-    const int t419 = (x_valid || t413);  /* triad.py:91 */
-    const int t420 = (!t413);  /* triad.py:92 */
-    s->q[0] = t414;
-    s->q[1] = t415;
-    s->q[2] = t416;
-    s->q[3] = t417;
-    s->valid = (uint8_t)(t419 ? 1u : 0u);
-    s->rejected = t418;
-    out->q[0] = t414;
-    out->q[1] = t415;
-    out->q[2] = t416;
-    out->q[3] = t417;
-    out->degenerate = (uint8_t)(t420 ? 1u : 0u);
-    out->rejected = t418;
+    const int t409 = (t55 && t407);  /* triad.py:88 */
+    const int t410 = (t409 && t408);  /* triad.py:88 */
+    const float t411 = (t405 * t405);  /* triad.py:89 */
+    const int t412 = (t183 < t411);  /* triad.py:89 */
+    const int t413 = (t410 && t412);  /* triad.py:89 */
+    const int t414 = (!t413);  /* triad.py:90 */
+    const int t415 = (t410 && t414);  /* triad.py:90 */
+    const float t416 = (t415 ? t353 : x_q0);  /* triad.py:91 */
+    const float t417 = (t415 ? t355 : x_q1);  /* triad.py:91 */
+    const float t418 = (t415 ? t357 : x_q2);  /* triad.py:91 */
+    const float t419 = (t415 ? t359 : x_q3);  /* triad.py:91 */
+    const int32_t t420 = kf_inc_if(x_rejected, t60);  /* triad.py:92 */
+    const int t421 = (x_valid || t415);  /* triad.py:93 */
+    const int t422 = (!t415);  /* triad.py:94 */
+    s->q[0] = t416;
+    s->q[1] = t417;
+    s->q[2] = t418;
+    s->q[3] = t419;
+    s->valid = (uint8_t)(t421 ? 1u : 0u);
+    s->rejected = t420;
+    out->q[0] = t416;
+    out->q[1] = t417;
+    out->q[2] = t418;
+    out->q[3] = t419;
+    out->degenerate = (uint8_t)(t413 ? 1u : 0u);
+    out->held = (uint8_t)(t422 ? 1u : 0u);
+    out->rejected = t420;
 }
 
 void triad_f32_run(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_output *out, uint32_t n)

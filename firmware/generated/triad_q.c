@@ -417,30 +417,33 @@ void triad_q_update(triad_q_state *s, const kf_imu_input_q *in, triad_q_output *
     const int32_t t405 = (t398 ? t405_0 : t405_1);  /* triad.py:87 Q1.30 */
     const int t407 = (((int64_t)1073741824) <= (((int64_t)t65) * 524288));  /* triad.py:88 */
     const int t408 = (((int64_t)1073741824) <= (((int64_t)t77) * 536870912));  /* triad.py:88 */
-    const int32_t t409 = ((int32_t)(((((int64_t)t405) * t405) + 536870912) >> 30));  /* triad.py:88 Q1.30 */
-    const int t410 = (((int64_t)t409) <= (((int64_t)t183) * 2));  /* triad.py:88 */
-    const int t411 = (t55 && t407);  /* triad.py:88 */
-    const int t412 = (t411 && t408);  /* triad.py:88 */
-    const int t413 = (t412 && t410);  /* triad.py:88 */
-    const int32_t t414 = (t413 ? t353 : x_q0);  /* triad.py:89 Q1.30 */
-    const int32_t t415 = (t413 ? t355 : x_q1);  /* triad.py:89 Q1.30 */
-    const int32_t t416 = (t413 ? t357 : x_q2);  /* triad.py:89 Q1.30 */
-    const int32_t t417 = (t413 ? t359 : x_q3);  /* triad.py:89 Q1.30 */
-    const int32_t t418 = kf_inc_if(x_rejected, t60);  /* triad.py:90 */
-    const int t419 = (x_valid || t413);  /* triad.py:91 */
-    const int t420 = (!t413);  /* triad.py:92 */
-    s->q[0] = t414;
-    s->q[1] = t415;
-    s->q[2] = t416;
-    s->q[3] = t417;
-    s->valid = (uint8_t)(t419 ? 1u : 0u);
-    s->rejected = t418;
-    out->q[0] = t414;
-    out->q[1] = t415;
-    out->q[2] = t416;
-    out->q[3] = t417;
-    out->degenerate = (uint8_t)(t420 ? 1u : 0u);
-    out->rejected = t418;
+    const int t409 = (t55 && t407);  /* triad.py:88 */
+    const int t410 = (t409 && t408);  /* triad.py:88 */
+    const int32_t t411 = ((int32_t)(((((int64_t)t405) * t405) + 536870912) >> 30));  /* triad.py:89 Q1.30 */
+    const int t412 = ((((int64_t)t183) * 2) < ((int64_t)t411));  /* triad.py:89 */
+    const int t413 = (t410 && t412);  /* triad.py:89 */
+    const int t414 = (!t413);  /* triad.py:90 */
+    const int t415 = (t410 && t414);  /* triad.py:90 */
+    const int32_t t416 = (t415 ? t353 : x_q0);  /* triad.py:91 Q1.30 */
+    const int32_t t417 = (t415 ? t355 : x_q1);  /* triad.py:91 Q1.30 */
+    const int32_t t418 = (t415 ? t357 : x_q2);  /* triad.py:91 Q1.30 */
+    const int32_t t419 = (t415 ? t359 : x_q3);  /* triad.py:91 Q1.30 */
+    const int32_t t420 = kf_inc_if(x_rejected, t60);  /* triad.py:92 */
+    const int t421 = (x_valid || t415);  /* triad.py:93 */
+    const int t422 = (!t415);  /* triad.py:94 */
+    s->q[0] = t416;
+    s->q[1] = t417;
+    s->q[2] = t418;
+    s->q[3] = t419;
+    s->valid = (uint8_t)(t421 ? 1u : 0u);
+    s->rejected = t420;
+    out->q[0] = t416;
+    out->q[1] = t417;
+    out->q[2] = t418;
+    out->q[3] = t419;
+    out->degenerate = (uint8_t)(t413 ? 1u : 0u);
+    out->held = (uint8_t)(t422 ? 1u : 0u);
+    out->rejected = t420;
 }
 
 void triad_q_run(triad_q_state *s, const kf_imu_input_q *in, triad_q_output *out, uint32_t n)

@@ -12,7 +12,7 @@ SYSTEM = 'q'
 _where = np.where
 
 # field layout: kind -> [(name, size, type)]
-FIELDS = {'input': [('gyr', 3, 'real'), ('acc', 3, 'real'), ('mag', 3, 'real'), ('mag_valid', 1, 'bool'), ('dt', 1, 'real')], 'param': [('min_angle_deg', 1, 'real')], 'state': [('q', 4, 'real'), ('valid', 1, 'bool'), ('rejected', 1, 'int')], 'output': [('q', 4, 'real'), ('degenerate', 1, 'bool'), ('rejected', 1, 'int')]}
+FIELDS = {'input': [('gyr', 3, 'real'), ('acc', 3, 'real'), ('mag', 3, 'real'), ('mag_valid', 1, 'bool'), ('dt', 1, 'real')], 'param': [('min_angle_deg', 1, 'real')], 'state': [('q', 4, 'real'), ('valid', 1, 'bool'), ('rejected', 1, 'int')], 'output': [('q', 4, 'real'), ('degenerate', 1, 'bool'), ('held', 1, 'bool'), ('rejected', 1, 'int')]}
 DEFAULTS = {'min_angle_deg': 5.0}
 STATE_INIT = {'q': (1.0, 0.0, 0.0, 0.0), 'valid': (False,), 'rejected': (0,)}
 # Q formats of real fields: 'kind.name' -> (fractional bits, raw lo, raw hi)
@@ -96,7 +96,7 @@ def _run(inputs, params, state, n):
     t253_1 = t252
     t253_1 = -1073741824 if t253_1 < -1073741824 else (1073741824 if t253_1 > 1073741824 else t253_1)
     t253 = (t253_0 if t244 else t253_1)
-    t257 = (((t253 * t253) + 536870912) >> 30)
+    t259 = (((t253 * t253) + 536870912) >> 30)
     u_gyr0 = inputs['gyr'][0]
     u_gyr1 = inputs['gyr'][1]
     u_gyr2 = inputs['gyr'][2]
@@ -262,25 +262,27 @@ def _run(inputs, params, state, n):
     t189 = (((t187 + (t188 << 1)) + 1) >> 1)
     t255 = (1073741824 <= (t63 << 19))
     t256 = (1073741824 <= (t75 << 29))
-    t258 = (t257 <= (t139 << 1))
-    t259 = (t53 & t255)
-    t260 = (t259 & t256)
-    t261 = (t260 & t258)
-    t262 = (t172 < 0)
-    t263 = (-t172)
-    t264 = _where(t262, t263, t172)
-    t265 = (-t179)
-    t266 = _where(t262, t265, t179)
-    t267 = (-t184)
-    t268 = _where(t262, t267, t184)
-    t269 = (-t189)
-    t270 = _where(t262, t269, t189)
-    t277 = (~t261)
-    L_t261 = _int_list(t261, n)
-    L_t264 = _int_list(t264, n)
+    t257 = (t53 & t255)
+    t258 = (t257 & t256)
+    t260 = ((t139 << 1) < t259)
+    t261 = (t258 & t260)
+    t262 = (~t261)
+    t263 = (t258 & t262)
+    t264 = (t172 < 0)
+    t265 = (-t172)
+    t266 = _where(t264, t265, t172)
+    t267 = (-t179)
+    t268 = _where(t264, t267, t179)
+    t269 = (-t184)
+    t270 = _where(t264, t269, t184)
+    t271 = (-t189)
+    t272 = _where(t264, t271, t189)
+    t279 = (~t263)
+    L_t263 = _int_list(t263, n)
     L_t266 = _int_list(t266, n)
     L_t268 = _int_list(t268, n)
     L_t270 = _int_list(t270, n)
+    L_t272 = _int_list(t272, n)
     L_t58 = _int_list(t58, n)
     _st = state['q']
     x_q0 = _st[0]
@@ -301,29 +303,31 @@ def _run(inputs, params, state, n):
     A_q3 = O_q3.append
     O_rejected0 = []
     A_rejected0 = O_rejected0.append
-    V_degenerate0 = _bcast(t277, n)
+    V_degenerate0 = _bcast(t261, n)
+    V_held0 = _bcast(t279, n)
     for k in range(n):
-        t261 = L_t261[k]
-        t264 = L_t264[k]
+        t263 = L_t263[k]
         t266 = L_t266[k]
         t268 = L_t268[k]
         t270 = L_t270[k]
+        t272 = L_t272[k]
         t58 = L_t58[k]
-        t271 = (t264 if t261 else x_q0)
-        t272 = (t266 if t261 else x_q1)
-        t273 = (t268 if t261 else x_q2)
-        t274 = (t270 if t261 else x_q3)
-        t275 = rt.kf_inc_if(x_rejected, t58)
-        t276 = (x_valid or t261)
-        A_q0(rt.kf_sat(t271, -1073741824, 1073741824))
-        A_q1(rt.kf_sat(t272, -1073741824, 1073741824))
-        A_q2(rt.kf_sat(t273, -1073741824, 1073741824))
-        A_q3(rt.kf_sat(t274, -1073741824, 1073741824))
-        A_rejected0(t275)
-        x_q0, x_q1, x_q2, x_q3, x_valid, x_rejected = rt.kf_sat(t271, -1073741824, 1073741824), rt.kf_sat(t272, -1073741824, 1073741824), rt.kf_sat(t273, -1073741824, 1073741824), rt.kf_sat(t274, -1073741824, 1073741824), t276, t275
+        t273 = (t266 if t263 else x_q0)
+        t274 = (t268 if t263 else x_q1)
+        t275 = (t270 if t263 else x_q2)
+        t276 = (t272 if t263 else x_q3)
+        t277 = rt.kf_inc_if(x_rejected, t58)
+        t278 = (x_valid or t263)
+        A_q0(rt.kf_sat(t273, -1073741824, 1073741824))
+        A_q1(rt.kf_sat(t274, -1073741824, 1073741824))
+        A_q2(rt.kf_sat(t275, -1073741824, 1073741824))
+        A_q3(rt.kf_sat(t276, -1073741824, 1073741824))
+        A_rejected0(t277)
+        x_q0, x_q1, x_q2, x_q3, x_valid, x_rejected = rt.kf_sat(t273, -1073741824, 1073741824), rt.kf_sat(t274, -1073741824, 1073741824), rt.kf_sat(t275, -1073741824, 1073741824), rt.kf_sat(t276, -1073741824, 1073741824), t278, t277
     outputs = {}
     outputs['q'] = [O_q0, O_q1, O_q2, O_q3]
     outputs['degenerate'] = [V_degenerate0]
+    outputs['held'] = [V_held0]
     outputs['rejected'] = [O_rejected0]
     new_state = {}
     new_state['q'] = [x_q0, x_q1, x_q2, x_q3]

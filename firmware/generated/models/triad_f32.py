@@ -12,7 +12,7 @@ SYSTEM = 'f32'
 _where = np.where
 
 # field layout: kind -> [(name, size, type)]
-FIELDS = {'input': [('gyr', 3, 'real'), ('acc', 3, 'real'), ('mag', 3, 'real'), ('mag_valid', 1, 'bool'), ('dt', 1, 'real')], 'param': [('primary', 1, 'real'), ('dip_deg', 1, 'real'), ('min_angle_deg', 1, 'real')], 'state': [('q', 4, 'real'), ('valid', 1, 'bool'), ('rejected', 1, 'int')], 'output': [('q', 4, 'real'), ('degenerate', 1, 'bool'), ('rejected', 1, 'int')]}
+FIELDS = {'input': [('gyr', 3, 'real'), ('acc', 3, 'real'), ('mag', 3, 'real'), ('mag_valid', 1, 'bool'), ('dt', 1, 'real')], 'param': [('primary', 1, 'real'), ('dip_deg', 1, 'real'), ('min_angle_deg', 1, 'real')], 'state': [('q', 4, 'real'), ('valid', 1, 'bool'), ('rejected', 1, 'int')], 'output': [('q', 4, 'real'), ('degenerate', 1, 'bool'), ('held', 1, 'bool'), ('rejected', 1, 'int')]}
 DEFAULTS = {'primary': 0.0, 'dip_deg': 64.0, 'min_angle_deg': 5.0}
 STATE_INIT = {'q': (1.0, 0.0, 0.0, 0.0), 'valid': (False,), 'rejected': (0,)}
 
@@ -217,7 +217,7 @@ def _run(inputs, params, state, n):
     t403 = (t401 if t400 else t402)
     t404 = (t397 if t399 else t403)
     t405 = (t384 if t398 else t404)
-    t409 = (t405 * t405)
+    t411 = (t405 * t405)
     u_gyr0 = inputs['gyr'][0]
     u_gyr1 = inputs['gyr'][1]
     u_gyr2 = inputs['gyr'][2]
@@ -439,16 +439,18 @@ def _run(inputs, params, state, n):
     t359 = _where(t351, t358, t346)
     t407 = (K_0x1_0000000000000pp0 <= t65)
     t408 = (K_0x1_0000000000000pp0 <= t77)
-    t410 = (t409 <= t183)
-    t411 = (t55 & t407)
-    t412 = (t411 & t408)
-    t413 = (t412 & t410)
-    t420 = (~t413)
+    t409 = (t55 & t407)
+    t410 = (t409 & t408)
+    t412 = (t183 < t411)
+    t413 = (t410 & t412)
+    t414 = (~t413)
+    t415 = (t410 & t414)
+    t422 = (~t415)
     L_t353 = _f32_list(t353, n)
     L_t355 = _f32_list(t355, n)
     L_t357 = _f32_list(t357, n)
     L_t359 = _f32_list(t359, n)
-    L_t413 = _int_list(t413, n)
+    L_t415 = _int_list(t415, n)
     L_t60 = _int_list(t60, n)
     _st = state['q']
     x_q0 = _st[0]
@@ -469,29 +471,31 @@ def _run(inputs, params, state, n):
     A_q3 = O_q3.append
     O_rejected0 = []
     A_rejected0 = O_rejected0.append
-    V_degenerate0 = _bcast(t420, n)
+    V_degenerate0 = _bcast(t413, n)
+    V_held0 = _bcast(t422, n)
     for k in range(n):
         t353 = L_t353[k]
         t355 = L_t355[k]
         t357 = L_t357[k]
         t359 = L_t359[k]
-        t413 = L_t413[k]
+        t415 = L_t415[k]
         t60 = L_t60[k]
-        t414 = (t353 if t413 else x_q0)
-        t415 = (t355 if t413 else x_q1)
-        t416 = (t357 if t413 else x_q2)
-        t417 = (t359 if t413 else x_q3)
-        t418 = rt.kf_inc_if(x_rejected, t60)
-        t419 = (x_valid or t413)
-        A_q0(t414)
-        A_q1(t415)
-        A_q2(t416)
-        A_q3(t417)
-        A_rejected0(t418)
-        x_q0, x_q1, x_q2, x_q3, x_valid, x_rejected = t414, t415, t416, t417, t419, t418
+        t416 = (t353 if t415 else x_q0)
+        t417 = (t355 if t415 else x_q1)
+        t418 = (t357 if t415 else x_q2)
+        t419 = (t359 if t415 else x_q3)
+        t420 = rt.kf_inc_if(x_rejected, t60)
+        t421 = (x_valid or t415)
+        A_q0(t416)
+        A_q1(t417)
+        A_q2(t418)
+        A_q3(t419)
+        A_rejected0(t420)
+        x_q0, x_q1, x_q2, x_q3, x_valid, x_rejected = t416, t417, t418, t419, t421, t420
     outputs = {}
     outputs['q'] = [O_q0, O_q1, O_q2, O_q3]
     outputs['degenerate'] = [V_degenerate0]
+    outputs['held'] = [V_held0]
     outputs['rejected'] = [O_rejected0]
     new_state = {}
     new_state['q'] = [x_q0, x_q1, x_q2, x_q3]
