@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.cli_util import console, fmt_bytes, print_json
 
 
@@ -35,6 +36,8 @@ def summarize(df) -> dict:
         out["dialect_match"] = dialect.get("hash") == f"0x{DIALECT_HASH():08X}"
         out["chunks"] = rec.chunks
         out["damaged_chunks"] = rec.damaged_chunks
+        out["recovered_chunks"] = rec.recovered_chunks
+        out["skipped_bytes"] = rec.skipped_bytes
         out["truncated"] = rec.truncated
         out["host"] = head.get("host", {}).get("hostname")
     for sid, ds in sorted(df.streams.items()):
@@ -60,9 +63,12 @@ def summarize(df) -> dict:
 
 
 def run(args) -> int:
+    from kinefuse.host.link.cli_util import progress
     from kinefuse.host.link.frames import decode_file
-    with console(args.json).status(f"decoding {args.file}"):
-        df = decode_file(args.file, raw=args.raw)
+    if args.show < 0:
+        raise KinefuseError("--show must be 0 or more (messages per type)")
+    with progress(console(args.json), f"decoding {args.file}") as tick:
+        df = decode_file(args.file, raw=args.raw, progress=tick)
     summary = summarize(df)
     if args.json:
         if args.show:
@@ -84,7 +90,8 @@ def run(args) -> int:
         if summary["truncated"]:
             con.print("[yellow]note:[/] the file ends inside a chunk (recorder killed?): decoded up to the end")
         if summary["damaged_chunks"]:
-            con.print(f"[yellow]warning:[/] {summary['damaged_chunks']} damaged chunk(s) skipped")
+            from kinefuse.host.link.stats import damage_text
+            con.print(f"[yellow]warning:[/] {damage_text(df.recording)}")
     for s in summary["streams"]:
         c = s["counters"]
         con.print(f"\nstream {s['id']} ({s['connection']}): {fmt_bytes(s['bytes'])}, {c['frames_ok']:,} frames, "

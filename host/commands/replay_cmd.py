@@ -72,7 +72,10 @@ def run(args) -> int:
         t = np.arange(trial.n) * float(trial.dt)
         time_base = "s from the first sample (constant rate)"
     else:
-        rec = _read(path, args.unit)
+        from rich.console import Console
+        from kinefuse.host.link.cli_util import progress
+        with progress(Console(stderr=True), f"reading {path}"):    # moves with a .kfr's decoding
+            rec = _read(path, args.unit)
         for w in rec.warnings:
             print(f"kinefuse: warning: {w}", file=sys.stderr)
         inputs = runner.recording_inputs(rec)

@@ -24,14 +24,20 @@ def register(subparsers) -> None:
 def run(args) -> int:
     from kinefuse.host.link import stats
     from kinefuse.host.link.frames import decode_file
-    with console(args.json).status(f"decoding {args.file}"):
-        result = stats.compute(decode_file(args.file, raw=args.raw))
+    from kinefuse.host.link.cli_util import progress
+    with progress(console(args.json), f"decoding {args.file}") as tick:
+        result = stats.compute(decode_file(args.file, raw=args.raw, progress=tick))
     if args.json:
         print_json(result)
         return 0
     con = console()
     from rich.table import Table
     con.print(f"{result['file']}" + (f" (started {result['start_utc']})" if result.get("start_utc") else ""))
+    fd = result.get("file_damage")
+    if fd is not None:
+        con.print(f"file: {fd['chunks']:,} chunks, {fd['damaged_chunks']} damaged "
+                  f"({fd['recovered_chunks']} recovered), {fd['skipped_bytes']:,} bytes skipped"
+                  + (", truncated" if fd["truncated"] else ""))
     for s in result["streams"]:
         con.print(f"\n[bold]stream {s['id']}[/] {s['connection']}: {s['frames_ok']:,} frames, "
                   f"{s['crc_errors']} CRC errors, {s['bytes_skipped']:,} bytes skipped, "
@@ -55,10 +61,12 @@ def run(args) -> int:
             c = u.get("clock")
             if c:
                 dm = c["delay_above_min_ms"]
-                con.print(f"  clock ({c['reference']}, {c['points']:,} points over {c['span_s']:.1f} s): "
+                style = "[yellow]" if c.get("warnings") else ""
+                con.print(f"  {style}clock ({c['reference']}, {c['points']:,} points over {c['span_s']:.1f} s"
+                          + (f", first {c['excluded_leading']} left out" if c.get("excluded_leading") else "") + "): "
                           f"drift {c['drift_ppm']:+.1f} ppm (unit vs host), offset {c['offset_s']:.6f} s; "
                           f"delay above minimum median {dm['median']:.2f} ms, p95 {dm['p95']:.2f} ms, "
-                          f"max {dm['max']:.2f} ms")
+                          f"max {dm['max']:.2f} ms" + ("[/]" if style else ""))
             lat = u.get("latency")
             if lat:
                 r = lat["timesync_rtt_ms"]
@@ -67,4 +75,8 @@ def run(args) -> int:
             rep = u.get("unit_reported")
             if rep:
                 con.print("  unit reports: " + ", ".join(f"{k} {v}" for k, v in rep.items() if v is not None))
+    if result["warnings"]:
+        con.print()
+    for w in result["warnings"]:
+        con.print(f"[yellow]warning:[/] {w}")
     return 0

@@ -1,6 +1,7 @@
 """Small helpers shared by the link commands (record, decode, export, stats, params, ports)."""
 from __future__ import annotations
 
+import contextlib
 import json
 import sys
 
@@ -40,3 +41,31 @@ def fmt_bytes(n: int) -> str:
             return f"{n:.0f} {unit}" if unit == "B" else f"{n:.1f} {unit}"
         n /= 1000
     return f"{n} B"
+
+
+@contextlib.contextmanager
+def progress(con, description: str):
+    """A progress bar on ``con`` (a terminal only; nothing when output is piped) for work that
+    reports ``tick(fraction)``; also installed as the decoder's progress hook
+    (:data:`kinefuse.host.link.frames.PROGRESS`), so code that decodes a recording deeper down
+    (the .kfr reader of replay) moves the bar too."""
+    from kinefuse.host.link import frames
+    if not con.is_terminal:
+        token = frames.PROGRESS.set(None)
+        try:
+            yield lambda fraction: None
+        finally:
+            frames.PROGRESS.reset(token)
+        return
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+    with Progress(TextColumn("{task.description}"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
+                  TimeElapsedColumn(), console=con, transient=True) as bar:
+        task = bar.add_task(description, total=1.0)
+
+        def tick(fraction: float) -> None:
+            bar.update(task, completed=min(1.0, max(0.0, float(fraction))))
+        token = frames.PROGRESS.set(tick)
+        try:
+            yield tick
+        finally:
+            frames.PROGRESS.reset(token)

@@ -10,6 +10,7 @@ streaming decoder, at numpy speed.
 """
 from __future__ import annotations
 
+import contextvars
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -19,6 +20,10 @@ from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.batch import decode_all
 from kinefuse.host.link.decoder import Counters
 from kinefuse.host.link.recording import MAGIC, Recording, StreamData, load
+
+
+# progress of decode_file when no callback is passed: tick(fraction in 0..1) or None
+PROGRESS: contextvars.ContextVar = contextvars.ContextVar("kinefuse_decode_progress", default=None)
 
 
 @dataclass
@@ -104,8 +109,12 @@ def decode_tlog(path: Path, msgids=None) -> DecodedFile:
     return DecodedFile(path, None, {0: ds}, clock=(first or 0, first or 0), kind="MAVLink telemetry log (tlog)")
 
 
-def decode_file(path, raw: bool = False, msgids=None) -> DecodedFile:
-    """Decode a .kfr recording, a .tlog, or with ``raw=True`` a plain MAVLink byte capture."""
+def decode_file(path, raw: bool = False, msgids=None, progress=None) -> DecodedFile:
+    """Decode a .kfr recording, a .tlog, or with ``raw=True`` a plain MAVLink byte capture.
+
+    ``progress``: ``tick(fraction)`` called as the work goes on (reading the chunks: 0-0.5,
+    decoding stream by stream: 0.5-1); default: the :data:`PROGRESS` context hook."""
+    tick = progress if progress is not None else PROGRESS.get()
     path = Path(path)
     if not path.exists():
         raise KinefuseError(f"{path}: no such file")
@@ -122,6 +131,12 @@ def decode_file(path, raw: bool = False, msgids=None) -> DecodedFile:
             raise KinefuseError(f"cannot read {path}: {exc.strerror or exc}") from None
         sd = StreamData(0, data)
         return DecodedFile(path, None, {0: decode_stream(sd, {"id": 0, "connection": f"file:{path}"}, msgids)})
-    rec = load(path)
-    streams = {sid: decode_stream(sd, rec.stream_info(sid), msgids) for sid, sd in sorted(rec.streams.items())}
+    rec = load(path, progress=None if tick is None else (lambda f: tick(0.5 * f)))
+    total = sum(len(sd.rx) for sd in rec.streams.values()) or 1
+    done, streams = 0, {}
+    for sid, sd in sorted(rec.streams.items()):
+        streams[sid] = decode_stream(sd, rec.stream_info(sid), msgids)
+        done += len(sd.rx)
+        if tick is not None:
+            tick(0.5 + 0.5 * done / total)
     return DecodedFile(path, rec, streams)

@@ -18,8 +18,13 @@ Layout (all little-endian)::
   after the last fsync and what was still being gathered: < 1 s); both checked by the state
   machine in host/tests/test_recorder_kill.py.
 - A truncated file decodes up to the truncation: a partial last chunk still yields the bytes
-  it holds (MAVLink CRCs protect the frames); a damaged chunk is skipped by searching the next
-  chunk marker whose CRC matches.
+  it holds (MAVLink CRCs protect the frames).  A damaged chunk whose header still checks out
+  (marker, type, a stream of the header, and the next chunk or the end of the file right
+  where its length says) is an RX chunk with damaged payload bytes: its bytes are kept and the
+  MAVLink CRCs drop only the frames touched by the damage (a flipped bit costs one frame, not
+  the chunk's 50); a read table that no longer makes sense is replaced by one read at the
+  chunk's time, a chunk time out of line with its neighbours by the previous chunk's.  Any
+  other damage is skipped by searching the next chunk marker whose CRC matches.
 """
 from __future__ import annotations
 
@@ -169,6 +174,7 @@ class Chunk:
     payload: bytes
     offset: int            # file offset of the chunk header
     truncated: bool = False
+    damaged: bool = False  # payload CRC failed (header plausible): bytes kept, frames checked by MAVLink
 
 
 @dataclass
@@ -195,9 +201,11 @@ class Recording:
     header: dict
     streams: dict            # stream id -> StreamData
     chunks: int = 0
-    damaged_chunks: int = 0  # damaged stretches skipped (CRC or header failed)
+    damaged_chunks: int = 0  # damaged stretches (CRC or header failed), recovered ones included
     truncated: bool = False  # the file ends inside a chunk
     trailing_bytes: int = 0  # bytes after the last complete chunk
+    recovered_chunks: int = 0  # damaged RX chunks whose bytes were kept (frames checked by their CRCs)
+    skipped_bytes: int = 0   # file bytes of damaged stretches that were skipped
 
     @property
     def start_monotonic_ns(self) -> int:
@@ -234,27 +242,44 @@ def read_header(f, path) -> tuple[dict, int]:
     return header, FILE_HEAD.size + n + 4
 
 
-def iter_chunks(data: bytes, start: int, stats: dict | None = None):
-    """Chunks of a recording body; resynchronises after damage; yields a partial last chunk."""
+def iter_chunks(data: bytes, start: int, stats: dict | None = None, streams=None):
+    """Chunks of a recording body; resynchronises after damage; yields a partial last chunk.
+
+    ``streams``: the stream ids of the header; with it, an RX chunk whose payload CRC fails but
+    whose header checks out is yielded with ``damaged=True`` (see the module docstring)."""
     stats = stats if stats is not None else {}
     stats.setdefault("damaged", 0)
+    stats.setdefault("recovered", 0)
+    stats.setdefault("skipped_bytes", 0)
     stats.setdefault("truncated", False)
     stats.setdefault("trailing", 0)
     i, n = start, len(data)
+    prev_t = None
     while i < n:
         if n - i < CHUNK.size:  # the file stops inside a chunk header
             stats["truncated"] = True
             stats["trailing"] = n - i
             return
         state = _chunk_state(data, i)
+        if state == "damaged" and streams is not None:
+            ch = _damaged_rx(data, i, streams, prev_t)
+            if ch is not None:
+                stats["damaged"] += 1
+                stats["recovered"] += 1
+                prev_t = ch.t_ns
+                yield ch
+                i = i + CHUNK.size + len(ch.payload)
+                continue
         if state == "damaged":
             # One damaged stretch counts once: resume at the next header whose CRC holds (a
             # "kc" inside a payload or a CRC field is not taken for a chunk).
             stats["damaged"] += 1
-            j = _next_good_chunk(data, i + 1)
+            j = _next_good_chunk(data, i + 1, streams)
             if j < 0:
                 stats["trailing"] = n - i
+                stats["skipped_bytes"] += n - i
                 return
+            stats["skipped_bytes"] += j - i
             i = j
             continue
         marker, ctype, stream, length, t_ns, crc = CHUNK.unpack_from(data, i)
@@ -264,8 +289,32 @@ def iter_chunks(data: bytes, start: int, stats: dict | None = None):
             stats["trailing"] = n - i
             yield Chunk(ctype, stream, t_ns, data[body_start:n], i, truncated=True)
             return
+        prev_t = t_ns
         yield Chunk(ctype, stream, t_ns, data[body_start:body_start + length], i)
         i = body_start + length
+
+
+def _plausible_header(data: bytes, i: int, streams) -> bool:
+    """A chunk header at i that makes sense (marker, type, a stream of the header, a length that
+    ends inside the file), whatever its payload CRC says."""
+    if len(data) - i < CHUNK.size:
+        return False
+    marker, ctype, stream, length, _t, _crc = CHUNK.unpack_from(data, i)
+    return (marker == MARKER and ctype in CHUNK_TYPES and stream in streams and length <= MAX_CHUNK
+            and i + CHUNK.size + length <= len(data))
+
+
+def _damaged_rx(data: bytes, i: int, streams, prev_t) -> Chunk | None:
+    """An RX chunk at i whose payload CRC failed but whose header is intact (marker, type, a
+    known stream, and the next chunk -- or the end of the file -- exactly after its length)."""
+    marker, ctype, stream, length, t_ns, _crc = CHUNK.unpack_from(data, i)
+    if marker != MARKER or ctype != RX or stream not in streams or length > MAX_CHUNK:
+        return None
+    end = i + CHUNK.size + length
+    if end > len(data) or (end < len(data) and _chunk_state(data, end) != "ok"
+                           and not _plausible_header(data, end, streams)):
+        return None
+    return Chunk(ctype, stream, t_ns, data[i + CHUNK.size:end], i, damaged=True)
 
 
 def _chunk_state(data: bytes, i: int) -> str:
@@ -281,18 +330,20 @@ def _chunk_state(data: bytes, i: int) -> str:
     return "ok" if _crc32(data[i + CHUNK.size:end]) == crc else "damaged"
 
 
-def _next_good_chunk(data: bytes, i: int) -> int:
+def _next_good_chunk(data: bytes, i: int, streams=None) -> int:
     """Offset of the next chunk header at or after i that checks out, or -1.
 
-    A header that runs past the end of the file is taken only if no whole chunk follows it
-    (a stray "kc" with a plausible length must not swallow the rest of the file)."""
+    With ``streams``, an RX chunk with a damaged payload but an intact header (followed by a
+    good chunk) counts too.  A header that runs past the end of the file is taken only if no
+    whole chunk follows it (a stray "kc" with a plausible length must not swallow the rest)."""
     partial = -1
     while True:
         j = data.find(MARKER, i)
         if j < 0:
             return partial
         state = _chunk_state(data, j)
-        if state == "ok":
+        if state == "ok" or (state == "damaged" and streams is not None
+                             and _damaged_rx(data, j, streams, None) is not None):
             return j
         if state == "truncated" and partial < 0:
             partial = j
@@ -300,12 +351,22 @@ def _next_good_chunk(data: bytes, i: int) -> int:
 
 
 def _rx_parts(chunk: Chunk):
-    """(data, [(end, t_ns)]) of an RX chunk; tolerant of a truncated payload."""
+    """(data, [(end, t_ns)]) of an RX chunk; tolerant of a truncated or damaged payload."""
     p = chunk.payload
     if len(p) < 4:
         return b"", []
     nreads = struct.unpack_from("<I", p)[0]
     table_end = 4 + 8 * nreads
+    if chunk.damaged:
+        entries = ([READ_ENTRY.unpack_from(p, 4 + 8 * k) for k in range(nreads)]
+                   if table_end <= len(p) else None)
+        ends = [e for e, _ in entries] if entries else []
+        dts = [d for _, d in entries] if entries else []
+        if not (entries and ends[-1] == len(p) - table_end and all(a < b for a, b in zip(ends, ends[1:]))
+                and all(a <= b for a, b in zip(dts, dts[1:])) and dts[-1] <= 60_000_000):
+            # the read table is what got damaged: all bytes after the count, one read time
+            # (the MAVLink decoder skips the table's bytes as garbage)
+            return p[4:], [(len(p) - 4, chunk.t_ns)]
     if table_end > len(p):  # truncated inside the read table: no data bytes survive
         return b"", []
     entries = [READ_ENTRY.unpack_from(p, 4 + 8 * k) for k in range(nreads)]
@@ -321,8 +382,32 @@ def _rx_parts(chunk: Chunk):
     return data, reads
 
 
-def load(path) -> Recording:
-    """Read a whole recording into memory (raw bytes per stream + read times + metadata)."""
+def _repair_chunk_times(ts: np.ndarray, chunks) -> int:
+    """Read times of one stream in place: RX chunks of a stream are written in time order, so
+    a chunk whose time field is out of line with its neighbours (the header's t_ns is not under
+    the payload CRC) is shifted onto its predecessor's last read.  Returns how many."""
+    fixed = 0
+    for j in range(1, len(chunks)):
+        a, n = chunks[j]
+        if not n:
+            continue
+        pa, pn = chunks[j - 1]
+        if not pn or ts[a] >= ts[pa + pn - 1]:
+            continue
+        # out of order with the previous chunk: this one is too early, or the previous too late
+        if j >= 2 and chunks[j - 2][1] and ts[pa] > ts[a] >= ts[chunks[j - 2][0] + chunks[j - 2][1] - 1]:
+            qa, qn = chunks[j - 2]
+            ts[pa:pa + pn] += ts[qa + qn - 1] - ts[pa]
+        else:
+            ts[a:a + n] += ts[pa + pn - 1] - ts[a]
+        fixed += 1
+    return fixed
+
+
+def load(path, progress=None) -> Recording:
+    """Read a whole recording into memory (raw bytes per stream + read times + metadata).
+
+    ``progress``: ``tick(fraction of the file read)``, called about every MB."""
     path = Path(path)
     try:
         raw = path.read_bytes()
@@ -337,18 +422,24 @@ def load(path) -> Recording:
     streams: dict[int, dict] = {}
     stats: dict = {}
     n_chunks = 0
-    for ch in iter_chunks(raw, start, stats):
+    ids = {s.get("id") for s in header.get("streams", []) if isinstance(s, dict)}
+    next_tick = 0
+    for ch in iter_chunks(raw, start, stats, streams=ids):
         n_chunks += 1
+        if progress is not None and ch.offset >= next_tick:
+            progress(ch.offset / len(raw))
+            next_tick = ch.offset + (1 << 20)
         s = streams.setdefault(ch.stream, {"rx": [], "ends": [], "ts": [], "tx": [], "meta": [], "n": 0})
         if ch.type == RX:
             data, reads = _rx_parts(ch)
             base = s["n"]
+            s.setdefault("chunks", []).append((len(s["ts"]), len(reads)))
             for end, t in reads:
                 s["ends"].append(base + end)
                 s["ts"].append(t)
             s["rx"].append(data)
             s["n"] += len(data)
-        elif ch.type == TX:
+        elif ch.type == TX and not ch.damaged:
             s["tx"].append(ch.payload)
         elif ch.type == META and not ch.truncated:
             try:
@@ -359,11 +450,17 @@ def load(path) -> Recording:
             s["meta"].append(obj)
     out = {}
     for sid, s in streams.items():
-        out[sid] = StreamData(sid, b"".join(s["rx"]), np.array(s["ends"], np.int64),
-                              np.array(s["ts"], np.int64), b"".join(s["tx"]), s["meta"])
+        ts = np.array(s["ts"], np.int64)
+        bad_times = _repair_chunk_times(ts, s.get("chunks", []))
+        stats["damaged"] += bad_times
+        stats["recovered"] += bad_times
+        out[sid] = StreamData(sid, b"".join(s["rx"]), np.array(s["ends"], np.int64), ts,
+                              b"".join(s["tx"]), s["meta"])
     for info in header.get("streams", []):
         sid = info.get("id")
         if isinstance(sid, int) and sid not in out:
             out[sid] = StreamData(sid)
+    if progress is not None:
+        progress(1.0)
     return Recording(path, header, out, n_chunks, stats.get("damaged", 0), stats.get("truncated", False),
-                     stats.get("trailing", 0))
+                     stats.get("trailing", 0), stats.get("recovered", 0), stats.get("skipped_bytes", 0))

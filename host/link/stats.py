@@ -64,6 +64,8 @@ def fit_clock(device_s: np.ndarray, host_s: np.ndarray, blocks: int = 40) -> dic
     if not ok.any():
         return None
     slope = float(np.median((by[j] - by[i])[ok] / dx[ok]))
+    if not slope > 0:       # host time not advancing (one read time for everything): no fit
+        return None
     resid0 = y - slope * x
     offset = float(resid0.min())
     excess = resid0 - offset
@@ -76,6 +78,65 @@ def fit_clock(device_s: np.ndarray, host_s: np.ndarray, blocks: int = 40) -> dic
         "points": int(n),
         "span_s": float(x[-1] - x[0]),
     }
+
+
+DRIFT_PLAUSIBLE_PPM = 1000.0   # crystals: tens of ppm; RC oscillators: a few thousand at worst
+STALE_EXCESS_S = 0.05          # leading frames this much later than the live line: queued before
+JUMP_S = 0.02                  # a rise of the minimum delay by this much: a latency/offset jump
+
+
+def leading_stale(device_s: np.ndarray, host_s: np.ndarray) -> int:
+    """Number of leading frames that were queued before the recording started (the bytes a pty
+    or serial buffer held, delivered in a burst: host time barely moves while device time does).
+
+    Fit on the last 80 % and count the leading run whose delay above that line exceeds
+    STALE_EXCESS_S (0 when the fit is not possible)."""
+    x = np.asarray(device_s, np.float64)
+    y = np.asarray(host_s, np.float64)
+    n = x.size
+    tail = fit_clock(x[n // 5:], y[n // 5:]) if n >= 50 else None
+    if tail is None:
+        return 0
+    excess = y - (tail["offset_s"] + tail["slope"] * x)
+    late = excess > STALE_EXCESS_S
+    if not late[0]:
+        return 0
+    k = int(np.argmin(late)) if not late.all() else n
+    return k if k < n // 2 else 0       # a majority of "stale" frames is a bad fit, not a burst
+
+
+def fit_clock_checked(device_s, host_s, blocks: int = 40) -> dict | None:
+    """:func:`fit_clock` without a leading burst of stale frames, plus plausibility warnings:
+    ``excluded_leading`` (frames left out), ``warnings`` (texts; empty when plausible)."""
+    x = np.asarray(device_s, np.float64)
+    y = np.asarray(host_s, np.float64)
+    k = leading_stale(x, y)
+    fit = fit_clock(x[k:], y[k:], blocks)
+    if fit is None:
+        return None
+    fit["excluded_leading"] = k
+    warn = []
+    if k:
+        warn.append(f"the first {k} frames ({x[k] - x[0]:.2f} s of unit time) arrived in a burst at the start "
+                    f"(queued before the recording, e.g. in a pty or serial buffer): left out of the clock fit")
+    if abs(fit["drift_ppm"]) > DRIFT_PLAUSIBLE_PPM:
+        warn.append(f"implausible clock fit: drift {fit['drift_ppm']:+,.0f} ppm (unit clocks are within about "
+                    f"+-{DRIFT_PLAUSIBLE_PPM:.0f} ppm): offset, drift and latency figures are unreliable "
+                    f"(stale or reordered data, a clock step, or a host that stalled)")
+    # a jump: the per-block minimum delay above the line rises by more than JUMP_S
+    xs, ys = x[k:], y[k:]
+    nb = int(min(blocks, xs.size // 5))
+    if nb >= 4:
+        resid = ys - (fit["offset_s"] + fit["slope"] * xs)
+        edges = np.linspace(0, xs.size, nb + 1).astype(int)
+        mins = np.array([resid[a:b].min() for a, b in zip(edges[:-1], edges[1:])])
+        rise = float(mins.max() - mins.min())
+        fit["min_delay_range_ms"] = rise * 1e3
+        if rise > JUMP_S:
+            warn.append(f"the minimum delay changes by {rise * 1e3:.1f} ms within the recording (a latency or "
+                        f"offset jump: unit reboot, clock step, host stall or link change): the fit may be off")
+    fit["warnings"] = warn
+    return fit
 
 
 def _last_segment(t_us: np.ndarray) -> slice:
@@ -138,10 +199,11 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
         t_us = arr["time_boot_us"][rows]
         seg = _last_segment(t_us)
         host = (ds.host_ns[clock_ref][rows][seg] - start_ns) / 1e9
-        fit = fit_clock(t_us[seg].astype(np.float64) / 1e6, host)
+        fit = fit_clock_checked(t_us[seg].astype(np.float64) / 1e6, host)
         if fit is not None:
             fit["reference"] = d.get(clock_ref).name
             out["clock"] = fit
+            out.setdefault("warnings", []).extend(f"unit {sysid}: {w}" for w in fit["warnings"])
     if MSG_TIMESYNC in ds.arrays and ds.host_ns.get(MSG_TIMESYNC) is not None:
         ts = ds.arrays[MSG_TIMESYNC]
         sel = (ts["_sysid"] == sysid) & (ts["tc1"] != 0)
@@ -160,7 +222,20 @@ def compute(df: DecodedFile) -> dict:
     start = df.start_monotonic_ns
     header = df.header
     result = {"file": str(df.path), "format": header.get("format"), "start_utc": header.get("start_utc"),
-              "streams": []}
+              "streams": [], "warnings": []}
+    rec = df.recording
+    if rec is not None:
+        result["file_damage"] = {"chunks": rec.chunks, "damaged_chunks": rec.damaged_chunks,
+                                 "recovered_chunks": rec.recovered_chunks,
+                                 "skipped_bytes": rec.skipped_bytes, "truncated": rec.truncated}
+        if rec.damaged_chunks:
+            result["warnings"].append(damage_text(rec))
+        if rec.truncated:
+            result["warnings"].append("the recording is truncated (ends inside a chunk): read up to the cut")
+        for sid, sd in rec.streams.items():
+            for m in sd.meta:
+                if m.get("type") in ("warning", "error") and m.get("text"):
+                    result["warnings"].append(f"recorder {m['type']} (stream {sid}): {m['text']}")
     for sid, ds in sorted(df.streams.items()):
         s = {"id": sid, "connection": ds.info.get("connection"), "bytes": ds.rx_bytes, **ds.counters.as_dict()}
         s.pop("bytes_in", None)
@@ -174,8 +249,21 @@ def compute(df: DecodedFile) -> dict:
         s["units"] = [u for u in units if any(k in KF_NAMES for k in u["messages"]) or "firmware_version" in u] \
             or units
         s["other_systems"] = [u["sysid"] for u in units if u not in s["units"]]
+        for u in s["units"]:
+            result["warnings"].extend(f"stream {sid} {w}" for w in u.get("warnings", []))
         result["streams"].append(s)
     return result
+
+
+def damage_text(rec) -> str:
+    """One line on the damaged chunks of a recording."""
+    skipped = rec.damaged_chunks - rec.recovered_chunks
+    parts = []
+    if rec.recovered_chunks:
+        parts.append(f"{rec.recovered_chunks} recovered (their intact frames kept, checked by the MAVLink CRCs)")
+    if skipped:
+        parts.append(f"{skipped} skipped ({rec.skipped_bytes:,} bytes lost)")
+    return f"{rec.damaged_chunks} damaged chunk(s): " + ", ".join(parts)
 
 
 KF_NAMES = ("KF_RAW_SAMPLE", "KF_ORIENTATION", "KF_JOINT_ANGLE", "KF_EFFORTS", "KF_UNIT_STATUS")

@@ -137,6 +137,14 @@ def test_damage_resync_ignores_markers_inside_payloads(tmp_path):
     data[chunks[2].offset + recording.CHUNK.size + 20] ^= 0xFF
     rec = load_bytes(tmp_path, data)
     assert rec.damaged_chunks == 1 and not rec.truncated
+    # its header is intact: the bytes are kept (the MAVLink CRCs judge the frames in them)
+    damaged = bytearray(payloads[2])
+    damaged[20 - 12] ^= 0xFF                      # payload = u32 count + one 8-byte read entry + bytes
+    assert rec.recovered_chunks == 1
+    assert rec.streams[0].rx == b"".join(payloads[:2] + [bytes(damaged)] + payloads[3:])
+    data[chunks[2].offset + 4] ^= 0x40            # its length too: now skipped, the rest still found
+    rec = load_bytes(tmp_path, data)
+    assert rec.damaged_chunks == 1 and rec.recovered_chunks == 0
     assert rec.streams[0].rx == b"".join(payloads[:2] + payloads[3:])
 
 
