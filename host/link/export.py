@@ -1,9 +1,16 @@
 """CSV export: one file per message type, units in the column names, device and host times.
 
 Columns: kinefuse messages start with ``t_s`` (the unit's clock, seconds since boot), then
-``host_time_s`` (host monotonic clock, seconds since the recording started), ``host_unix_s``
-(UTC as UNIX seconds, from the header's clock pair), ``stream``, ``sysid``, ``compid``, ``seq``
-and the payload fields; other messages start with ``host_time_s``.  Fields carry their unit as a
+``host_time_s`` (host monotonic clock when the frame was received, seconds since the recording
+started), ``host_unix_s`` (the same as UTC UNIX seconds, from the header's clock pair),
+``host_fit_s`` (``t_s`` mapped onto the host clock through the unit's device -> host clock fit,
+seconds since the recording started: when the sample was taken, on the one host clock all
+units of a recording share, free of the link's delay jitter -- the column to time-align the
+CSVs of several units; as ``kinefuse stats`` fits it: lower envelope, a leading burst of stale
+frames left out, one fit per device-clock segment), ``stream``, ``sysid``, ``compid``, ``seq``
+and the payload fields; other messages start with ``host_time_s``.  Comment lines (``#``)
+before the header name the recording, the unit (stream, connection, system id, firmware) and
+its clock fit.  Fields carry their unit as a
 suffix (``time_boot_us``, ``acc_x_mps2``); kinefuse messages are converted to SI first:
 
 - KF_RAW_SAMPLE: ``acc_*_mps2``, ``gyr_*_radps``, ``mag_*_uT``, ``temperature_degC``;
@@ -123,6 +130,13 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
                 by_msg.setdefault(mid, []).append((sid, arr, ds.host_ns.get(mid)))
     start_mono = df.start_monotonic_ns
     start_unix = df.start_unix_ns
+    from kinefuse.host.link.stats import host_time_from_fit, unit_clock_segments
+    clocks: dict = {}
+
+    def clock(sid: int, sysid: int) -> list:
+        if (sid, sysid) not in clocks:
+            clocks[(sid, sysid)] = unit_clock_segments(df.streams[sid], sysid, start_mono)
+        return clocks[(sid, sysid)]
     written = []
     for mid, parts in sorted(by_msg.items()):
         spec = d.get(mid)
@@ -143,15 +157,22 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
                 arr, stream, host = arr[order], stream[order], host[order]
             if "time_boot_us" in arr.dtype.names and spec.name.startswith("KF_"):
                 cols.append(("t_s", arr["time_boot_us"] / 1e6, "%.6f"))
+            pairs = sorted({(int(a), int(b)) for a, b in zip(stream, arr["_sysid"])}) if arr.size else []
             if has_host:
                 cols.append(("host_time_s", (host - start_mono) / 1e9, "%.6f"))
                 cols.append(("host_unix_s", (start_unix + (host - start_mono)) / 1e9, "%.6f"))
+                if "time_boot_us" in arr.dtype.names and spec.name.startswith("KF_"):
+                    fit_t = np.full(arr.size, np.nan)
+                    for sid, sysid in pairs:
+                        m = (stream == sid) & (arr["_sysid"] == sysid)
+                        fit_t[m] = host_time_from_fit(clock(sid, sysid), arr["time_boot_us"][m], host[m])
+                    cols.append(("host_fit_s", fit_t, "%.6f"))
             cols += [("stream", stream, "%d"), ("sysid", arr["_sysid"], "%d"), ("compid", arr["_compid"], "%d"),
                      ("seq", arr["_seq"], "%d")]
             cols += _columns(spec, arr)
             fname = spec.name if unit is None else f"{spec.name}_s{unit[0]}_u{unit[1]}"
             path = out_dir / f"{fname}.csv"
-            _write(path, cols, arr.size)
+            _write(path, cols, arr.size, _comments(df, spec.name, pairs, clock if has_host else None))
             written.append({"message": spec.name, "file": str(path), "rows": int(arr.size),
                             **({} if unit is None else {"stream": unit[0], "sysid": unit[1]})})
             if progress is not None:
@@ -159,12 +180,41 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
     return written
 
 
-def _write(path: Path, cols, rows: int, block: int = 50_000) -> None:
+def _comments(df: DecodedFile, name: str, pairs, clock) -> list[str]:
+    """The ``#`` lines of a CSV: recording, unit(s), time columns and clock fits."""
+    out = [f"kinefuse export of {df.path} ({df.header.get('format')}, started {df.header.get('start_utc')}): {name}"]
+    for sid, sysid in pairs:
+        ds = df.streams[sid]
+        fw = next((m.get("firmware_version_text") for m in ds.meta
+                   if m.get("type") == "unit_status" and m.get("sysid") == sysid), None)
+        line = (f"unit: system id {sysid}, stream {sid} ({ds.info.get('connection', '?')})"
+                + (f", firmware {fw}" if fw else ""))
+        if clock is not None and name.startswith("KF_"):
+            segs = clock(sid, sysid)
+            if segs:
+                line += "; clock fit: " + "; ".join(
+                    f"host = {sg['offset_s']:.6f} s + {sg['slope']:.9f} x t_s ({sg['drift_ppm']:+.1f} ppm, "
+                    f"{sg['points']} {sg['reference']} points"
+                    + (f", first {sg['excluded_leading']} left out" if sg["excluded_leading"] else "") + ")"
+                    + (f" [{'; '.join(sg['warnings'])}]" if sg["warnings"] else "") for sg in segs)
+            else:
+                line += "; no clock fit (too few samples): host_fit_s empty"
+        out.append(line)
+    if clock is not None and name.startswith("KF_"):
+        out.append("t_s: unit clock, s since boot; host_time_s: host receive time, s since the recording "
+                   "started; host_unix_s: the same as UNIX time; host_fit_s: t_s on the host clock "
+                   "through the unit's clock fit (common to all units of the recording: align on it)")
+    return out
+
+
+def _write(path: Path, cols, rows: int, comments=(), block: int = 50_000) -> None:
     try:
         f = open(path, "w", newline="")
     except OSError as exc:
         raise KinefuseError(f"cannot write {path}: {exc.strerror or exc}") from None
     with f:
+        for c in comments:
+            f.write("# " + c.replace("\n", " ") + "\n")
         f.write(",".join(c[0] for c in cols) + "\n")
         if any(c[2] == "%s" for c in cols):  # strings: csv module quotes what needs quoting
             w = csv.writer(f, lineterminator="\n")

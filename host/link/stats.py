@@ -139,6 +139,50 @@ def fit_clock_checked(device_s, host_s, blocks: int = 40) -> dict | None:
     return fit
 
 
+def unit_clock_segments(ds, sysid: int, start_ns: int) -> list[dict]:
+    """The unit's device -> host clock, one fit per device-clock segment (a reboot starts one):
+    [{"host_from_ns", "offset_s", "slope", "drift_ppm", "points", "excluded_leading", "warnings"}]
+    from its KF_RAW_SAMPLE (else another kinefuse message with ``time_boot_us``) frames;
+    host = offset_s + slope * device seconds, in seconds since ``start_ns``.  [] without host times."""
+    for mid in (MSG_RAW, MSG_ORI, 52502, 52503, MSG_STATUS):
+        arr = ds.arrays.get(mid)
+        host_ns = ds.host_ns.get(mid)
+        if arr is None or host_ns is None:
+            continue
+        rows = arr["_sysid"] == sysid
+        if rows.sum() < 2:
+            continue
+        dev = arr["time_boot_us"][rows].astype(np.int64)
+        h = host_ns[rows].astype(np.int64)
+        cuts = [0] + [int(k) + 1 for k in np.flatnonzero(np.diff(dev) < 0)] + [dev.size]
+        out = []
+        for a, b in zip(cuts[:-1], cuts[1:]):
+            x, y = dev[a:b] / 1e6, (h[a:b] - start_ns) / 1e9
+            fit = fit_clock_checked(x, y) if b - a >= 10 else None
+            if fit is None:   # too few points for the robust fit: the offset of the lower envelope
+                fit = {"slope": 1.0, "offset_s": float(np.min(y - x)), "drift_ppm": 0.0, "points": int(b - a),
+                       "excluded_leading": 0, "warnings": ["too few samples for a drift fit: offset only"]}
+            out.append({"host_from_ns": int(h[a]), **{k: fit[k] for k in ("offset_s", "slope", "drift_ppm", "points",
+                                                                         "excluded_leading", "warnings")},
+                        "reference": kinefuse_dialect().get(mid).name})
+        return out
+    return []
+
+
+def host_time_from_fit(segments: list[dict], device_us, host_ns) -> np.ndarray:
+    """Device times (us) -> host seconds since the recording start through the unit's clock
+    fit; the segment is chosen by the frame's host receive time.  NaN without a fit."""
+    t = np.asarray(device_us, np.float64) / 1e6
+    out = np.full(t.shape, np.nan)
+    if not segments:
+        return out
+    starts = np.array([sg["host_from_ns"] for sg in segments], np.int64)
+    k = np.clip(np.searchsorted(starts, np.asarray(host_ns, np.int64), side="right") - 1, 0, len(segments) - 1)
+    off = np.array([sg["offset_s"] for sg in segments])[k]
+    slope = np.array([sg["slope"] for sg in segments])[k]
+    return off + slope * t
+
+
 def _last_segment(t_us: np.ndarray) -> slice:
     """Rows after the last reset of the device clock (time going backwards)."""
     back = np.flatnonzero(np.diff(t_us.astype(np.int64)) < 0)

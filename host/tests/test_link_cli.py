@@ -75,14 +75,17 @@ def test_record_decode_stats_export(run, tmp_path):
     code, stdout, _ = run("export", out, "--out", tmp_path / "csv", "--json")
     files = {f["file"].rsplit("/", 1)[-1]: f["rows"] for f in json.loads(stdout)["files"]}
     assert files["KF_RAW_SAMPLE_s0_u1.csv"] == s0["messages"]["KF_RAW_SAMPLE"]
-    header = (tmp_path / "csv" / "KF_RAW_SAMPLE_s0_u1.csv").read_text().splitlines()[0].split(",")
-    assert header[:3] == ["t_s", "host_time_s", "host_unix_s"]
+    lines = [ln for ln in (tmp_path / "csv" / "KF_RAW_SAMPLE_s0_u1.csv").read_text().splitlines()
+             if not ln.startswith("#")]                     # '#' lines name the unit and its clock fit
+    header = lines[0].split(",")
+    assert header[:4] == ["t_s", "host_time_s", "host_unix_s", "host_fit_s"]
     for col in ("acc_x_mps2", "gyr_z_radps", "mag_y_uT", "temperature_degC", "sample_counter"):
         assert col in header
-    ori = (tmp_path / "csv" / "KF_ORIENTATION_s1_u2.csv").read_text().splitlines()
+    ori = [ln for ln in (tmp_path / "csv" / "KF_ORIENTATION_s1_u2.csv").read_text().splitlines()
+           if not ln.startswith("#")]
     assert "quat_w" in ori[0] and "cov_zz_rad2" in ori[0]
     # the exported unit file is a "plain kinefuse CSV" for the readers package
-    row = dict(zip(header, (tmp_path / "csv" / "KF_RAW_SAMPLE_s0_u1.csv").read_text().splitlines()[1].split(",")))
+    row = dict(zip(header, lines[1].split(",")))
     assert 9.0 < (sum(float(row[f"acc_{a}_mps2"]) ** 2 for a in "xyz")) ** 0.5 < 10.6
 
 

@@ -1,0 +1,58 @@
+"""Exported CSVs of several units share a host-time column from each unit's device -> host
+clock fit (``host_fit_s``), and name their unit in ``#`` lines; the files stay "plain kinefuse
+CSV" for the readers."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from kinefuse.host.link.export import export_csv
+from kinefuse.host.link.frames import decode_file
+from kinefuse.host.readers import kinefuse_csv, read_recording
+
+
+@pytest.fixture(scope="module")
+def two_units(tmp_path_factory):
+    from kinefuse.host.link.recorder import Recorder
+    p = tmp_path_factory.mktemp("fit") / "both.kfr"
+    rec = Recorder(p, ["fake:rate=500", "fake:unit=2,rate=500,drift=300"])
+    units = [st.session.conn.unit for st in rec.streams]
+    start_ns = rec.header["start_monotonic_ns"]
+    rec.run(1.2)
+    return p, units, start_ns
+
+
+def _csv(path):
+    lines = path.read_text().splitlines()
+    comments = [ln for ln in lines if ln.startswith("#")]
+    rows = [ln for ln in lines if not ln.startswith("#")]
+    head = rows[0].split(",")
+    data = np.array([[float(x) for x in r.split(",")] for r in rows[1:]])
+    return comments, {h: data[:, k] for k, h in enumerate(head)}
+
+
+def test_host_fit_column_aligns_the_units(two_units, tmp_path):
+    p, units, start_ns = two_units
+    export_csv(decode_file(p), tmp_path, ["KF_RAW_SAMPLE", "KF_ORIENTATION"])
+    firsts = []
+    for sysid, stream, fu in ((1, 0, units[0]), (2, 1, units[1])):
+        f = tmp_path / f"KF_RAW_SAMPLE_s{stream}_u{sysid}.csv"
+        comments, c = _csv(f)
+        assert any(f"unit: system id {sysid}, stream {stream}" in x and "clock fit: host =" in x for x in comments)
+        assert list(c)[:4] == ["t_s", "host_time_s", "host_unix_s", "host_fit_s"]
+        # the same time base as the .kfr reader (replay, reports) ...
+        r = read_recording(str(p), unit=sysid)
+        assert np.allclose(c["host_fit_s"], r.t, atol=2e-6)
+        # ... which is when the fake unit's clock read that device time (+ the minimum delay)
+        truth = (fu.t0_ns - start_ns) / 1e9 + c["t_s"] / (1 + fu.drift)
+        err = c["host_fit_s"] - truth
+        assert -2e-4 <= err.min() and err.max() < 3e-3, (err.min(), err.max())   # as test_readers_kfr
+        # never after the frame was received (up to the fit's end-point tilt)
+        assert np.all(c["host_fit_s"] <= c["host_time_s"] + 2e-4)
+        ori = _csv(tmp_path / f"KF_ORIENTATION_s{stream}_u{sysid}.csv")[1]
+        assert np.all(np.isfinite(ori["host_fit_s"]))                # the same unit clock for its other messages
+        firsts.append(c["host_fit_s"][0])
+        # still a "plain kinefuse CSV" (comments before the header)
+        assert len(kinefuse_csv.read(str(f))) == c["t_s"].size
+    boot_diff = (units[1].t0_ns - units[0].t0_ns) / 1e9
+    assert abs((firsts[1] - firsts[0]) - boot_diff) < 3e-3
