@@ -359,8 +359,9 @@ def raw_frames(n: int, unit_id: int = 1, rate_hz: float = 1000.0, seed: int = 0,
 class FakeConnection(Connection):
     """Host end of a socket pair whose other end is driven by an in-process :class:`FakeUnit`.
 
-    Connection string ``fake:[rate=1000,ori=100,unit=1,drift=0,drop=0,corrupt=0,stream=1]`` (all
-    optional): try the host tools without hardware.
+    Connection string ``fake:[rate=1000,ori=100,unit=1,drift=0,drop=0,corrupt=0,stream=1,params=1]``
+    (all optional; params=0: a unit that does not answer the parameter protocol): try the host
+    tools without hardware.
     """
 
     def __init__(self, options: str = ""):
@@ -369,7 +370,8 @@ class FakeConnection(Connection):
         from kinefuse.host.link.connection import SocketConnection
         keys = {"rate": ("rate_hz", float), "ori": ("orientation_rate_hz", float), "unit": ("unit_id", int),
                 "drift": ("drift_ppm", float), "drop": ("drop_every", int), "corrupt": ("corrupt_probability", float),
-                "stream": ("streaming", lambda v: bool(int(v))), "seed": ("seed", int)}
+                "stream": ("streaming", lambda v: bool(int(v))), "seed": ("seed", int),
+                "params": ("answer_params", lambda v: bool(int(v)))}
         kw = {}
         for part in filter(None, options.split(",")):
             k, _, v = part.partition("=")

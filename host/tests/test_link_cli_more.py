@@ -1,0 +1,88 @@
+"""More of the link CLI: parameters in the recording by default, warnings instead of failures
+for a unit that does not answer or a connection of garbage, checked commands on a fake unit,
+argument checks."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from kinefuse.host import cli
+from kinefuse.host.link.fakeunit import raw_frames
+from kinefuse.host.link.recording import load
+
+
+@pytest.fixture
+def run(capsys):
+    def _run(*argv):
+        code = cli.main([str(a) for a in argv])
+        out, err = capsys.readouterr()
+        return code, out, err
+    return _run
+
+
+def _meta(path, kind):
+    return [m for sd in load(path).streams.values() for m in sd.meta if m.get("type") == kind]
+
+
+def test_parameters_are_recorded_by_default(run, tmp_path):
+    out = tmp_path / "p.kfr"
+    code, _, err = run("record", "--port", "fake:rate=200", "--out", out, "--duration", "0.3", "--json")
+    assert code == 0, err
+    (p,) = _meta(out, "params")
+    assert p["sysid"] == 1 and p["params"]["KF_UNIT_ID"] == 1 and load(out).header["params_requested"] is True
+    out2 = tmp_path / "n.kfr"
+    assert run("record", "--port", "fake:rate=200", "--out", out2, "--duration", "0.3", "--no-params",
+               "--json")[0] == 0
+    assert _meta(out2, "params") == [] and load(out2).header["params_requested"] is False
+
+
+def test_a_unit_that_does_not_answer_parameters_is_a_warning(run, tmp_path):
+    out = tmp_path / "q.kfr"
+    code, stdout, err = run("record", "--port", "fake:rate=200,params=0", "--out", out, "--duration", "0.3",
+                            "--json")
+    assert code == 0, err
+    assert "parameters of unit 1 not read" in " ".join(err.split())
+    assert any("parameters of unit 1 not read" in w["text"] for w in _meta(out, "warning"))
+    assert any("not read" in w for w in json.loads(stdout)["warnings"])
+
+
+def test_a_capture_of_garbage_or_without_a_unit_warns(run, tmp_path):
+    junk = tmp_path / "junk.bin"
+    junk.write_bytes(bytes(range(256)) * 3)                        # 768 bytes, no frame
+    code, _, err = run("record", "--port", f"file:{junk}", "--out", tmp_path / "j.kfr", "--duration", "1")
+    assert code == 0 and "no valid MAVLink 2 frame" in " ".join(err.split() + _words(tmp_path / "j.kfr"))
+    cap = tmp_path / "frames.bin"
+    cap.write_bytes(raw_frames(200))                                # frames, but nobody to answer
+    code, _, err = run("record", "--port", f"file:{cap}", "--out", tmp_path / "c.kfr", "--duration", "1")
+    assert code == 0
+    assert any("no HEARTBEAT" in w["text"] for w in _meta(tmp_path / "c.kfr", "warning"))
+
+
+def _words(path):
+    return " ".join(w["text"] for w in _meta(path, "warning")).split()
+
+
+def test_commands_on_a_fake_unit(run, tmp_path):
+    code, out, err = run("command", "--port", "fake:stream=0", "start", "--rate", "200", "--json")
+    assert code == 0 and json.loads(out) == {"accepted": ["MAV_CMD_SET_MESSAGE_INTERVAL", "MAV_CMD_KF_STREAM"],
+                                             "action": "start", "unit": 1}, err
+    for action in ("stop", "reset", "reboot"):
+        assert run("command", "--port", "fake:", action)[0] == 0
+    out = tmp_path / "s.kfr"
+    code, _, err = run("record", "--port", "fake:stream=0", "--out", out, "--duration", "0.4", "--start",
+                       "--rate", "250", "--json")
+    assert code == 0, err
+    assert "warning" not in err
+
+
+@pytest.mark.parametrize("argv, text", [
+    (["decode", "--show", "-3", "x.kfr"], "--show must be 0 or more"),
+    (["command", "--port", "fake:", "stop", "--rate", "5"], "--rate goes with start"),
+    (["live", "--port", "fake:", "--rate", "5", "--seconds", "1"], "--rate goes with --start"),
+    (["signing", "--port", "fake:", "--new-key", "0" * 64], "use --clear"),
+    (["signing"], "--port"),
+])
+def test_argument_errors_are_one_line(run, argv, text):
+    code, out, err = run(*argv)
+    assert code == 2 and err.count("\n") == 1 and text in err, err
