@@ -224,6 +224,23 @@ def knee_protocol(*, seed: int = 0, misalign_deg: float = 10.0, posture_deg: flo
     return out
 
 
+def squats(q_SB: dict, *, rng=None, n: int = 4, fs: float = 100.0, knee_deg: float = 80.0,
+           gyr_bias_sd: float = 0.02) -> dict:
+    """A functional-calibration trial: ``n`` squats from standing (knee 0 → ``knee_deg`` → 0,
+    hip flexing half as much, both about the segments' X axes, 2 s each after 2 s of rest,
+    4 s of rest at the end), seen by sensors mounted with ``q_SB`` (``{"thigh", "shank"}``, e.g.
+    a :class:`KneeProtocol`'s); returns ``{"thigh": Recording, "shank": Recording}``."""
+    rng = np.random.default_rng(0) if rng is None else rng
+    t = np.arange(0, 2.0 * n + 6.0, 1.0 / fs)
+    ph = np.clip((t - 2.0) / 2.0, 0, n)
+    knee = np.radians(knee_deg / 2.0) * (1 - np.cos(2 * np.pi * ph))
+    q_th = Q.mul(np.broadcast_to(Q_NEUTRAL, (len(t), 4)), Q.elementary("X", 0.5 * knee))
+    q_sh = Q.mul(q_th, Q.elementary("X", -knee))
+    return {seg: imu(t, Q.mul(qb, Q.conj(q_SB[seg])), rng=rng, name=f"sim-squat-{seg}",
+                     gyr_bias=gyr_bias_sd * rng.standard_normal(3))
+            for seg, qb in (("thigh", q_th), ("shank", q_sh))}
+
+
 def elbow_flexion(seed: int = 0, n_cycles: int = 6, period_s: float = 2.5, rest_s: float = 3.0):
     """Seed-002-like elbow: arm still (tilted 10°, heading 20°), forearm flexing 0→90° about the
     arm's X axis for ``n_cycles`` cycles between rests; raw IMU recordings with gyro biases.

@@ -29,14 +29,7 @@ def run(monkeypatch, capsys):
 
 def _squats(P, rng):
     """Functional trial: 4 squats (knee 0-80 deg, hip 0-40 deg, both about the segments' X)."""
-    t = np.arange(0, 12, 0.01)
-    ph = np.clip((t - 2) / 2.0, 0, 4)
-    knee = np.radians(40) * (1 - np.cos(2 * np.pi * ph))
-    q_th = Q.mul(np.broadcast_to(simulate.Q_NEUTRAL, (len(t), 4)), Q.elementary("X", 0.5 * knee))
-    q_sh = Q.mul(q_th, Q.elementary("X", -knee))
-    return {seg: simulate.imu(t, Q.mul(qb, Q.conj(P.q_SB[seg])), rng=rng, name=f"squat-{seg}",
-                              gyr_bias=0.02 * rng.standard_normal(3))
-            for seg, qb in (("thigh", q_th), ("shank", q_sh))}
+    return simulate.squats(P.q_SB, rng=rng)
 
 
 @pytest.fixture(scope="module")
