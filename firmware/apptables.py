@@ -10,7 +10,13 @@ estimator's declared parameter ranges.  Outputs:
 * ``kf_filters_gen.c`` - per filter: build its parameter struct from float32 values (the q
   build converts with ``kf_q_from_f32``), init (the generated range check), live parameter
   change, update; the calibration binding; the direct float32 -> input record conversion;
-* ``kf_params_gen.inc`` - the MAVLink parameter rows of calibration and filter parameters.
+* ``kf_params_gen.inc`` - the MAVLink parameter rows of calibration and filter parameters,
+  then those of the joint-angle step (``joint_angle``, two-sensor mode, ``KF_JA_*``).
+
+The joint-angle binding (two-sensor mode) converts the filters' quaternion outputs into the
+joint step's input record: f32 builds pass the float32 values; q builds requantise the raw
+filter output (every wired filter's ``q`` has the same format, checked here) to the joint
+input format with one rounding shift (round half up, as the generated code rounds).
 
     python -m kinefuse.firmware.build tables          # write
     python -m kinefuse.firmware.build tables --check  # exit 1 when stale (CI)
@@ -31,13 +37,16 @@ APP_DIR = FIRMWARE_DIR / "app"
 LIST_FILE = APP_DIR / "kf_filter_list.h"
 SYSTEMS = ("f32", "q")
 CALIB = "calib_apply"
+JOINT = "joint_angle"          # two-sensor mode: the joint step (parameters KF_JA_*), its files
+JOINT_ESTIMATOR = "joint-angle"   # ... and its registry name
+JOINT_TAG = "JA"
 NAME_MAX = 16
 RAW_MAX = 2 ** 31 - 1
 
 # Readable short names where the automatic abbreviation would be cryptic (<= 10 characters).
 SHORT_NAMES = {
     "min_angle_deg": "MIN_ANGLE", "slerp_threshold": "SLERP_TH", "rest_th_gyr": "REST_TH_G",
-    "rest_th_acc": "REST_TH_A", "bias_sigma_init": "BIAS_SIG0", "bias_sigma_rest": "BIAS_SIG_R",
+    "rest_th_acc": "REST_TH_A", "incl_rate_ref": "INCL_RATE", "incl_vel_ref": "INCL_VEL", "bias_sigma_init": "BIAS_SIG0", "bias_sigma_rest": "BIAS_SIG_R",
     "bias_forget_time": "BIAS_FORGT", "tau_mag_noise": "TAU_MAG_N", "mag_sigma_gate": "MAG_SIG_GT",
     "tau_mag_ref": "TAU_MAG_RF", "mag_new_time": "MAG_NEW_T", "mag_new_min_rate": "MAG_NEW_MR",
     "mag_reject_time": "MAG_REJ_T", "mag_min_undisturbed": "MAG_MIN_UD",
@@ -198,7 +207,29 @@ def collect(entries: list[Entry]) -> tuple[list[FilterInfo], dict]:
     for n in calib["names"]:
         if len(n) > NAME_MAX:
             raise KinefuseError(f"calibration parameter name {n} is longer than {NAME_MAX}")
+    calib["joint"] = _collect_joint(filters)
     return filters, calib
+
+
+def _collect_joint(filters: list[FilterInfo]) -> dict:
+    """The joint-angle step's parameters and formats (stored in the calib dict's "joint")."""
+    est = _estimator(JOINT_ESTIMATOR)
+    jf, jq = _model(JOINT, "f32"), _model(JOINT, "q")
+    for m in (jf, jq):
+        if [p[0] for p in m.FIELDS["param"]] != [p.name for p in est.params]:
+            raise KinefuseError(f"model {m.__name__} is stale (parameters differ from {JOINT}.py): "
+                                f"run `kinefuse codegen`")
+    qout = {f.out_q_frac for f in filters}
+    if len(qout) != 1:
+        raise KinefuseError(f"the wired filters output q in different formats {sorted(qout)}: the "
+                            f"joint-angle binding needs one")
+    fin = {jq.FORMATS["input.q_prox"][0], jq.FORMATS["input.q_dist"][0]}
+    if len(fin) != 1:
+        raise KinefuseError(f"{JOINT}: q_prox and q_dist have different formats")
+    return {"params": list(est.params), "names": _param_names(f"KF_{JOINT_TAG}_", est.params),
+            "q_frac": {p.name: tuple(jq.FORMATS[f"param.{p.name}"]) for p in est.params},
+            "qout_frac": qout.pop(), "in_frac": fin.pop(), "in_range": tuple(jq.FORMATS["input.q_prox"][1:]),
+            "angles_frac": jq.FORMATS["output.angles"][0], "qj_frac": jq.FORMATS["output.q_joint"][0]}
 
 
 # ---------------------------------------------------------------------------------- rendering
@@ -220,7 +251,14 @@ def render_header(filters: list[FilterInfo], calib: dict) -> str:
           " * the calibration inputs (integer counts and microseconds, exact). */"]
     for k in ("gyr", "acc", "mag", "dt"):
         L.append(f"#define KF_GEN_FRAC_{k.upper()} {calib['imu_frac'][k]}")
+    J = calib["joint"]
     L.append(f"#define KF_GEN_FRAC_COUNTS {calib['in_frac']['acc_raw']}")
+    L.append(f"#define KF_GEN_FRAC_QOUT {J['qout_frac']}      /* every filter's output q */")
+    L.append(f"#define KF_GEN_FRAC_JOINT_Q {J['in_frac']}   /* joint-angle inputs q_prox, q_dist */")
+    L.append(f"#define KF_GEN_FRAC_JOINT_ANGLES {J['angles_frac']}")
+    L.append(f"#define KF_GEN_JOINT_PARAM_COUNT {len(J['params'])}")
+    L.append(f"#define KF_GEN_JOINT_P_SEQUENCE {[p.name for p in J['params']].index('sequence')}"
+             f"   /* index of KF_JA_SEQUENCE */")
     L.append(f"#define KF_GEN_FRAC_DT_US {calib['in_frac']['dt_us']}")
     for k in ("gyr_raw", "mag_raw"):
         if calib["in_frac"][k] != calib["in_frac"]["acc_raw"]:
@@ -236,6 +274,8 @@ def render_header(filters: list[FilterInfo], calib: dict) -> str:
         L.append(f"typedef kf_calib_input_{sysname} kf_calib_input;")
         L.append(f"typedef {CALIB}_{sysname}_state kf_calib_state;")
         L.append(f"typedef {CALIB}_{sysname}_params kf_calib_params;")
+        L.append(f'#include "{JOINT}_{sysname}.h"')
+        L.append(f"typedef {JOINT}_{sysname}_state kf_joint_state;")
         for what in ("state", "params"):
             L.append("typedef union {")
             L.append("    uint8_t none;   /* every filter may be left out of a build */")
@@ -391,8 +431,47 @@ def render_source(filters: list[FilterInfo], calib: dict) -> str:
                                     "kf_q_from_f32(dt, KF_GEN_FRAC_DT, -2147483647, 2147483647);"))
         L.append("}")
         L.append("")
+        L += _render_joint(sysname, calib["joint"])
     L += ["#endif", ""]
     return "\n".join(L)
+
+
+def _render_joint(sysname: str, J: dict) -> list[str]:
+    """kf_gen_joint_init / kf_gen_joint_update (two-sensor mode)."""
+    P = f"{JOINT}_{sysname}"
+    L = ["int kf_gen_joint_init(kf_joint_state *s, const float *v)", "{",
+         f"    {P}_params p;", f"    {P}_default_params(&p);"]
+    for i, p in enumerate(J["params"]):
+        L.append(f"    p.{p.name} = {_conv(sysname, f'v[{i}]', J['q_frac'][p.name])};")
+    L += [f"    return {P}_init(s, &p);", "}", "",
+          "void kf_gen_joint_update(kf_joint_state *s, const kf_filter_out *prox, const kf_filter_out *dist,",
+          "                         kf_joint_out *out)", "{",
+          f"    kf_joint_input_{sysname} in;", f"    {P}_output o;", "    for (int i = 0; i < 4; i++) {"]
+    if sysname == "f32":
+        L += ["        in.q_prox[i] = prox->q[i];", "        in.q_dist[i] = dist->q[i];"]
+    else:
+        d = J["qout_frac"] - J["in_frac"]
+        lo, hi = (_i32(v) for v in J["in_range"])
+        for side in ("prox", "dist"):
+            if d > 0:
+                L.append(f"        in.q_{side}[i] = (int32_t)(((int64_t){side}->q_raw[i] + ((int64_t)1 << {d - 1})) >> {d});"
+                         f"   /* Q..{J['qout_frac']} -> Q..{J['in_frac']}, round half up */")
+            elif d < 0:
+                L.append(f"        in.q_{side}[i] = kf_lsh_sat({side}->q_raw[i], {-d}, {lo}, {hi});")
+            else:
+                L.append(f"        in.q_{side}[i] = {side}->q_raw[i];")
+    L += ["    }", f"    {P}_update(s, &in, &o);", "    for (int i = 0; i < 3; i++) {"]
+    if sysname == "f32":
+        L.append("        out->angles[i] = o.angles[i];")
+    else:
+        L.append(f"        out->angles[i] = (float)o.angles[i] * {_hex(2.0 ** -J['angles_frac'])}f;  /* exact scaling */")
+    L += ["    }", "    for (int i = 0; i < 4; i++) {"]
+    if sysname == "f32":
+        L.append("        out->q[i] = o.q_joint[i];")
+    else:
+        L.append(f"        out->q[i] = (float)o.q_joint[i] * {_hex(2.0 ** -J['qj_frac'])}f;")
+    L += ["    }", "    out->valid = o.valid;", "    out->rejected = o.rejected;", "}", ""]
+    return L
 
 
 def render_params(filters: list[FilterInfo], calib: dict) -> str:
@@ -406,6 +485,10 @@ def render_params(filters: list[FilterInfo], calib: dict) -> str:
         for i, (p, n) in enumerate(zip(f.params, f.names)):
             L.append(f"KF_PARAM_ROW({_c_str(n)}, KF_PG_FILTER, {k}u, {i}u, {_f32(p.default)}, {_f32(p.lo)}, "
                      f"{_f32(p.hi)})  /* {f.entry.name}.{p.name} [{p.unit or '-'}] */")
+    J = calib["joint"]
+    for i, (p, n) in enumerate(zip(J["params"], J["names"])):
+        L.append(f"KF_PARAM_ROW({_c_str(n)}, KF_PG_JOINT, 0u, {i}u, {_f32(p.default)}, {_f32(p.lo)}, "
+                 f"{_f32(p.hi)})  /* {JOINT}.{p.name} [{p.unit or '-'}] */")
     return "\n".join(L) + "\n"
 
 
@@ -424,6 +507,9 @@ def parameter_table() -> list[dict]:
     for f in filters:
         rows += [{"name": n, "owner": f.entry.name, "field": p.name, "default": p.default, "min": p.lo,
                   "max": p.hi, "unit": p.unit} for p, n in zip(f.params, f.names)]
+    J = calib["joint"]
+    rows += [{"name": n, "owner": JOINT, "field": p.name, "default": p.default, "min": p.lo,
+              "max": p.hi, "unit": p.unit} for p, n in zip(J["params"], J["names"])]
     return rows
 
 

@@ -81,7 +81,7 @@ def app_sources(system: str, board_main: bool, filters=None) -> list[Path]:
     srcs = sorted(p for p in APP_DIR.glob("*.c") if p.name != "kf_main.c")
     if board_main:
         srcs.append(APP_DIR / "kf_main.c")
-    names = _subset(filters) + [apptables.CALIB]
+    names = _subset(filters) + [apptables.CALIB, apptables.JOINT]
     for n in names:
         p = GENERATED_DIR / f"{n}_{system}.c"
         if not p.is_file():
@@ -221,7 +221,7 @@ def size_report(opts=("-O2", "-Os")) -> list[dict]:
             res = build_target(target, opt=opt)
             origin = res.size_by_origin()
             system = TARGET_SYSTEM[target]
-            gen = {e.name for e in apptables.read_list()} | {apptables.CALIB}
+            gen = {e.name for e in apptables.read_list()} | {apptables.CALIB, apptables.JOINT}
             filt = sum(v.flash for k, v in origin.items() if k.rsplit("_", 1)[0] in gen and k.endswith(system))
             libs = sum(v.flash for k, v in origin.items() if k.endswith(".a"))
             rows.append({"target": target, "opt": opt, "system": system, **res.size.as_dict(),

@@ -7,6 +7,8 @@
 
     out = hil_run(s, time_us, acc, gyr, mag_uT)   # HIL_SENSOR in, KF_RAW_SAMPLE + KF_ORIENTATION back
     ref = unit_model("madgwick", "f32", time_us, acc, gyr, mag_uT, rate_hz=1000)
+    two = joint_hil_run(s, prox, dist)             # two-sensor unit: HIL_SENSOR id 1 + id 0 in, KF_JOINT_ANGLE back
+    ref = joint_model("flagship", "q", prox, dist, rate_hz=100, joint_params={"sequence": 0})
 
 :func:`unit_model` computes, with the generated Python models, exactly what the unit computes
 for HIL input: the HIL_SENSOR float32 fields -> counts (``KF_HIL_MODE`` 0: as
@@ -30,7 +32,7 @@ import numpy as np
 
 from kinefuse.host.errors import KinefuseError
 
-MSG_RAW, MSG_ORI, MSG_STATUS = 52500, 52501, 52504
+MSG_RAW, MSG_ORI, MSG_JOINT, MSG_STATUS = 52500, 52501, 52502, 52504
 UNIT_COMPONENT = 200
 FRAC_OUT_Q = None  # per filter: read from the model
 
@@ -355,6 +357,95 @@ def _filter_model(name: str, system: str, inputs: dict, n: int, params) -> dict:
     if "cov" not in res:                       # no covariance output: KF_ORIENTATION.cov all zero
         res["cov"] = np.zeros((n, 6), np.float32)
     return res
+
+
+def joint_model(name: str, system: str, prox: dict, dist: dict, *, rate_hz: int = 1000, mode: int = 0,
+                params: dict | None = None, joint_params: dict | None = None, calib: dict | None = None,
+                mag_enable: bool = True) -> dict[str, np.ndarray]:
+    """What a two-sensor unit (``KF_JOINT_ID`` != 0) sends in KF_JOINT_ANGLE for HIL input:
+    ``prox`` (HIL_SENSOR id 0) and ``dist`` (id 1) are dicts of ``t``, ``acc``, ``gyr``, ``mag``
+    (µT) and optional ``upd``, one sample each per joint output, sensor 1's sample sent before
+    sensor 0's.  Each sensor runs through :func:`unit_model` (its own filter instance and time
+    steps, the same calibration); the joint step (generated ``joint_angle`` model, float32
+    parameters) takes the two quaternions: f32 as float32, q the raw filter outputs requantised
+    to the step's input format (round half up).  Returns ``angles`` (N, 3) float32 as sent
+    (q: ``float32(raw) * 2^-frac``), ``valid``, ``rejected`` and both sensors' ``q``."""
+    from kinefuse.codegen import estimators
+    from kinefuse.codegen.runner import Encoded, runner
+    res = {}
+    for key, d in (("prox", prox), ("dist", dist)):
+        res[key] = unit_model(name, system, d["t"], d["acc"], d["gyr"], d["mag"], d.get("upd"), rate_hz=rate_hz,
+                              mode=mode, params=params, calib=calib, mag_enable=mag_enable)
+    n = len(prox["t"])
+    jr = runner("joint_angle", f"{system}-model")
+    jp = _p32(estimators.get("joint-angle"), joint_params)
+    enc_p = {k: jr.encode_values("param", k, t, [jp[k]])[0] for k, _, t in jr.fields["param"]}
+    inputs = {}
+    for key in ("prox", "dist"):
+        if system == "f32":
+            inputs[f"q_{key}"] = res[key]["q"].astype(np.float32)
+        else:
+            fr = runner(name, "q-model")
+            shift = fr.formats["output.q"][0] - jr.formats[f"input.q_{key}"][0]
+            raw = res[key]["q_raw"].astype(np.int64)
+            inputs[f"q_{key}"] = (raw + (1 << (shift - 1))) >> shift if shift > 0 else raw << -shift
+    out = jr.run_encoded(Encoded(inputs, enc_p, n))
+    if system == "f32":
+        angles = out["angles"].astype(np.float32)
+    else:
+        frac = jr.formats["output.angles"][0]
+        angles = (out["angles"].astype(np.int64).astype(np.float32) * np.float32(2.0 ** -frac)).astype(np.float32)
+    return {"angles": angles, "valid": out["valid"][:, 0], "rejected": out["rejected"][:, 0],
+            "q_prox": res["prox"]["q"], "q_dist": res["dist"]["q"]}
+
+
+def joint_hil_run(session, prox: dict, dist: dict, window: int = 50, timeout: float = 10.0) -> dict:
+    """Two-sensor HIL: per sample k, HIL_SENSOR id 1 (``dist``) then id 0 (``prox``); collects
+    KF_JOINT_ANGLE (angles float32, status, sample_counter, joint_id, sequence, units) and the
+    KF_ORIENTATION of sensor 0, indexed by sample."""
+    from kinefuse.host.link.hil import hil_sensor_frames
+    n = len(prox["t"])
+    f0 = _split(hil_sensor_frames(prox["t"], prox["acc"], prox["gyr"], prox["mag"], mag_updated=prox.get("upd"),
+                                  sensor_id=0))
+    f1 = _split(hil_sensor_frames(dist["t"], dist["acc"], dist["gyr"], dist["mag"], mag_updated=dist.get("upd"),
+                                  sensor_id=1))
+    angles = np.full((n, 3), np.nan, np.float32)
+    q = np.full((n, 4), np.nan, np.float32)
+    status = np.zeros(n, np.int64)
+    meta = np.zeros((n, 4), np.int64)       # joint_id, sequence, proximal_unit, distal_unit
+    time_echo = np.zeros(n, np.int64)
+    first = None
+    got = 0
+    session.poll(0)
+    session.drain()
+    for start in range(0, n, window):
+        stop = min(n, start + window)
+        session.send_bytes(b"".join(f1[k] + f0[k] for k in range(start, stop)))
+        deadline = time.monotonic() + timeout
+        while got < stop:
+            if time.monotonic() > deadline:
+                raise KinefuseError(f"two-sensor HIL: {stop - got} KF_JOINT_ANGLE missing after {timeout} s")
+            session.poll(0.05)
+            for _, f in session.drain():
+                if f.msgid not in (MSG_RAW, MSG_ORI, MSG_JOINT):
+                    continue
+                m = f.msg
+                if first is None:
+                    if f.msgid != MSG_RAW or not m.flags & 64:
+                        continue
+                    first = m.sample_counter
+                i = (m.sample_counter - first) & 0xFFFFFFFF
+                if i >= n:
+                    continue
+                if f.msgid == MSG_JOINT:
+                    angles[i] = np.array([m.angle_1, m.angle_2, m.angle_3], np.float32)
+                    status[i] = m.status
+                    meta[i] = [m.joint_id, m.sequence, m.proximal_unit, m.distal_unit]
+                    time_echo[i] = m.time_boot_us
+                    got += 1
+                elif f.msgid == MSG_ORI:
+                    q[i] = np.array([m.q_w, m.q_x, m.q_y, m.q_z], np.float32)
+    return {"angles": angles, "status": status, "meta": meta, "time_us": time_echo, "q": q}
 
 
 # ------------------------------------------------------------------------ end-to-end stream

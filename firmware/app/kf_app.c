@@ -46,7 +46,7 @@ static uint8_t clip_flags(const kf_raw_sample *r)
     return f;
 }
 
-static void take_sensor_sample(kf_app *app, const kf_raw_sample *r)
+static void take_sensor_sample(kf_app *app, const kf_raw_sample *r, int sensor)
 {
     kf_sample s;
     uint64_t now = kf_app_time(app);
@@ -64,7 +64,11 @@ static void take_sensor_sample(kf_app *app, const kf_raw_sample *r)
     memcpy(s.mag, r->mag, sizeof s.mag);
     s.mag_valid = (uint8_t)(r->mag_valid != 0u);
     s.flags = clip_flags(r);
-    kf_app_sample(app, &s);
+    if (sensor == 0) {
+        kf_app_sample(app, &s);
+    } else {
+        kf_app_sample2(app, &s);
+    }
 }
 
 int kf_app_poll(kf_app *app)
@@ -84,10 +88,17 @@ int kf_app_poll(kf_app *app)
         kf_handle_frame(app, &msg);
         work = 1;
     }
+    /* two-sensor mode: sensor 1 first, so that a sensor-0 sample of the same instant sees it */
+    for (int k = 0; app->two_sensors && k < KF_SENSOR_BATCH && kf_hal_sensor2_read(&raw); k++) {
+        work = 1;
+        if (!app->hil) {
+            take_sensor_sample(app, &raw, 1);
+        }
+    }
     for (int k = 0; k < KF_SENSOR_BATCH && kf_hal_sensor_read(&raw); k++) {
         work = 1;
         if (!app->hil) {          /* in HIL mode the samples come from HIL_SENSOR only */
-            take_sensor_sample(app, &raw);
+            take_sensor_sample(app, &raw, 0);
         }
     }
     /* a parameter list goes out while the queue is at most half full: streams keep priority */

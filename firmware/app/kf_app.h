@@ -46,7 +46,7 @@ typedef struct {
     uint32_t param_rejects;
     uint32_t unsigned_refused;   /* unsigned configuration/commands refused (key set) */
     uint32_t signature_failures; /* signed frames whose signature or timestamp failed */
-    uint32_t hil_invalid;        /* HIL_SENSOR samples with NaN values (not processed) */
+    uint32_t hil_invalid;        /* HIL_SENSOR samples with NaN values or an unknown sensor id (not processed) */
     uint32_t numeric_resets;     /* filter re-initialised after a non-finite output */
     uint32_t stored_rejects;     /* stored values out of range at load (defaults used) */
 } kf_counters;
@@ -95,6 +95,17 @@ typedef struct kf_app {
     float tare[4];                 /* applied to the output: q_out = tare * q */
     uint8_t tared;
 
+    /* two-sensor mode (KF_JOINT_ID != 0): sensor 1 (distal) has its own filter instance of the
+     * selected filter (same parameters, same calibration map); the joint step combines both */
+    kf_filter_state_u filt2;
+    kf_filter_out out2;
+    kf_joint_state joint;
+    kf_joint_out jout;
+    uint64_t t_prev2;
+    uint8_t have_prev2;
+    uint8_t initialised2;
+    uint8_t two_sensors;
+
     /* samples and streams */
     uint32_t sample_counter;
     uint64_t t_prev;
@@ -120,6 +131,11 @@ int kf_app_poll(kf_app *app);
 
 /* Process one sample (the sensor path and HIL_SENSOR both end here). */
 void kf_app_sample(kf_app *app, const kf_sample *s);
+
+/* Two-sensor mode: one sample of sensor 1 (the distal segment; kf_hal_sensor2_read or
+ * HIL_SENSOR id 1): calibration, then its own filter instance.  Nothing is sent for it; the
+ * next sample of sensor 0 sends KF_JOINT_ANGLE with both filters' latest orientations. */
+void kf_app_sample2(kf_app *app, const kf_sample *s);
 
 /* Current device time, us since boot (64 bits). */
 uint64_t kf_app_time(kf_app *app);

@@ -16,6 +16,7 @@ uint8_t kf_config_set(kf_app *app, int32_t index, kf_pvalue value);
 void kf_config_apply_rates(kf_app *app);
 void kf_config_select_filter(kf_app *app);
 void kf_config_reset_filter(kf_app *app);
+void kf_config_reset_filter2(kf_app *app);
 
 /* kf_send.c: pack one message and queue it (1: queued, 0: dropped) */
 int kf_send(kf_app *app, mavlink_message_t *msg);

@@ -34,6 +34,16 @@ static void calib_vector(const kf_app *app, int32_t at, float v, float *vec)
     }
 }
 
+static void joint_vector(const kf_app *app, int32_t at, float v, float *vec)
+{
+    for (uint16_t i = 0; i < KF_GEN_JOINT_PARAM_COUNT; i++) {
+        vec[i] = app->values[KF_P_JOINT_FIRST + i].f;
+    }
+    if (at >= 0) {
+        vec[at] = v;
+    }
+}
+
 static int filter_check(kf_app *app, int32_t k, const float *vec)
 {
     const kf_filter_ops *f = &kf_gen_filters[k];
@@ -54,12 +64,15 @@ static void update_calibrated_flag(kf_app *app)
     }
 }
 
+static void reset_two_sensors(kf_app *app);
+
 /* (Re)start the selected filter from its parameters; clears tare and status.  The next
  * sample gets the nominal time step (as after a reset), whatever time preceded it. */
 void kf_config_reset_filter(kf_app *app)
 {
     float vec[KF_GEN_FILTER_PARAM_MAX + 1];
     const kf_filter_ops *f = active_ops(app);
+    reset_two_sensors(app);
     app->cnt.rejected_base += (uint32_t)app->out.rejected;
     memset(&app->out, 0, sizeof app->out);
     app->out.q[0] = 1.0f;
@@ -72,6 +85,42 @@ void kf_config_reset_filter(kf_app *app)
     filter_vector(app, app->filter, -1, 0.0f, vec);
     f->build(vec, &app->fparams);
     (void)f->init(&app->filt, &app->fparams);   /* validated when the values were accepted */
+    if (app->two_sensors) {
+        (void)f->init(&app->filt2, &app->fparams);
+    }
+}
+
+/* Two-sensor mode on or off (KF_JOINT_ID), the second filter instance and the joint step
+ * restarted; called by kf_config_reset_filter. */
+static void reset_two_sensors(kf_app *app)
+{
+    float jv[KF_GEN_JOINT_PARAM_COUNT];
+    app->two_sensors = (uint8_t)(app->values[KF_P_JOINT_ID].u != 0u);
+    memset(&app->out2, 0, sizeof app->out2);
+    app->out2.q[0] = 1.0f;
+    memset(&app->jout, 0, sizeof app->jout);
+    app->initialised2 = 0u;
+    app->have_prev2 = 0u;
+    joint_vector(app, -1, 0.0f, jv);
+    (void)kf_gen_joint_init(&app->joint, jv);   /* validated when the values were accepted */
+}
+
+/* Restart only sensor 1's filter instance (after a non-finite output). */
+void kf_config_reset_filter2(kf_app *app)
+{
+    float vec[KF_GEN_FILTER_PARAM_MAX + 1];
+    const kf_filter_ops *f = active_ops(app);
+    app->cnt.rejected_base += (uint32_t)app->out2.rejected;
+    memset(&app->out2, 0, sizeof app->out2);
+    app->out2.q[0] = 1.0f;
+    app->initialised2 = 0u;
+    app->have_prev2 = 0u;
+    if (f == NULL) {
+        return;
+    }
+    filter_vector(app, app->filter, -1, 0.0f, vec);
+    f->build(vec, &app->fparams);
+    (void)f->init(&app->filt2, &app->fparams);
 }
 
 void kf_config_select_filter(kf_app *app)
@@ -186,6 +235,16 @@ static void repair_groups(kf_app *app)
             app->cnt.stored_rejects++;
         }
     }
+    for (int tries = 0; tries <= (int)KF_GEN_JOINT_PARAM_COUNT; tries++) {
+        joint_vector(app, -1, 0.0f, vec);
+        int r = kf_gen_joint_init(&app->joint, vec);
+        if (r >= 0 || -r - 1 >= (int)KF_GEN_JOINT_PARAM_COUNT) {
+            break;
+        }
+        uint32_t i = KF_P_JOINT_FIRST + (uint32_t)(-r - 1);
+        app->values[i] = kf_param_table[i].def;
+        app->cnt.stored_rejects++;
+    }
 }
 
 void kf_config_load(kf_app *app)
@@ -249,7 +308,17 @@ uint8_t kf_config_set(kf_app *app, int32_t index, kf_pvalue v)
         }
         if ((int32_t)d->filter == app->filter && f->set != NULL) {
             f->set(&app->filt, &app->fparams);           /* live: no reset of the estimate */
+            if (app->two_sensors) {
+                f->set(&app->filt2, &app->fparams);
+            }
         }
+    } else if (d->group == KF_PG_JOINT) {
+        kf_joint_state tmp;
+        joint_vector(app, d->index, v.f, vec);
+        if (kf_gen_joint_init(&tmp, vec) != 0) {
+            return MAV_PARAM_ERROR_VALUE_OUT_OF_RANGE;   /* the generated range check */
+        }
+        app->joint = tmp;                                /* the step holds no estimate: restart */
     }
     uint32_t old = app->values[index].u;
     app->values[index] = v;
@@ -257,6 +326,11 @@ uint8_t kf_config_set(kf_app *app, int32_t index, kf_pvalue v)
         switch (index) {
         case KF_P_FILTER:
             kf_config_select_filter(app);
+            break;
+        case KF_P_JOINT_ID:
+            if ((old != 0u) != (v.u != 0u)) {
+                kf_config_reset_filter(app);   /* into or out of two-sensor mode */
+            }
             break;
         case KF_P_RATE_HZ:
         case KF_P_ORI_RATE_HZ:

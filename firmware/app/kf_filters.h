@@ -58,4 +58,22 @@ void kf_gen_calib_apply(kf_calib_state *s, const int16_t acc[3], const int16_t g
 void kf_gen_imu_from_f32(const float gyr[3], const float acc[3], const float mag[3], float dt,
                          kf_imu_input *out);
 
+/* Two-sensor mode: the generated joint-angle step (joint_angle_f32 / joint_angle_q). */
+typedef struct {
+    float angles[3];     /* rad: intrinsic angles of the sequence (q builds: raw * 2^-frac) */
+    float q[4];          /* joint quaternion (distal segment in the proximal segment frame) */
+    uint8_t valid;       /* 1 once a sample gave angles */
+    int32_t rejected;    /* the step's running count of rejected samples */
+} kf_joint_out;
+
+/* Joint-angle parameters from float32 values in parameter-table order (KF_JA_*); 0, or
+ * -(i+1) when value i is out of its range (the defaults are then in use). */
+int kf_gen_joint_init(kf_joint_state *s, const float *v);
+
+/* One joint step from the two filters' outputs (proximal = sensor 0, distal = sensor 1):
+ * f32 builds pass the float32 quaternions, q builds the raw outputs requantised to the step's
+ * input format (KF_GEN_FRAC_QOUT -> KF_GEN_FRAC_JOINT_Q, round half up). */
+void kf_gen_joint_update(kf_joint_state *s, const kf_filter_out *prox, const kf_filter_out *dist,
+                         kf_joint_out *out);
+
 #endif /* KF_FILTERS_H */

@@ -122,7 +122,7 @@ static void mahony_update(void *state, const kf_imu_input *in, kf_filter_out *o)
 #endif
 
 #ifndef KF_WITHOUT_FLAGSHIP
-/* flagship: 25 parameters (KF_FL_MODE, KF_FL_TAU_ACC, KF_FL_TAU_MAG, KF_FL_HEADING_RW, KF_FL_TAU_BIAS, KF_FL_BIAS_SIG0, KF_FL_BIAS_FORGT, KF_FL_BIAS_SIG_R, KF_FL_BIAS_MAX, KF_FL_REST_TH_G, KF_FL_REST_TH_A, KF_FL_REST_TIME, KF_FL_TAU_REST, KF_FL_TAU_MAG_N, KF_FL_MAG_TH, KF_FL_MAG_DIP_TH, KF_FL_MAG_GATE, KF_FL_MAG_SIG_GT, KF_FL_TAU_MAG_RF, KF_FL_MAG_NEW_T, KF_FL_MAG_NEW_MR, KF_FL_MAG_REJ_T, KF_FL_MAG_MIN_UD, KF_FL_GYR_RANGE, KF_FL_ACC_RANGE) */
+/* flagship: 28 parameters (KF_FL_MODE, KF_FL_TAU_ACC, KF_FL_TAU_MAG, KF_FL_HEADING_RW, KF_FL_TAU_BIAS, KF_FL_BIAS_SIG0, KF_FL_BIAS_FORGT, KF_FL_BIAS_SIG_R, KF_FL_BIAS_MAX, KF_FL_REST_TH_G, KF_FL_REST_TH_A, KF_FL_REST_TIME, KF_FL_TAU_REST, KF_FL_TAU_MAG_N, KF_FL_MAG_TH, KF_FL_MAG_DIP_TH, KF_FL_MAG_GATE, KF_FL_MAG_SIG_GT, KF_FL_TAU_MAG_RF, KF_FL_MAG_NEW_T, KF_FL_MAG_NEW_MR, KF_FL_MAG_REJ_T, KF_FL_MAG_MIN_UD, KF_FL_GYR_RANGE, KF_FL_ACC_RANGE, KF_FL_INCL_RATE, KF_FL_INCL_VEL, KF_FL_TAU_VEL) */
 static void flagship_build(const float *v, void *params)
 {
     flagship_q_params *p = (flagship_q_params *)params;
@@ -152,6 +152,9 @@ static void flagship_build(const float *v, void *params)
     p->mag_min_undisturbed = q_param(v[22], 27, 0, 1342177280);
     p->gyr_range = q_param(v[23], 25, 3355443, 1171270634);
     p->acc_range = q_param(v[24], 23, 8388608, 1316226282);
+    p->incl_rate_ref = q_param(v[25], 26, 3355443, 2013265920);
+    p->incl_vel_ref = q_param(v[26], 27, 1342177, 1342177280);
+    p->tau_vel = q_param(v[27], 25, 3355443, 2013265920);
 }
 static int flagship_init(void *state, const void *params)
 {
@@ -411,39 +414,39 @@ const kf_filter_ops kf_gen_filters[KF_GEN_FILTER_COUNT] = {
     {"mahony", 4u, 6u, 3u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_FLAGSHIP
-    {"flagship", 5u, 9u, 25u, flagship_build, flagship_init, flagship_set, flagship_update},
+    {"flagship", 5u, 9u, 28u, flagship_build, flagship_init, flagship_set, flagship_update},
 #else
-    {"flagship", 5u, 9u, 25u, NULL, NULL, NULL, NULL},
+    {"flagship", 5u, 9u, 28u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_ESKF
-    {"eskf", 6u, 34u, 16u, eskf_build, eskf_init, eskf_set, eskf_update},
+    {"eskf", 6u, 37u, 16u, eskf_build, eskf_init, eskf_set, eskf_update},
 #else
-    {"eskf", 6u, 34u, 16u, NULL, NULL, NULL, NULL},
+    {"eskf", 6u, 37u, 16u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_ECOMPASS
-    {"ecompass", 8u, 50u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
+    {"ecompass", 8u, 53u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
 #else
-    {"ecompass", 8u, 50u, 1u, NULL, NULL, NULL, NULL},
+    {"ecompass", 8u, 53u, 1u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_TRIAD
-    {"triad", 9u, 51u, 3u, triad_build, triad_init, triad_set, triad_update},
+    {"triad", 9u, 54u, 3u, triad_build, triad_init, triad_set, triad_update},
 #else
-    {"triad", 9u, 51u, 3u, NULL, NULL, NULL, NULL},
+    {"triad", 9u, 54u, 3u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAC
-    {"vac", 10u, 54u, 7u, vac_build, vac_init, vac_set, vac_update},
+    {"vac", 10u, 57u, 7u, vac_build, vac_init, vac_set, vac_update},
 #else
-    {"vac", 10u, 54u, 7u, NULL, NULL, NULL, NULL},
+    {"vac", 10u, 57u, 7u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAK
-    {"vak", 11u, 61u, 5u, vak_build, vak_init, vak_set, vak_update},
+    {"vak", 11u, 64u, 5u, vak_build, vak_init, vak_set, vak_update},
 #else
-    {"vak", 11u, 61u, 5u, NULL, NULL, NULL, NULL},
+    {"vak", 11u, 64u, 5u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_GUO
-    {"guo", 12u, 66u, 3u, guo_build, guo_init, guo_set, guo_update},
+    {"guo", 12u, 69u, 3u, guo_build, guo_init, guo_set, guo_update},
 #else
-    {"guo", 12u, 66u, 3u, NULL, NULL, NULL, NULL},
+    {"guo", 12u, 69u, 3u, NULL, NULL, NULL, NULL},
 #endif
 };
 
@@ -525,6 +528,43 @@ void kf_gen_imu_from_f32(const float gyr[3], const float acc[3], const float mag
         out->mag[i] = kf_q_from_f32(mag[i], KF_GEN_FRAC_MAG, -2147483647, 2147483647);
     }
     out->dt = kf_q_from_f32(dt, KF_GEN_FRAC_DT, -2147483647, 2147483647);
+}
+
+int kf_gen_joint_init(kf_joint_state *s, const float *v)
+{
+    joint_angle_q_params p;
+    joint_angle_q_default_params(&p);
+    p.sequence = q_param(v[0], 29, 0, 1073741824);
+    p.mirror = q_param(v[1], 30, 0, 1073741824);
+    p.prox_w = q_param(v[2], 30, -1073741824, 1073741824);
+    p.prox_x = q_param(v[3], 30, -1073741824, 1073741824);
+    p.prox_y = q_param(v[4], 30, -1073741824, 1073741824);
+    p.prox_z = q_param(v[5], 30, -1073741824, 1073741824);
+    p.dist_w = q_param(v[6], 30, -1073741824, 1073741824);
+    p.dist_x = q_param(v[7], 30, -1073741824, 1073741824);
+    p.dist_y = q_param(v[8], 30, -1073741824, 1073741824);
+    p.dist_z = q_param(v[9], 30, -1073741824, 1073741824);
+    return joint_angle_q_init(s, &p);
+}
+
+void kf_gen_joint_update(kf_joint_state *s, const kf_filter_out *prox, const kf_filter_out *dist,
+                         kf_joint_out *out)
+{
+    kf_joint_input_q in;
+    joint_angle_q_output o;
+    for (int i = 0; i < 4; i++) {
+        in.q_prox[i] = (int32_t)(((int64_t)prox->q_raw[i] + ((int64_t)1 << 0)) >> 1);   /* Q..30 -> Q..29, round half up */
+        in.q_dist[i] = (int32_t)(((int64_t)dist->q_raw[i] + ((int64_t)1 << 0)) >> 1);   /* Q..30 -> Q..29, round half up */
+    }
+    joint_angle_q_update(s, &in, &o);
+    for (int i = 0; i < 3; i++) {
+        out->angles[i] = (float)o.angles[i] * 0x1p-29f;  /* exact scaling */
+    }
+    for (int i = 0; i < 4; i++) {
+        out->q[i] = (float)o.q_joint[i] * 0x1p-30f;
+    }
+    out->valid = o.valid;
+    out->rejected = o.rejected;
 }
 
 #else
@@ -629,7 +669,7 @@ static void mahony_update(void *state, const kf_imu_input *in, kf_filter_out *o)
 #endif
 
 #ifndef KF_WITHOUT_FLAGSHIP
-/* flagship: 25 parameters (KF_FL_MODE, KF_FL_TAU_ACC, KF_FL_TAU_MAG, KF_FL_HEADING_RW, KF_FL_TAU_BIAS, KF_FL_BIAS_SIG0, KF_FL_BIAS_FORGT, KF_FL_BIAS_SIG_R, KF_FL_BIAS_MAX, KF_FL_REST_TH_G, KF_FL_REST_TH_A, KF_FL_REST_TIME, KF_FL_TAU_REST, KF_FL_TAU_MAG_N, KF_FL_MAG_TH, KF_FL_MAG_DIP_TH, KF_FL_MAG_GATE, KF_FL_MAG_SIG_GT, KF_FL_TAU_MAG_RF, KF_FL_MAG_NEW_T, KF_FL_MAG_NEW_MR, KF_FL_MAG_REJ_T, KF_FL_MAG_MIN_UD, KF_FL_GYR_RANGE, KF_FL_ACC_RANGE) */
+/* flagship: 28 parameters (KF_FL_MODE, KF_FL_TAU_ACC, KF_FL_TAU_MAG, KF_FL_HEADING_RW, KF_FL_TAU_BIAS, KF_FL_BIAS_SIG0, KF_FL_BIAS_FORGT, KF_FL_BIAS_SIG_R, KF_FL_BIAS_MAX, KF_FL_REST_TH_G, KF_FL_REST_TH_A, KF_FL_REST_TIME, KF_FL_TAU_REST, KF_FL_TAU_MAG_N, KF_FL_MAG_TH, KF_FL_MAG_DIP_TH, KF_FL_MAG_GATE, KF_FL_MAG_SIG_GT, KF_FL_TAU_MAG_RF, KF_FL_MAG_NEW_T, KF_FL_MAG_NEW_MR, KF_FL_MAG_REJ_T, KF_FL_MAG_MIN_UD, KF_FL_GYR_RANGE, KF_FL_ACC_RANGE, KF_FL_INCL_RATE, KF_FL_INCL_VEL, KF_FL_TAU_VEL) */
 static void flagship_build(const float *v, void *params)
 {
     flagship_f32_params *p = (flagship_f32_params *)params;
@@ -659,6 +699,9 @@ static void flagship_build(const float *v, void *params)
     p->mag_min_undisturbed = v[22];
     p->gyr_range = v[23];
     p->acc_range = v[24];
+    p->incl_rate_ref = v[25];
+    p->incl_vel_ref = v[26];
+    p->tau_vel = v[27];
 }
 static int flagship_init(void *state, const void *params)
 {
@@ -918,39 +961,39 @@ const kf_filter_ops kf_gen_filters[KF_GEN_FILTER_COUNT] = {
     {"mahony", 4u, 6u, 3u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_FLAGSHIP
-    {"flagship", 5u, 9u, 25u, flagship_build, flagship_init, flagship_set, flagship_update},
+    {"flagship", 5u, 9u, 28u, flagship_build, flagship_init, flagship_set, flagship_update},
 #else
-    {"flagship", 5u, 9u, 25u, NULL, NULL, NULL, NULL},
+    {"flagship", 5u, 9u, 28u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_ESKF
-    {"eskf", 6u, 34u, 16u, eskf_build, eskf_init, eskf_set, eskf_update},
+    {"eskf", 6u, 37u, 16u, eskf_build, eskf_init, eskf_set, eskf_update},
 #else
-    {"eskf", 6u, 34u, 16u, NULL, NULL, NULL, NULL},
+    {"eskf", 6u, 37u, 16u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_ECOMPASS
-    {"ecompass", 8u, 50u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
+    {"ecompass", 8u, 53u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
 #else
-    {"ecompass", 8u, 50u, 1u, NULL, NULL, NULL, NULL},
+    {"ecompass", 8u, 53u, 1u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_TRIAD
-    {"triad", 9u, 51u, 3u, triad_build, triad_init, triad_set, triad_update},
+    {"triad", 9u, 54u, 3u, triad_build, triad_init, triad_set, triad_update},
 #else
-    {"triad", 9u, 51u, 3u, NULL, NULL, NULL, NULL},
+    {"triad", 9u, 54u, 3u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAC
-    {"vac", 10u, 54u, 7u, vac_build, vac_init, vac_set, vac_update},
+    {"vac", 10u, 57u, 7u, vac_build, vac_init, vac_set, vac_update},
 #else
-    {"vac", 10u, 54u, 7u, NULL, NULL, NULL, NULL},
+    {"vac", 10u, 57u, 7u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAK
-    {"vak", 11u, 61u, 5u, vak_build, vak_init, vak_set, vak_update},
+    {"vak", 11u, 64u, 5u, vak_build, vak_init, vak_set, vak_update},
 #else
-    {"vak", 11u, 61u, 5u, NULL, NULL, NULL, NULL},
+    {"vak", 11u, 64u, 5u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_GUO
-    {"guo", 12u, 66u, 3u, guo_build, guo_init, guo_set, guo_update},
+    {"guo", 12u, 69u, 3u, guo_build, guo_init, guo_set, guo_update},
 #else
-    {"guo", 12u, 66u, 3u, NULL, NULL, NULL, NULL},
+    {"guo", 12u, 69u, 3u, NULL, NULL, NULL, NULL},
 #endif
 };
 
@@ -1032,6 +1075,43 @@ void kf_gen_imu_from_f32(const float gyr[3], const float acc[3], const float mag
         out->mag[i] = mag[i];
     }
     out->dt = dt;
+}
+
+int kf_gen_joint_init(kf_joint_state *s, const float *v)
+{
+    joint_angle_f32_params p;
+    joint_angle_f32_default_params(&p);
+    p.sequence = v[0];
+    p.mirror = v[1];
+    p.prox_w = v[2];
+    p.prox_x = v[3];
+    p.prox_y = v[4];
+    p.prox_z = v[5];
+    p.dist_w = v[6];
+    p.dist_x = v[7];
+    p.dist_y = v[8];
+    p.dist_z = v[9];
+    return joint_angle_f32_init(s, &p);
+}
+
+void kf_gen_joint_update(kf_joint_state *s, const kf_filter_out *prox, const kf_filter_out *dist,
+                         kf_joint_out *out)
+{
+    kf_joint_input_f32 in;
+    joint_angle_f32_output o;
+    for (int i = 0; i < 4; i++) {
+        in.q_prox[i] = prox->q[i];
+        in.q_dist[i] = dist->q[i];
+    }
+    joint_angle_f32_update(s, &in, &o);
+    for (int i = 0; i < 3; i++) {
+        out->angles[i] = o.angles[i];
+    }
+    for (int i = 0; i < 4; i++) {
+        out->q[i] = o.q_joint[i];
+    }
+    out->valid = o.valid;
+    out->rejected = o.rejected;
 }
 
 #endif

@@ -12,8 +12,8 @@
 
 #define KF_GEN_FILTER_COUNT 10
 #define KF_GEN_CALIB_PARAM_COUNT 39
-#define KF_GEN_FILTER_PARAM_COUNT 69
-#define KF_GEN_FILTER_PARAM_MAX 25
+#define KF_GEN_FILTER_PARAM_COUNT 72
+#define KF_GEN_FILTER_PARAM_MAX 28
 
 /* A build may leave filters out with -DKF_WITHOUT_<NAME> (e.g. KF_WITHOUT_GUO): their rows
  * stay in the tables (parameters keep their names and values) with no functions. */
@@ -25,6 +25,11 @@
 #define KF_GEN_FRAC_MAG 17
 #define KF_GEN_FRAC_DT 29
 #define KF_GEN_FRAC_COUNTS 14
+#define KF_GEN_FRAC_QOUT 30      /* every filter's output q */
+#define KF_GEN_FRAC_JOINT_Q 29   /* joint-angle inputs q_prox, q_dist */
+#define KF_GEN_FRAC_JOINT_ANGLES 29
+#define KF_GEN_JOINT_PARAM_COUNT 10
+#define KF_GEN_JOINT_P_SEQUENCE 0   /* index of KF_JA_SEQUENCE */
 #define KF_GEN_FRAC_DT_US 10
 
 #if KF_NUMERIC_Q
@@ -64,6 +69,8 @@ typedef kf_imu_input_q kf_imu_input;
 typedef kf_calib_input_q kf_calib_input;
 typedef calib_apply_q_state kf_calib_state;
 typedef calib_apply_q_params kf_calib_params;
+#include "joint_angle_q.h"
+typedef joint_angle_q_state kf_joint_state;
 typedef union {
     uint8_t none;   /* every filter may be left out of a build */
 #ifndef KF_WITHOUT_COMPLEMENTARY
@@ -167,6 +174,8 @@ typedef kf_imu_input_f32 kf_imu_input;
 typedef kf_calib_input_f32 kf_calib_input;
 typedef calib_apply_f32_state kf_calib_state;
 typedef calib_apply_f32_params kf_calib_params;
+#include "joint_angle_f32.h"
+typedef joint_angle_f32_state kf_joint_state;
 typedef union {
     uint8_t none;   /* every filter may be left out of a build */
 #ifndef KF_WITHOUT_COMPLEMENTARY

@@ -58,4 +58,9 @@ uint16_t kf_hal_battery_mv(void);
  * since reset; 0 by default. */
 uint32_t kf_hal_sensor_dropped(void);
 
+/* Two-sensor units (KF_JOINT_ID != 0): the next sample of the second (distal) sensor, on the
+ * same clock; returns 1 if one was available.  Default: no second sensor (0); HIL_SENSOR
+ * with id = 1 stands in for it. */
+int kf_hal_sensor2_read(kf_raw_sample *out);
+
 #endif /* KF_HAL_H */

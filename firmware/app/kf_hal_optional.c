@@ -21,3 +21,9 @@ __attribute__((weak)) uint32_t kf_hal_sensor_dropped(void)
 {
     return 0u;
 }
+
+__attribute__((weak)) int kf_hal_sensor2_read(kf_raw_sample *out)
+{
+    (void)out;
+    return 0;    /* no second sensor on this board */
+}

@@ -1,6 +1,7 @@
 /*
  * kf_handle.c - what the unit does with each received frame: signing policy, parameter
- * protocol, commands, time sync, HIL sensor input, signing setup.  Anything else is counted
+ * protocol, commands, time sync, HIL sensor input (HIL_SENSOR.id 0: the unit's sensor;
+ * id 1: the second, distal sensor of a two-sensor unit), signing setup.  Anything else is counted
  * as an unknown message and otherwise ignored.
  *
  * Signing: with a key set (SETUP_SIGNING), a signed frame must verify (signature, and a
@@ -302,6 +303,10 @@ static void handle_hil(kf_app *app, const mavlink_message_t *msg)
     kf_sample s;
     uint8_t ca = 0u, cg = 0u, cm = 0u, ct = 0u;
     mavlink_msg_hil_sensor_decode(msg, &m);
+    if (m.id > 1u || (m.id == 1u && app->values[KF_P_JOINT_ID].u == 0u)) {
+        app->cnt.hil_invalid++;        /* sensor 1 exists in two-sensor mode only */
+        return;
+    }
     float a[3] = {m.xacc, m.yacc, m.zacc};
     float g[3] = {m.xgyro, m.ygyro, m.zgyro};
     float b[3] = {m.xmag, m.ymag, m.zmag};
@@ -336,7 +341,11 @@ static void handle_hil(kf_app *app, const mavlink_message_t *msg)
         kf_config_reset_filter(app);   /* no estimate mixing sensor and simulated motion; the
                                         * first HIL sample gets the nominal time step */
     }
-    kf_app_sample(app, &s);
+    if (m.id == 1u) {
+        kf_app_sample2(app, &s);       /* the distal sensor: no answer of its own */
+    } else {
+        kf_app_sample(app, &s);
+    }
 }
 
 /* --- dispatch --------------------------------------------------------------------------- */

@@ -4,7 +4,8 @@
  * wired filter; values as 32-bit patterns (float bits for REAL32, integers bytewise).
  *
  * Order: application parameters (kf_app_param), calibration (KF_ACC_*, KF_GYR_*, KF_MAG_*,
- * generated), then each filter's parameters (KF_<tag>_*, generated) in kf_filter_list.h order.
+ * generated), then each filter's parameters (KF_<tag>_*, generated) in kf_filter_list.h order,
+ * then the joint-angle step's (KF_JA_*, generated; used in two-sensor mode, KF_JOINT_ID != 0).
  */
 #ifndef KF_PARAMS_H
 #define KF_PARAMS_H
@@ -23,6 +24,7 @@
 #define KF_PG_APP    0u
 #define KF_PG_CALIB  1u
 #define KF_PG_FILTER 2u
+#define KF_PG_JOINT  3u   /* joint-angle step (two-sensor mode) */
 
 /* flags */
 #define KF_PF_READONLY 1u
@@ -56,12 +58,14 @@ enum {
     KF_P_HIL_MODE,         /* HIL_SENSOR input: 0 counts + calibration, 1 direct float32 */
     KF_P_SERIAL_NO,        /* unit serial number */
     KF_P_SIGNING,          /* read-only: 1 when a signing key is set */
+    KF_P_JOINT_ID,         /* KF_JOINT of a two-sensor unit (0: one sensor, no KF_JOINT_ANGLE) */
     KF_P_APP_COUNT
 };
 
 #define KF_P_CALIB_FIRST  KF_P_APP_COUNT
 #define KF_P_FILTER_FIRST (KF_P_CALIB_FIRST + KF_GEN_CALIB_PARAM_COUNT)
-#define KF_PARAM_COUNT    (KF_P_FILTER_FIRST + KF_GEN_FILTER_PARAM_COUNT)
+#define KF_P_JOINT_FIRST  (KF_P_FILTER_FIRST + KF_GEN_FILTER_PARAM_COUNT)
+#define KF_PARAM_COUNT    (KF_P_JOINT_FIRST + KF_GEN_JOINT_PARAM_COUNT)
 
 extern const kf_param_desc kf_param_table[KF_PARAM_COUNT];
 

@@ -1,7 +1,13 @@
 /*
  * kf_sample.c - one sample through the pipeline: time step, calibration (generated
  * calib_apply) or the direct HIL conversion, the selected filter, then the messages that are
- * due for it (KF_RAW_SAMPLE, KF_ORIENTATION, HIGHRES_IMU, ATTITUDE_QUATERNION).
+ * due for it (KF_RAW_SAMPLE, KF_ORIENTATION, HIGHRES_IMU, ATTITUDE_QUATERNION, and in
+ * two-sensor mode KF_JOINT_ANGLE).
+ *
+ * Two-sensor mode (KF_JOINT_ID != 0): sensor 1 (distal) runs through the same calibration map
+ * and its own instance of the selected filter (kf_app_sample2); whenever KF_ORIENTATION of
+ * sensor 0 (proximal) goes out, the generated joint step combines the two filters' latest
+ * outputs and KF_JOINT_ANGLE goes out with sensor 0's time and sample counter.
  */
 #include <math.h>
 #include <stdint.h>
@@ -35,21 +41,33 @@ static void input_to_float(const kf_imu_input *in, float gyr[3], float acc[3], f
     }
 }
 
-static uint32_t time_step_us(kf_app *app, uint64_t t)
+static uint32_t time_step_us(const kf_app *app, uint64_t t, uint64_t *t_prev, uint8_t *have_prev)
 {
     uint32_t dt;
-    if (!app->have_prev) {
+    if (!*have_prev) {
         uint32_t rate = app->values[KF_P_RATE_HZ].u;   /* first sample: the nominal period */
         dt = (1000000u + rate / 2u) / rate;
-    } else if (t <= app->t_prev) {
+    } else if (t <= *t_prev) {
         dt = 0u;                                       /* the filter rejects a zero step */
     } else {
-        uint64_t d = t - app->t_prev;
+        uint64_t d = t - *t_prev;
         dt = d > KF_DT_US_MAX ? KF_DT_US_MAX : (uint32_t)d;
     }
-    app->t_prev = t;
-    app->have_prev = 1u;
+    *t_prev = t;
+    *have_prev = 1u;
     return dt;
+}
+
+/* counts + calibration, or the direct HIL values, -> the filter input record */
+static void filter_input(kf_app *app, const kf_sample *s, uint32_t dt_us, kf_imu_input *in)
+{
+    if (s->direct) {
+        float dt = (float)dt_us * 1e-6f;   /* the same single rounding as calib_apply's dt */
+        kf_gen_imu_from_f32(s->f_gyr, s->f_acc, s->f_mag, dt, in);
+    } else {
+        kf_gen_calib_apply(&app->calib, s->acc, s->gyr, s->mag, dt_us, in);
+    }
+    in->mag_valid = (uint8_t)(s->mag_valid != 0u && app->values[KF_P_MAG_ENABLE].u != 0u);
 }
 
 static void output_quat(const kf_app *app, float q[4])
@@ -155,6 +173,58 @@ static void send_attitude_quaternion(kf_app *app, uint64_t t)
     (void)kf_send(app, &msg);
 }
 
+/* KF_ANGLE_SEQUENCE of the joint step's `sequence` parameter (0 X-Z'-Y'', 1 X-Y'-Z'', 2 Z-Y'-X'') */
+static uint8_t joint_sequence(const kf_app *app)
+{
+    float v = app->values[KF_P_JOINT_FIRST + KF_GEN_JOINT_P_SEQUENCE].f;
+    if (v < 0.5f) {
+        return KF_ANGLE_SEQUENCE_XZY;
+    }
+    return v < 1.5f ? KF_ANGLE_SEQUENCE_XYZ : KF_ANGLE_SEQUENCE_ZYX;
+}
+
+#define KF_NEAR_LOCK_RAD 1.3962634f   /* 80 deg: |angle_2| within 10 deg of the singularity */
+
+static void send_joint_angle(kf_app *app, uint64_t t, uint32_t counter)
+{
+    mavlink_message_t msg;
+    uint8_t st = 0u;
+    const float *a = app->jout.angles;
+    kf_gen_joint_update(&app->joint, &app->out, &app->out2, &app->jout);
+    st |= (app->initialised && app->initialised2 && app->jout.valid) ? KF_JOINT_ANGLE_STATUS_VALID : 0u;
+    st |= (a[1] > KF_NEAR_LOCK_RAD || a[1] < -KF_NEAR_LOCK_RAD) ? KF_JOINT_ANGLE_STATUS_NEAR_SINGULARITY : 0u;
+    st |= (app->values[KF_P_MAG_ENABLE].u == 0u || app->out.mag_disturbed || app->out2.mag_disturbed)
+              ? KF_JOINT_ANGLE_STATUS_HEADING_UNRELIABLE : 0u;
+    mavlink_msg_kf_joint_angle_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg, t,
+                                           counter, a[0], a[1], a[2],
+                                           (uint8_t)app->values[KF_P_JOINT_ID].u, joint_sequence(app),
+                                           st, kf_sysid(app), kf_sysid(app));
+    (void)kf_send(app, &msg);
+}
+
+void kf_app_sample2(kf_app *app, const kf_sample *s)
+{
+    kf_imu_input in;
+    if (!app->two_sensors) {
+        return;
+    }
+    uint32_t dt_us = time_step_us(app, s->time_us, &app->t_prev2, &app->have_prev2);
+    filter_input(app, s, dt_us, &in);
+    if (app->filter < 0) {
+        return;
+    }
+    int32_t before = app->out2.rejected;
+    kf_gen_filters[app->filter].update(&app->filt2, &in, &app->out2);
+    if (!isfinite(app->out2.q[0]) || !isfinite(app->out2.q[1]) || !isfinite(app->out2.q[2])
+        || !isfinite(app->out2.q[3])) {
+        kf_config_reset_filter2(app);
+        app->numeric_reset = 1u;
+        app->cnt.numeric_resets++;
+    } else if (app->out2.rejected == before) {
+        app->initialised2 = 1u;
+    }
+}
+
 static int due(uint16_t div, uint16_t *cnt)
 {
     if (div == 0u) {
@@ -175,20 +245,14 @@ static int quat_finite(const float q[4])
 void kf_app_sample(kf_app *app, const kf_sample *s)
 {
     uint32_t counter = app->sample_counter++;
-    uint32_t dt_us = time_step_us(app, s->time_us);
+    uint32_t dt_us = time_step_us(app, s->time_us, &app->t_prev, &app->have_prev);
     uint8_t mag_valid = (uint8_t)(s->mag_valid != 0u);
     uint8_t hil = (uint8_t)((s->flags & KF_RAW_SAMPLE_FLAGS_SIMULATED) != 0u);
     kf_imu_input in;
 
     app->cnt.samples++;
     app->rates.samples++;
-    if (s->direct) {
-        float dt = (float)dt_us * 1e-6f;   /* the same single rounding as calib_apply's dt */
-        kf_gen_imu_from_f32(s->f_gyr, s->f_acc, s->f_mag, dt, &in);
-    } else {
-        kf_gen_calib_apply(&app->calib, s->acc, s->gyr, s->mag, dt_us, &in);
-    }
-    in.mag_valid = (uint8_t)(mag_valid && app->values[KF_P_MAG_ENABLE].u != 0u);
+    filter_input(app, s, dt_us, &in);
     app->last_in = in;
     app->mag_seen |= in.mag_valid;
     if ((s->flags & (KF_RAW_SAMPLE_FLAGS_ACC_CLIPPED | KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED
@@ -212,6 +276,9 @@ void kf_app_sample(kf_app *app, const kf_sample *s)
     }
     if (app->filter >= 0 && (hil || (app->streaming && due(app->div_ori, &app->cnt_ori)))) {
         send_orientation(app, s->time_us, counter);
+        if (app->two_sensors) {
+            send_joint_angle(app, s->time_us, counter);   /* at the orientation rate */
+        }
     }
     if (app->streaming && due(app->div_hr, &app->cnt_hr)) {
         send_highres(app, s, mag_valid);
