@@ -36,12 +36,12 @@ typedef struct {
     float b1;  /* m, range [-0.3, 0.3], default 0.07: thigh IMU: anterior offset from the thigh axis */
     float a2;  /* m, range [0, 1], default 0.2: shank IMU: distance along the shank from the knee */
     float b2;  /* m, range [-0.3, 0.3], default 0.05: shank IMU: anterior offset from the shank axis */
-    float sigma_gyr;  /* rad/s, range [1e-05, 10], default 0.005: gyroscope noise (standard deviation) */
-    float sigma_acc;  /* m/s^2, range [0.0001, 50], default 0.05: accelerometer noise (standard deviation; include model error: soft tissue) */
-    float q_torque;  /* (N*m)^2/s, range [1e-06, 1e+09], default 20000: power spectral density of the rate of the joint torques (random walk) */
-    float p0_angle;  /* rad, range [1e-05, 10], default 0.2: initial standard deviation of the angles */
-    float p0_rate;  /* rad/s, range [1e-05, 100], default 0.1: initial standard deviation of the rates */
-    float p0_torque;  /* N*m, range [0.001, 10000], default 30: initial standard deviation of the torques */
+    float sigma_gyr;  /* rad/s, range [0.001, 0.1], default 0.005: gyroscope noise (standard deviation); range: float32 measured to work inside it (dynamics/leg.py) */
+    float sigma_acc;  /* m/s^2, range [0.01, 1], default 0.05: accelerometer noise (standard deviation; include model error: soft tissue); range: float32 measured to work inside it (dynamics/leg.py) */
+    float q_torque;  /* (N*m)^2/s, range [1000, 1e+06], default 20000: power spectral density of the rate of the joint torques (random walk); range: float32 measured to work inside it (dynamics/leg.py) */
+    float p0_angle;  /* rad, range [0.01, 1], default 0.2: initial standard deviation of the angles; range: float32 measured to work inside it (dynamics/leg.py) */
+    float p0_rate;  /* rad/s, range [0.01, 1], default 0.1: initial standard deviation of the rates; range: float32 measured to work inside it (dynamics/leg.py) */
+    float p0_torque;  /* N*m, range [1, 300], default 30: initial standard deviation of the torques; range: float32 measured to work inside it (dynamics/leg.py) */
 } leg_f32_params;
 
 /* Filter state (no hidden globals: one struct per filter instance). */
@@ -53,7 +53,7 @@ typedef struct {
     float P[21];  /* SI, range [-1e+08, 1e+08]: error covariance, upper triangle row by row (order z, zd, te) */
     uint8_t initialised;  /* : 1 once started */
     int32_t rejected;  /* samples: sensor samples rejected (non-finite or out of range) and samples with an invalid dt */
-    int32_t skipped;  /* updates: scalar updates skipped because the innovation variance was not positive */
+    int32_t skipped;  /* samples: samples in which a scalar update was skipped because its innovation variance was not above half the sensor variance (the covariance lost positive definiteness) */
     int32_t resets;  /* : restarts after a non-finite or out-of-range estimate */
 } leg_f32_state;
 

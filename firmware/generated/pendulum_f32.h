@@ -51,7 +51,7 @@ typedef struct {
     float P[78];  /* SI, range [-1e+10, 1e+10]: error covariance, upper triangle row by row (order z, zd, te) */
     uint8_t initialised;  /* : 1 once started from a full set of markers */
     int32_t rejected;  /* samples: sensor samples rejected (non-finite or out of range) and frames with an invalid dt */
-    int32_t skipped;  /* updates: scalar updates skipped because the innovation variance was not positive */
+    int32_t skipped;  /* frames: frames in which a scalar update was skipped because its innovation variance was not above half the sensor variance (the covariance lost positive definiteness) */
     int32_t resets;  /* : restarts after a non-finite or out-of-range estimate */
 } pendulum_f32_state;
 

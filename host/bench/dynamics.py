@@ -68,9 +68,10 @@ def run(args) -> int:
     result: dict = {}
     with progress(True) as bar:
         if "pendulum" in parts:
+            # plant noise chosen on another truth seed, then the table on the scored seed
+            result["pendulum_tuning"] = B.tuning(bar, args.seed)
             result["pendulum"] = B.pendulum_table(args.variants, args.jobs, not args.no_ref, bar,
-                                                  args.seed)
-            result["pendulum_tuning"] = B.tuning(bar)
+                                                  args.seed, result["pendulum_tuning"]["q_used"])
         if "robustness" in parts:
             result["robustness"] = B.robustness(bar, args.seed)
         if "leg" in parts:
@@ -109,11 +110,21 @@ def _print(r: dict) -> None:
         con.print(t)
         tu = r.get("pendulum_tuning")
         if tu:
-            con.print("Plant PSD of the efforts (FDMC, f32 C): " + ", ".join(
-                f"q={s['q']:g}: RMS F_e {s['rms_fe']:.2f}" for s in tu["sweep"])
-                + f"  -> used q = {tu['q_used']:g} (N^2/s, (N*m)^2/s)")
+            con.print(f"Plant PSD of the efforts (FDMC, f32 C), tuned on seed {tu['tuning_seed']}: "
+                      + ", ".join(f"q={s['q']:g}: RMS F_e {s['rms_fe']:.2f}"
+                                  for s in tu["sweep"])
+                      + f"  -> used q = {tu['q_used']:g} (N^2/s, (N*m)^2/s)"
+                      + (" (at the edge of the search)" if tu["at_edge"] else ""))
+            con.print(f"  same sweep on the scored seed {tu['scored_seed']} (not used): "
+                      + ", ".join(f"q={s['q']:g}: {s['rms_fe']:.2f}"
+                                  for s in tu["scored_seed_sweep"]))
     if "robustness" in r:
         rb = r["robustness"]
+        tn = rb["tuning"]
+        con.print(f"Robustness tuning on seed {tn['tuning_seed']}: FDMC q = {tn['fd_q']:g}"
+                  + (" (at the edge of the search)" if tn["fd_q_at_edge"] else "")
+                  + f", FCDI sigma_a = {tn['fcdi_sigma_a']:g}"
+                  + (" (at the edge of the search)" if tn["fcdi_sigma_a_at_edge"] else ""))
         t = Table(title=f"Robustness, seed 000 §3.3.4 — {rb['trial']}")
         t.add_column("study")
         t.add_column("dynamic EKF (FDMC)", justify="right")
@@ -127,8 +138,13 @@ def _print(r: dict) -> None:
                       _f(m["fcdi_tau1_rmse"], "{:.2f}"))
         oc = rb["occlusion"]
         rows = (("theta1_max_abs_error_rad", "occlusion: max |θ1 error| (rad)", "{:.4f}"),
+                ("theta1dot_max_abs_error_rad_s", "occlusion: max |θ̇1 error| (rad/s)",
+                 "{:.2f}"),
                 ("tau1_rmse_during_nm", "occlusion: τ1 RMSE during (N·m)", "{:.2f}"),
                 ("tau1_rmse_500ms_after_nm", "occlusion: τ1 RMSE 0.5 s after", "{:.2f}"),
+                ("tau1_rmse_trial_nm", "occlusion: τ1 RMSE whole trial", "{:.2f}"),
+                ("tau1_rmse_trial_without_occlusion_nm", "no occlusion: τ1 RMSE whole trial",
+                 "{:.2f}"),
                 ("tau1_reconvergence_s", "occlusion: τ1 reconvergence (s)", "{:.2f}"),
                 ("theta1_reconvergence_s", "occlusion: θ1 reconvergence (s)", "{:.2f}"))
         for key, label, fmt in rows:
@@ -148,7 +164,9 @@ def _print(r: dict) -> None:
         for label, m in (("RK4 float32 C", lg["f32"]), ("RK4 reference", lg["ref"]),
                          ("forward Euler (f32 C)", lg["forward_euler"]),
                          ("gyroscopes only (f32 C)", lg["gyroscopes_only"]),
-                         ("with ankle force sensor", lg["foot_sensor"])):
+                         ("with ankle force sensor", lg["foot_sensor"]),
+                         ("faster gait 1.4 Hz (f32 C)", lg["faster_gait_1p4hz"]["f32"]),
+                         ("faster gait 1.4 Hz (reference)", lg["faster_gait_1p4hz"]["ref"])):
             t.add_row(label, _f(m["hip_rmse_nm"], "{:.3f}"), _f(m["knee_rmse_nm"], "{:.3f}"),
                       _f(m["hip_lag_ms"], "{:.1f}"), _f(m["knee_lag_ms"], "{:.1f}"))
         con.print(t)

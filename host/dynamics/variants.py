@@ -69,9 +69,11 @@ def write(est: Estimator, system: str = "f32") -> Path:
 
 class VariantRunner(cg_runner.CRunner):
     """cg_runner.CRunner for an estimator instance built from the cache (``model=True``: its
-    generated Python model instead of the C)."""
+    generated Python model instead of the C).  ``cflags`` replaces the host flags of the C
+    build (tests build at -O0 to save compile time; the IEEE flags keep the results)."""
 
-    def __init__(self, est: Estimator, system: str = "f32", model: bool = False):
+    def __init__(self, est: Estimator, system: str = "f32", model: bool = False,
+                 cflags: list[str] | None = None):
         self.est = est
         self.name, self.system = est.name, system
         d = write(est, system)
@@ -87,7 +89,8 @@ class VariantRunner(cg_runner.CRunner):
         if not model:
             t0 = time.perf_counter()
             headers = [d / f"kf_{est.inputs.name}_{system}.h", d / f"{P}.h"]
-            self.ffi, self.lib = cffi_build(P, headers, [d / f"{P}.c"], include_dirs=[d])
+            self.ffi, self.lib = cffi_build(P, headers, [d / f"{P}.c"], include_dirs=[d],
+                                            cflags=cflags)
             self.build_seconds = time.perf_counter() - t0
 
     def run_encoded(self, e):

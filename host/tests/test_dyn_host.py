@@ -127,3 +127,31 @@ def test_fixed_point_study_runs_on_a_short_trial():
     assert r["generator"].startswith("RangeError")
     assert [o["margin"] for o in r["oracle_fixed_point"]] == [2.0, 16.0]
     json.dumps(r)
+
+
+def test_tune_extends_its_grid_when_the_best_value_is_at_an_edge():
+    import math
+    grid = (1e3, 1e4, 1e5)
+
+    def bowl(at):
+        return lambda v: (math.log10(v) - math.log10(at)) ** 2
+    inner = B.tune(bowl(1e4), grid)
+    assert inner["best"] == 1e4 and list(inner["scores"]) == list(grid) and not inner["at_edge"]
+    up = B.tune(bowl(1e7), grid, hi=1e9)             # extended 1e6, 1e7, 1e8: interior again
+    assert up["best"] == 1e7 and max(up["scores"]) == 1e8 and not up["at_edge"]
+    down = B.tune(bowl(1e1), grid, lo=1e-8)
+    assert down["best"] == 1e1 and min(down["scores"]) == 1.0
+    capped = B.tune(bowl(1e12), grid, hi=1e6)        # stops at the setting's upper limit
+    assert capped["best"] == 1e6 and capped["at_edge"] and capped["at_limit"]
+    far = B.tune(bowl(1e30), grid, max_extend=2)     # gives up after max_extend steps
+    assert far["best"] == 1e7 and far["at_edge"] and not far["at_limit"]
+
+
+def test_annex_a_plant_noise_is_tuned_on_another_seed_than_the_scored_one():
+    tu = B.tuning(seed=0)
+    assert tu["tuning_seed"] != tu["scored_seed"] == 0
+    sweep = {s["q"]: s["rms_fe"] for s in tu["sweep"] if s["q"] not in B.Q_TABLE_A_1}
+    assert tu["q_used"] == min(sweep, key=sweep.get) and not tu["at_edge"]
+    # the scored seed's sweep is reported beside it, computed on a different trial
+    scored = {s["q"]: s["rms_fe"] for s in tu["scored_seed_sweep"]}
+    assert set(sweep) <= set(scored) and scored[tu["q_used"]] != sweep[tu["q_used"]]

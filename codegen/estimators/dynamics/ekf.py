@@ -30,9 +30,11 @@ Update: the sensors are independent (diagonal noise), so the update is done one 
 measurement at a time in Joseph form, P ← (I − k h)P(I − k h)ᵀ + k r kᵀ, with the measurement
 Jacobian and prediction taken at the prior and the innovation corrected for the earlier scalar
 updates (ν_i − H_i(x − x⁻)): this equals the batch EKF update exactly in exact arithmetic and
-needs no matrix inverse.  A lost sensor has its row of H and its innovation zeroed, so sizes
-never change; an innovation variance that is not above half the sensor variance (P lost
-positive definiteness) skips that scalar update and is reported.
+needs no matrix inverse.  A lost sensor keeps its row of H (sizes never change): its
+innovation and its gain are set to zero, so that scalar update leaves x and P exactly as they
+were (P + k wᵀ − PHᵀ kᵀ with k = 0), the same as the batch update without that row.  An
+innovation variance h P hᵀ + r that is not above half the sensor variance r (P lost positive
+definiteness) gates that scalar update the same way (zero gain) and is reported as skipped.
 """
 from __future__ import annotations
 
@@ -374,7 +376,9 @@ def measurement_jacobian(h_fn, z, zd, te, zdd, sens, p):
 def sequential_update(xv, P, innov, H, rvar, use):
     """Scalar Joseph-form updates in order.  xv: state list (prior), P: full symmetric prior,
     innov: y − h(x⁻) per measurement, H: rows, rvar: sensor variances, use: bool per
-    measurement (valid sample).  Returns (x, P, skipped_any)."""
+    measurement (valid sample).  A measurement with use false, or whose innovation variance is
+    not above rvar/2, gets a zero gain (its H row is not zeroed).  Returns (x, P, skipped_any:
+    a used measurement was skipped for its innovation variance)."""
     N = len(xv)
     x0 = list(xv)
     x = list(xv)

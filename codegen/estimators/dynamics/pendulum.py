@@ -95,8 +95,9 @@ def _state_outputs(residual: bool):
             init=False),
         Var("rejected", 1, 0, 2 ** 31 - 1, "samples", "sensor samples rejected (non-finite "
             "or out of range) and frames with an invalid dt", INT, init=0),
-        Var("skipped", 1, 0, 2 ** 31 - 1, "updates", "scalar updates skipped because the "
-            "innovation variance was not positive", INT, init=0),
+        Var("skipped", 1, 0, 2 ** 31 - 1, "frames", "frames in which a scalar update was "
+            "skipped because its innovation variance was not above half the sensor variance "
+            "(the covariance lost positive definiteness)", INT, init=0),
         Var("resets", 1, 0, 2 ** 31 - 1, "", "restarts after a non-finite or out-of-range "
             "estimate", INT, init=0),
     )
