@@ -139,6 +139,74 @@ int main(int argc, char **argv)
 """
 
 
+_VQF_COUNT_MAIN = r"""
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+#include "vqf.hpp"
+/* VQF::update over the trial, as VQF::updateBatch does (double precision, the library default) */
+extern "C" void kf_vqf_run(const double *gyr, const double *acc, const double *mag, double *q,
+                           int n, double ts)
+{
+    VQF vqf(ts);
+    for (int i = 0; i < n; i++) {
+        vqf.update(gyr + 3 * i, acc + 3 * i, mag + 3 * i);
+        vqf.getQuat9D(q + 4 * i);
+    }
+}
+int main(int argc, char **argv)
+{
+    FILE *f = std::fopen(argv[1], "rb");
+    if (f == NULL) { std::perror(argv[1]); return 2; }
+    std::fseek(f, 0, SEEK_END); long len = std::ftell(f); std::fseek(f, 0, SEEK_SET);
+    std::vector<double> buf((size_t)len / sizeof(double));
+    if (std::fread(buf.data(), 1, (size_t)len, f) != (size_t)len) { std::perror(argv[1]); return 2; }
+    std::fclose(f);
+    const int n = (int)(buf.size() / 9);
+    std::vector<double> q(4 * (size_t)n);
+    kf_vqf_run(buf.data(), buf.data() + 3 * n, buf.data() + 6 * n, q.data(), n, std::atof(argv[2]));
+    std::printf("%d %g\n", n, q[4 * (size_t)n - 4]);
+    return 0;
+}
+"""
+
+
+def vqf_instructions_per_sample(trial) -> float:
+    """Instructions per sample of VQF's C++ (its PyPI sdist, benchmark-only) updating over the
+    trial, built with our host flags (C++ instead of C99), counted by valgrind like ours."""
+    import re
+    import subprocess
+    import tempfile
+    from pathlib import Path
+    from kinefuse.codegen.build import HOST_CFLAGS
+    from kinefuse.hil_tests.qemu.competitors import fetch_sdist
+    src = Path(fetch_sdist("vqf")) / "vqf" / "cpp"
+    flags = [f for f in HOST_CFLAGS if not f.startswith("-W") and not f.startswith("-std=")]
+    with tempfile.TemporaryDirectory(prefix="kf-count-vqf-") as tmp:
+        t = Path(tmp)
+        (t / "main.cpp").write_text(_VQF_COUNT_MAIN)
+        np.concatenate([np.ascontiguousarray(a, dtype=np.float64).ravel()
+                        for a in (trial.gyr, trial.acc, trial.mag)]).tofile(t / "in.bin")
+        cmd = ["g++", *flags, "-std=c++11", "-fno-exceptions", "-fno-rtti", "-I", str(src),
+               "-o", str(t / "count"), str(t / "main.cpp"), str(src / "vqf.cpp"), "-lm"]
+        proc = subprocess.run(cmd, capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise KinefuseError(f"could not build VQF's instruction counter: {proc.stderr[-400:]}")
+        out = t / "callgrind.out"
+        proc = subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}",
+                               "--collect-atstart=no", "--toggle-collect=kf_vqf_run",
+                               str(t / "count"), str(t / "in.bin"), str(trial.dt)],
+                              capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise KinefuseError(f"valgrind failed: {proc.stderr.strip().splitlines()[-1:]}")
+        ann = subprocess.run(["callgrind_annotate", "--inclusive=yes", str(out)],
+                             capture_output=True, text=True).stdout
+    m = re.search(r"^\s*([\d,]+)\s.*\bkf_vqf_run\b", ann, re.M)
+    if m is None:
+        raise KinefuseError("callgrind reported no count for kf_vqf_run")
+    return int(m.group(1).replace(",", "")) / trial.n
+
+
 def instructions_per_sample(name: str, inputs: dict, prm: dict, trial) -> dict[str, float]:
     """Instructions per sample of our f32 batch path and of Fusion's, same flags, same trial,
     counted by valgrind (callgrind, only inside the two batch functions).  ``trial`` None (the
@@ -256,6 +324,11 @@ def run(args) -> int:
     if args.instructions:
         eprint("  counting instructions under valgrind (a few seconds)...")
         result["instructions_per_sample"] = instructions_per_sample(name, inputs, prm, trial)
+        if trial is not None:
+            try:
+                result["instructions_per_sample"]["vqf"] = vqf_instructions_per_sample(trial)
+            except KinefuseError as exc:   # no C++ compiler or sdist offline: report, do not fail
+                eprint(f"  VQF instructions not counted: {exc}")
     if args.json:
         print(json.dumps(result))
         return 0
@@ -279,6 +352,9 @@ def run(args) -> int:
     elif ips:
         print(f"  instructions per sample (valgrind, x86-64, same flags): float32 C "
               f"{ips['f32_c']:.1f}")
+    if ips and ips.get("vqf"):
+        print(f"  VQF C++ {ips['vqf']:.1f} instructions per sample (VQF / ours = "
+              f"{ips['vqf'] / ips['f32_c']:.2f})")
     return 0
 
 
