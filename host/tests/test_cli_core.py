@@ -97,7 +97,8 @@ def test_bench_speed_json(short_trial):
 
 
 def test_bench_speed_instruction_counts_are_deterministic(short_trial):
-    """--instructions: valgrind counts inside the two batch functions; the same count twice."""
+    """--instructions: valgrind counts inside the three batch functions (ours, Fusion, VQF); the
+    same count twice."""
     runs = []
     for _ in range(2):
         r = kf("bench", "speed", "--data", str(short_trial), "--filter", "complementary",
@@ -105,7 +106,7 @@ def test_bench_speed_instruction_counts_are_deterministic(short_trial):
         assert r.returncode == 0, r.stderr
         runs.append(json.loads(r.stdout)["instructions_per_sample"])
     assert runs[0] == runs[1]
-    assert set(runs[0]) == {"f32_c", "imufusion"}
+    assert set(runs[0]) == {"f32_c", "imufusion", "vqf"}
     # a 9D update is hundreds of instructions, not a handful (a wrong function) nor 10^5
     assert all(100 < v < 5000 for v in runs[0].values()), runs[0]
 
