@@ -85,6 +85,9 @@ def test_signing_end_to_end(run, tmp_path):
                        "refused MAV_CMD_KF_STREAM", "MAV_RESULT_DENIED", last_line=True)
         errors = [m["text"] for m in load(out1).streams[0].meta if m.get("type") == "error"]
         assert len(errors) == 1 and "DENIED" in errors[0]                 # the file says why it is empty
+        one_line_error(run("record", "--port", port[0], "--out", tmp_path / "wrong.kfr", "--duration", "0.5",
+                           "--start", "--key", "another key", "--no-params", "--json"),
+                       "no COMMAND_ACK for MAV_CMD_KF_STREAM", "right key", last_line=True)
         out2 = tmp_path / "signed.kfr"
         code, _, err = run("record", "--port", port[0], "--out", out2, "--duration", "0.6", "--start",
                            "--rate", "200", "--key", key.hex(), "--json")

@@ -242,7 +242,11 @@ def start_streaming(sessions, rate_hz: float | None) -> list[str]:
                 if r != 0:
                     raise C.CommandError(f"{s.conn.url}: {C.refusal_text(sysid, cmd, r, s.encoder.key is not None)}", r)
             if not acks:
-                warnings.append(f"{s.conn.url}: no COMMAND_ACK for {C.command_name(cmd)} (no unit answering?)")
+                text = f"{s.conn.url}: no COMMAND_ACK for {C.command_name(cmd)}"
+                if s.encoder.key is not None:    # a unit with another key drops signed frames silently
+                    raise C.CommandError(text + " (a unit drops frames signed with a key other than its own: "
+                                                "is it the right key?)")
+                warnings.append(text + " (no unit answering?)")
                 break
     return warnings
 

@@ -189,8 +189,12 @@ class Recorder:
                     self.writer.meta(st.id, {"type": "error", "text": text})
                     raise CommandError(text, r)
                 return
-        self._warn(st, f"{st.url}: no COMMAND_ACK for {command_name(command)} within "
-                       f"{retries} x {self.ack_timeout:g} s (no unit answering on this connection?)")
+        text = (f"{st.url}: no COMMAND_ACK for {command_name(command)} within {retries} x {self.ack_timeout:g} s")
+        if self.key is not None:   # signed: a unit with another key drops it, silently
+            text += " (a unit drops frames signed with a key other than its own: is it the right key?)"
+            self.writer.meta(st.id, {"type": "error", "text": text})
+            raise CommandError(text)
+        self._warn(st, text + " (no unit answering on this connection?)")
 
     def _setup(self) -> None:
         if self.fetch_params:
