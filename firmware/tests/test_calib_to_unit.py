@@ -122,3 +122,32 @@ def test_out_of_range_values_are_refused_before_connecting(tmp_path, capsys):
 def test_serial_matching(serial, unit_serial, ok):
     from kinefuse.host.calib.unitparams import serial_matches
     assert serial_matches(serial, unit_serial) is ok
+
+
+def test_apply_to_a_signed_unit_needs_its_key(tmp_path, capsys):
+    """A unit with a signing key refuses the unsigned writes (one line, exit 2, nothing
+    changed); with --key-file the same apply writes and reads back."""
+    import hashlib
+    key_hex = hashlib.sha256(b"calib apply test").hexdigest()
+    keyfile = tmp_path / "unit.key"
+    keyfile.write_text(key_hex + "\n")
+    path = tmp_path / "unit7.json"
+    unitfile.save(_doc(), str(path))
+    with HostUnit("f32", sensor=False, storage=tmp_path / "unit.storage") as u:
+        port = f"pty:{u.device}"
+        code, out, err = _run(capsys, "signing", "--port", port, "--unit", "1", "--new-key-file", keyfile)
+        assert code == 0, err
+        s = u.session()
+        before = _calib_values(ParamClient(s, 1))
+        s.close()
+        code, out, err = _run(capsys, "calibrate", "apply", "--calib", path, "--port", port, "--unit", "1")
+        lines = err.strip().splitlines()
+        assert code == 2 and len(lines) == 1 and lines[0].startswith("kinefuse: error:"), (code, err)
+        s = u.session()
+        assert _calib_values(ParamClient(s, 1)) == before
+        s.close()
+        code, out, err = _run(capsys, "calibrate", "apply", "--calib", path, "--port", port, "--unit", "1",
+                              "--key-file", keyfile, "--json")
+        assert code == 0, err
+        res = json.loads(out)
+        assert len(res["written"]) == 36

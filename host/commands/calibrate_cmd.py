@@ -90,6 +90,8 @@ def register(subparsers) -> None:
     ap.add_argument("--timeout", type=float, default=3.0, metavar="S", help="wait this long for the unit (default 3)")
     ap.add_argument("--dry-run", action="store_true", help="print the parameters without connecting")
     ap.add_argument("--json", action="store_true", help="print exactly one JSON object")
+    from kinefuse.host.link.signing import add_key_args
+    add_key_args(ap, "the calibration writes")
     ap.set_defaults(func=run_apply)
 
 
@@ -295,8 +297,10 @@ def run_apply(args) -> int:
         raise KinefuseError("calibrate apply needs --port CONN (or --dry-run)")
     from kinefuse.host.link.connection import open_connection, parse_baud
     from kinefuse.host.link.session import Session
+    from kinefuse.host.link.signing import key_from_args
+    key = key_from_args(args)
     conn = open_connection(args.port, parse_baud(args.baud))
-    with Session(conn) as s:
+    with Session(conn, key=key) as s:
         sysid = args.unit
         if sysid is None:
             hb = s.wait_for(lambda f: f.msgid == 0 and f.sysid != 255, timeout=args.timeout)
