@@ -40,7 +40,10 @@ updated samples are ``mag_t``/``mag_native``; ``mag`` holds each of them until t
 (as the unit does between its slower magnetometer readings).
 
 **Damaged files.** A truncated recording (killed recorder, copied while recording) is read up to
-the cut, a damaged chunk is skipped; both add a warning.
+the cut.  A damaged chunk whose header holds is recovered (its intact frames kept, checked by
+their MAVLink CRCs: only frames the damage touched are lost); one whose header is damaged is
+skipped up to the next intact chunk.  Both add a warning, which counts the damaged chunks
+recovered and skipped (and the bytes lost), as ``kinefuse stats`` does.
 
 A raw MAVLink byte capture (no ``.kfr`` header; give ``fmt="kfr"`` explicitly) or a ``.tlog`` is
 read the same way; a raw capture has no host times, so ``t`` is then the unit's own clock
@@ -268,7 +271,8 @@ def read(path: str, *, unit=None, **_) -> Recording:
     if rec is not None and rec.truncated:
         warnings.append(f"{path}: the recording is truncated (ends inside a chunk): read up to the cut")
     if rec is not None and rec.damaged_chunks:
-        warnings.append(f"{path}: {rec.damaged_chunks} damaged chunk(s) skipped")
+        from kinefuse.host.link.stats import damage_text    # recovered vs skipped, as `kinefuse stats`
+        warnings.append(f"{path}: {damage_text(rec)}")
 
     meta = {
         "unit": u["label"], "sysid": u["sysid"], "stream": u["stream"], "connection": u.get("connection"),

@@ -197,3 +197,19 @@ def test_stats_reports_damaged_chunks_in_text_and_json(tmp_path, capsys):
     assert cli.main(["stats", str(p)]) == 0
     out = capsys.readouterr().out
     assert "2 damaged (1 recovered)" in out and "warning: 2 damaged chunk(s)" in " ".join(out.split())
+
+
+def test_kfr_reader_warning_counts_recovered_and_skipped_chunks(tmp_path):
+    from kinefuse.host.readers import read_recording
+    p = _file(tmp_path / "r.kfr")
+    data = bytearray(p.read_bytes())
+    chs = _rx_chunks(bytes(data))
+    data[chs[2].offset + 5] ^= 0x01                               # header of chunk 2: skipped
+    data[chs[5].offset + recording.CHUNK.size + 28 + 10 * FRAME + 30] ^= 0x02   # payload: recovered
+    p.write_bytes(bytes(data))
+    rec = read_recording(str(p), fmt="kfr")
+    damage = [w for w in rec.warnings if "damaged chunk" in w]
+    assert len(damage) == 1, rec.warnings
+    assert "2 damaged chunk(s): 1 recovered" in damage[0] and "1 skipped" in damage[0], damage
+    assert "chunk(s) skipped" not in damage[0]                   # the old message claimed all skipped
+    assert rec.metadata["samples_lost"] == 51 + 1                 # chunk 2 and one frame of chunk 5
