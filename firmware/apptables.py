@@ -11,12 +11,18 @@ estimator's declared parameter ranges.  Outputs:
   build converts with ``kf_q_from_f32``), init (the generated range check), live parameter
   change, update; the calibration binding; the direct float32 -> input record conversion;
 * ``kf_params_gen.inc`` - the MAVLink parameter rows of calibration and filter parameters,
-  then those of the joint-angle step (``joint_angle``, two-sensor mode, ``KF_JA_*``).
+  then those of the joint-angle step (``joint_angle``, two-sensor mode, ``KF_JA_*``), then those
+  of the wearable leg EKF (``leg``, two-sensor mode with ``KF_EFF_RATE_HZ`` != 0, ``KF_LEG_*``).
 
 The joint-angle binding (two-sensor mode) converts the filters' quaternion outputs into the
 joint step's input record: f32 builds pass the float32 values; q builds requantise the raw
 filter output (every wired filter's ``q`` has the same format, checked here) to the joint
 input format with one rounding shift (round half up, as the generated code rounds).
+
+The leg EKF (``codegen/estimators/dynamics/leg.py``) is generated in float32 only: its binding
+(``kf_gen_leg_init``, the type ``kf_leg_state``, ``KF_HAVE_LEG``) exists in f32 builds that do
+not define ``KF_WITHOUT_LEG``; its parameter rows are in every build's table (as the rows of a
+filter left out of a build), the application refuses to turn it on where it is not built.
 
     python -m kinefuse.firmware.build tables          # write
     python -m kinefuse.firmware.build tables --check  # exit 1 when stale (CI)
@@ -40,6 +46,8 @@ CALIB = "calib_apply"
 JOINT = "joint_angle"          # two-sensor mode: the joint step (parameters KF_JA_*), its files
 JOINT_ESTIMATOR = "joint-angle"   # ... and its registry name
 JOINT_TAG = "JA"
+LEG = "leg"                    # two-sensor mode: the wearable leg EKF (float32 only), KF_LEG_*
+LEG_TAG = "LEG"
 NAME_MAX = 16
 RAW_MAX = 2 ** 31 - 1
 
@@ -208,7 +216,23 @@ def collect(entries: list[Entry]) -> tuple[list[FilterInfo], dict]:
         if len(n) > NAME_MAX:
             raise KinefuseError(f"calibration parameter name {n} is longer than {NAME_MAX}")
     calib["joint"] = _collect_joint(filters)
+    calib["leg"] = _collect_leg()
     return filters, calib
+
+
+def _collect_leg() -> dict:
+    """The leg EKF's parameters (stored in the calib dict's "leg"); float32 model only."""
+    est = _estimator(LEG)
+    m = _model(LEG, "f32")
+    if [p[0] for p in m.FIELDS["param"]] != [p.name for p in est.params]:
+        raise KinefuseError(f"model {m.__name__} is stale (parameters differ from {LEG}.py): run `kinefuse codegen`")
+    if "q" in getattr(est, "systems", ("f32", "q")):
+        raise KinefuseError(f"{LEG} is generated in fixed point too: its binding assumes float32 only")
+    outs = {o[0]: o[1:] for o in m.FIELDS["output"]}
+    for name, shape in (("te", (2, "real")), ("te_std", (2, "real")), ("initialised", (1, "bool"))):
+        if outs.get(name) != shape:
+            raise KinefuseError(f"{LEG}: output {name} is not {shape} (the application reads it)")
+    return {"params": list(est.params), "names": _param_names(f"KF_{LEG_TAG}_", est.params)}
 
 
 def _collect_joint(filters: list[FilterInfo]) -> dict:
@@ -259,7 +283,13 @@ def render_header(filters: list[FilterInfo], calib: dict) -> str:
     L.append(f"#define KF_GEN_JOINT_PARAM_COUNT {len(J['params'])}")
     L.append(f"#define KF_GEN_JOINT_P_SEQUENCE {[p.name for p in J['params']].index('sequence')}"
              f"   /* index of KF_JA_SEQUENCE */")
+    jn = [p.name for p in J["params"]]
+    off = jn.index("prox_w")
+    if jn[off:off + 8] != [f"{s}_{c}" for s in ("prox", "dist") for c in "wxyz"]:
+        raise KinefuseError(f"{JOINT}: the offsets prox_w..z, dist_w..z are not consecutive parameters")
+    L.append(f"#define KF_GEN_JOINT_P_OFFSETS {off}   /* index of KF_JA_PROX_W (then PROX_X..Z, DIST_W..Z) */")
     L.append(f"#define KF_GEN_FRAC_DT_US {calib['in_frac']['dt_us']}")
+    L.append(f"#define KF_GEN_LEG_PARAM_COUNT {len(calib['leg']['params'])}   /* KF_LEG_*, in every build's table */")
     for k in ("gyr_raw", "mag_raw"):
         if calib["in_frac"][k] != calib["in_frac"]["acc_raw"]:
             raise KinefuseError("calibration count inputs have different formats")
@@ -276,13 +306,19 @@ def render_header(filters: list[FilterInfo], calib: dict) -> str:
         L.append(f"typedef {CALIB}_{sysname}_params kf_calib_params;")
         L.append(f'#include "{JOINT}_{sysname}.h"')
         L.append(f"typedef {JOINT}_{sysname}_state kf_joint_state;")
+        if sysname == "f32":
+            L += ["/* the leg EKF (two-sensor mode, KF_EFFORTS): float32 builds only, unless KF_WITHOUT_LEG */",
+                  "#ifndef KF_WITHOUT_LEG", "#define KF_HAVE_LEG 1", f'#include "{LEG}_f32.h"',
+                  f"typedef {LEG}_f32_state kf_leg_state;", f"typedef {LEG}_f32_output kf_leg_output;",
+                  f"typedef kf_leg_input_f32 kf_leg_input;", "#endif"]
         for what in ("state", "params"):
             L.append("typedef union {")
             L.append("    uint8_t none;   /* every filter may be left out of a build */")
             for f in filters:
                 L += [_guard(f), f"    {f.entry.name}_{sysname}_{what} {f.entry.name};", "#endif"]
             L.append(f"}} kf_filter_{what}_u;")
-    L += ["#endif", "", "#endif /* KF_FILTERS_GEN_H */", ""]
+    L += ["#endif", "", "#ifndef KF_HAVE_LEG", "#define KF_HAVE_LEG 0   /* fixed-point build, or KF_WITHOUT_LEG */",
+          "#endif", "", "#endif /* KF_FILTERS_GEN_H */", ""]
     return "\n".join(L)
 
 
@@ -432,6 +468,8 @@ def render_source(filters: list[FilterInfo], calib: dict) -> str:
         L.append("}")
         L.append("")
         L += _render_joint(sysname, calib["joint"])
+        if sysname == "f32":
+            L += _render_leg(calib["leg"])
     L += ["#endif", ""]
     return "\n".join(L)
 
@@ -474,6 +512,17 @@ def _render_joint(sysname: str, J: dict) -> list[str]:
     return L
 
 
+def _render_leg(G: dict) -> list[str]:
+    """kf_gen_leg_init (f32 builds with the leg EKF)."""
+    P = f"{LEG}_f32"
+    L = ["#if KF_HAVE_LEG", "int kf_gen_leg_init(kf_leg_state *s, const float *v)", "{",
+         f"    {P}_params p;", f"    {P}_default_params(&p);"]
+    for i, p in enumerate(G["params"]):
+        L.append(f"    p.{p.name} = v[{i}];")
+    L += [f"    return {P}_init(s, &p);", "}", "#endif", ""]
+    return L
+
+
 def render_params(filters: list[FilterInfo], calib: dict) -> str:
     L = ["/*", " * kf_params_gen.inc - MAVLink parameter rows of the calibration and of every wired filter:",
          " * KF_PARAM_ROW(name, group, filter, index, default, min, max), all REAL32.",
@@ -489,6 +538,10 @@ def render_params(filters: list[FilterInfo], calib: dict) -> str:
     for i, (p, n) in enumerate(zip(J["params"], J["names"])):
         L.append(f"KF_PARAM_ROW({_c_str(n)}, KF_PG_JOINT, 0u, {i}u, {_f32(p.default)}, {_f32(p.lo)}, "
                  f"{_f32(p.hi)})  /* {JOINT}.{p.name} [{p.unit or '-'}] */")
+    G = calib["leg"]
+    for i, (p, n) in enumerate(zip(G["params"], G["names"])):
+        L.append(f"KF_PARAM_ROW({_c_str(n)}, KF_PG_LEG, 0u, {i}u, {_f32(p.default)}, {_f32(p.lo)}, "
+                 f"{_f32(p.hi)})  /* {LEG}.{p.name} [{p.unit or '-'}] */")
     return "\n".join(L) + "\n"
 
 
@@ -510,6 +563,9 @@ def parameter_table() -> list[dict]:
     J = calib["joint"]
     rows += [{"name": n, "owner": JOINT, "field": p.name, "default": p.default, "min": p.lo,
               "max": p.hi, "unit": p.unit} for p, n in zip(J["params"], J["names"])]
+    G = calib["leg"]
+    rows += [{"name": n, "owner": LEG, "field": p.name, "default": p.default, "min": p.lo,
+              "max": p.hi, "unit": p.unit} for p, n in zip(G["params"], G["names"])]
     return rows
 
 

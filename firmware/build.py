@@ -3,11 +3,19 @@
 ==========  ========================  ==============================  =========================
 target      what                      filters                         output
 ==========  ========================  ==============================  =========================
-``host``    SIL program (POSIX)       ``*_f32`` (``system="q"``:      executable
-            firmware/ports/host       ``*_q``, for tests)
+``host``    SIL program (POSIX)       ``*_f32`` + leg EKF             executable
+            firmware/ports/host       (``system="q"``: ``*_q``, tests)
 ``m4f``     QEMU ``mps2-an386`` port  ``*_f32`` (hardware float)      ELF / BIN / HEX + map
-``m0``      QEMU ``mps2-an385`` port  ``*_q`` (fixed point)           ELF / BIN / HEX + map
+                                      + leg EKF
+``m0``      QEMU ``mps2-an385`` port  ``*_q`` (fixed point), default  ELF / BIN / HEX + map
+                                      flagship, madgwick, mahony,
+                                      complementary; ``-Os``
 ==========  ========================  ==============================  =========================
+
+The leg EKF (two-sensor mode, KF_EFFORTS) is generated in float32 only: the float32 builds link
+it unless ``--no-leg``; the fixed-point builds (M0, ``host-q``) never have it.  The M0 default
+filter set and ``-Os`` make the image fit a 256 kB part; ``--filters all`` (or a list) and
+``--opt`` override them.
 
 The application sources are ``firmware/app/*.c``; the generated bindings there
 (``kf_filters_gen.c``, ``kf_params_gen.inc``) come from :mod:`kinefuse.firmware.apptables`.
@@ -44,6 +52,14 @@ HOST_PORT_DIR = FIRMWARE_DIR / "ports" / "host"
 
 #: target -> number system of its filters
 TARGET_SYSTEM = {"host": "f32", "m4f": "f32", "m0": "q"}
+#: filters of a Cortex-M build that names none (``filters=None``; ``"all"``: every wired one).
+#: The M0 image with all ten fixed-point filters (337,404 B at -Os, 737,268 B at -O2) does not
+#: fit a 256 kB part; with these four it is 124,860 B at -Os (README, "Unit firmware": measured
+#: with `python -m kinefuse.firmware.build sizes`).  The M4F and the host build every wired filter.
+DEFAULT_FILTERS = {"m0": ("flagship", "madgwick", "mahony", "complementary")}
+#: optimisation of a build that names none: -Os on the M0 (size decides there: the default set at
+#: -O2 is 260,876 B, 1.3 kB below 256 kB with no room for a board port's drivers), -O2 elsewhere
+DEFAULT_OPT = {"host": "-O2", "m4f": "-O2", "m0": "-Os"}
 C_FLAGS = ("-std=c99", "-ffp-contract=off", "-fno-fast-math", "-Wall", "-Wextra")
 HOST_TX_BYTES = 65536
 BOARD_TX_BYTES = 4096
@@ -62,9 +78,14 @@ def wired_filters() -> list[str]:
     return [e.name for e in apptables.read_list()]
 
 
+def default_filters(target: str) -> list[str]:
+    """The filters a build of ``target`` links when none are named (see DEFAULT_FILTERS)."""
+    return list(DEFAULT_FILTERS.get(target, wired_filters()))
+
+
 def _subset(filters) -> list[str]:
     names = wired_filters()
-    if filters is None:
+    if filters is None or filters == "all" or list(filters) == ["all"]:
         return names
     bad = [f for f in filters if f not in names]
     if bad:
@@ -73,15 +94,19 @@ def _subset(filters) -> list[str]:
     return [n for n in names if n in filters]
 
 
-def app_sources(system: str, board_main: bool, filters=None) -> list[Path]:
+def app_sources(system: str, board_main: bool, filters=None, leg: bool = True) -> list[Path]:
     """Application C files + the generated filters it binds, for number system ``system``
-    (``filters``: a subset of the wired filters; default all)."""
+    (``filters``: a subset of the wired filters; default all).  The f32 builds also link the leg
+    EKF (``leg_f32``, two-sensor mode, KF_EFFORTS) unless ``leg`` is False (then build with
+    ``_defines(..., leg=False)``, which defines KF_WITHOUT_LEG)."""
     if system not in ("f32", "q"):
         raise KinefuseError(f"number system must be 'f32' or 'q', not {system!r}")
     srcs = sorted(p for p in APP_DIR.glob("*.c") if p.name != "kf_main.c")
     if board_main:
         srcs.append(APP_DIR / "kf_main.c")
     names = _subset(filters) + [apptables.CALIB, apptables.JOINT]
+    if system == "f32" and leg:
+        names.append(apptables.LEG)            # generated in float32 only
     for n in names:
         p = GENERATED_DIR / f"{n}_{system}.c"
         if not p.is_file():
@@ -100,8 +125,10 @@ def git_hash() -> int:
         return 0
 
 
-def _defines(system: str, tx_bytes: int, with_git: bool, filters=None) -> dict[str, str]:
+def _defines(system: str, tx_bytes: int, with_git: bool, filters=None, leg: bool = True) -> dict[str, str]:
     d = {"KF_NUMERIC_Q": "1" if system == "q" else "0", "KF_TX_BUFFER_BYTES": f"{tx_bytes}u"}
+    if system == "f32" and not leg:
+        d["KF_WITHOUT_LEG"] = "1"
     keep = set(_subset(filters))
     for n in wired_filters():
         if n not in keep:
@@ -133,16 +160,18 @@ def _cache_root() -> Path:
 
 
 def build_host(system: str = "f32", *, sanitize: bool = False, tx_bytes: int = HOST_TX_BYTES,
-               with_git: bool = False, opt: str = "-O2", cc: str = "gcc", filters=None) -> HostBuild:
+               with_git: bool = False, opt: str = "-O2", cc: str = "gcc", filters=None,
+               leg: bool = True) -> HostBuild:
     """The host (SIL) program ``kinefuse-unit``, cached by a hash of sources, headers and flags.
 
     ``sanitize`` adds ``-fsanitize=address,undefined -fno-sanitize-recover`` (tests);
-    ``filters`` builds a subset of the wired filters (the others answer as not built)."""
+    ``filters`` builds a subset of the wired filters (the others answer as not built); ``leg``
+    False leaves the leg EKF out (KF_EFF_RATE_HZ can then only be 0)."""
     _check_tables()
     if shutil.which(cc) is None:
         raise KinefuseError(f"{cc} not found: install a C compiler (apt-get install gcc)")
-    srcs = app_sources(system, board_main=False, filters=filters) + sorted(HOST_PORT_DIR.glob("*.c"))
-    defs = _defines(system, tx_bytes, with_git, filters)
+    srcs = app_sources(system, board_main=False, filters=filters, leg=leg) + sorted(HOST_PORT_DIR.glob("*.c"))
+    defs = _defines(system, tx_bytes, with_git, filters, leg)
     flags = [opt, *C_FLAGS, *(f"-D{k}={v}" for k, v in sorted(defs.items())),
              f"-I{APP_DIR}", f"-I{GENERATED_DIR}", f"-I{HOST_PORT_DIR}", "-isystem", str(MAVLINK_DIR)]
     ldflags = ["-lm"]
@@ -195,9 +224,12 @@ def _first_error(stderr: str, fallback: str) -> str:
 
 # ------------------------------------------------------------------------------- Cortex-M
 
-def build_target(target: str, *, opt: str = "-O2", with_git: bool = False, out_dir=None, filters=None):
-    """Cross-build the application for ``m4f`` (float32 filters) or ``m0`` (fixed point),
-    with all wired filters or the subset ``filters``.
+def build_target(target: str, *, opt: str | None = None, with_git: bool = False, out_dir=None, filters=None,
+                 leg: bool = True):
+    """Cross-build the application for ``m4f`` (float32 filters; with the leg EKF unless ``leg``
+    is False) or ``m0`` (fixed point: no leg EKF), with the subset ``filters`` of the wired
+    filters, ``"all"`` of them, or (None) the target's default set (:data:`DEFAULT_FILTERS`:
+    M4F all, M0 flagship, madgwick, mahony, complementary); ``opt`` None: :data:`DEFAULT_OPT`.
 
     Returns :class:`kinefuse.firmware.targets.BuildResult` (ELF/BIN/HEX/map, size)."""
     from kinefuse.firmware.targets import build
@@ -205,28 +237,38 @@ def build_target(target: str, *, opt: str = "-O2", with_git: bool = False, out_d
         raise KinefuseError(f"unknown target {target!r} (choose from m4f, m0; host: build_host)")
     _check_tables()
     system = TARGET_SYSTEM[target]
-    defs = _defines(system, BOARD_TX_BYTES, with_git, filters)
-    return build(app_sources(system, board_main=True, filters=filters), target,
+    opt = opt or DEFAULT_OPT[target]
+    if filters is None:
+        filters = default_filters(target)
+    defs = _defines(system, BOARD_TX_BYTES, with_git, filters, leg)
+    return build(app_sources(system, board_main=True, filters=filters, leg=leg), target,
                  include_dirs=[APP_DIR, GENERATED_DIR, MAVLINK_DIR], defines=defs, opt=opt,
                  name=f"kinefuse-{target}", out_dir=out_dir,
                  extra_cflags=["-isystem", str(MAVLINK_DIR)])
 
 
 def size_report(opts=("-O2", "-Os")) -> list[dict]:
-    """Flash/RAM (static) of the application per Cortex-M target and optimisation level,
-    with the share of the generated filters, calibration and MAVLink/app code."""
+    """Flash/RAM (static) of the application per Cortex-M target, filter set (the target's
+    default, and on the M0 also all wired filters) and optimisation level, with the share of
+    the generated code (filters, calibration, joint step, leg EKF; the leg EKF alone in
+    ``flash_leg``), libraries and MAVLink/app code."""
     rows = []
-    for target in ("m4f", "m0"):
+    sets = [("m4f", "default"), ("m0", "default"), ("m0", "all")]
+    for target, which in sets:
         for opt in opts:
-            res = build_target(target, opt=opt)
+            res = build_target(target, opt=opt, filters=None if which == "default" else "all")
             origin = res.size_by_origin()
             system = TARGET_SYSTEM[target]
-            gen = {e.name for e in apptables.read_list()} | {apptables.CALIB, apptables.JOINT}
+            gen = {e.name for e in apptables.read_list()} | {apptables.CALIB, apptables.JOINT, apptables.LEG}
             filt = sum(v.flash for k, v in origin.items() if k.rsplit("_", 1)[0] in gen and k.endswith(system))
             libs = sum(v.flash for k, v in origin.items() if k.endswith(".a"))
-            rows.append({"target": target, "opt": opt, "system": system, **res.size.as_dict(),
+            leg = origin.get(f"{apptables.LEG}_f32")
+            names = default_filters(target) if which == "default" else wired_filters()
+            rows.append({"target": target, "opt": opt, "system": system, "filter_set": which,
+                         "filters": names, **res.size.as_dict(),
                          "flash_generated": filt, "flash_libraries": libs,
                          "flash_app": res.size.flash - filt - libs,
+                         "flash_leg": leg.flash if leg is not None else 0,
                          "elf": str(res.elf)})
     return rows
 
@@ -238,9 +280,11 @@ def main(argv=None) -> int:
                                  description="build the kinefuse unit application")
     ap.add_argument("what", choices=("host", "host-q", "m4f", "m0", "all", "tables", "sizes"))
     ap.add_argument("--out", help="copy the outputs into this folder")
-    ap.add_argument("--opt", default="-O2", help="optimisation flag (default -O2)")
+    ap.add_argument("--opt", help="optimisation flag (default -O2; m0: -Os)")
     ap.add_argument("--check", action="store_true", help="tables: exit 1 when the generated files are stale")
-    ap.add_argument("--filters", help="comma-separated subset of the wired filters (default: all)")
+    ap.add_argument("--filters", help="comma-separated subset of the wired filters, or 'all' (default: all; "
+                                      "m0: " + ",".join(DEFAULT_FILTERS["m0"]) + ")")
+    ap.add_argument("--no-leg", action="store_true", help="float32 builds: leave the leg EKF (KF_EFFORTS) out")
     ap.add_argument("--json", action="store_true", help="print one JSON object")
     args = ap.parse_args(argv)
     try:
@@ -259,21 +303,25 @@ def main(argv=None) -> int:
             if args.json:
                 print(json.dumps({"sizes": rows}))
             else:
-                print(f"{'target':7} {'opt':4} {'flash':>7} {'RAM':>7} {'filters':>8} {'libs':>7} {'app':>7}")
+                print(f"{'target':7} {'set':8} {'opt':4} {'flash':>7} {'RAM':>7} {'generated':>9} {'(leg)':>7} "
+                      f"{'libs':>7} {'app':>7}  filters")
                 for r in rows:
-                    print(f"{r['target']:7} {r['opt']:4} {r['flash']:7d} {r['ram']:7d} {r['flash_generated']:8d} "
-                          f"{r['flash_libraries']:7d} {r['flash_app']:7d}")
+                    print(f"{r['target']:7} {r['filter_set']:8} {r['opt']:4} {r['flash']:7d} {r['ram']:7d} "
+                          f"{r['flash_generated']:9d} {r['flash_leg']:7d} {r['flash_libraries']:7d} "
+                          f"{r['flash_app']:7d}  {','.join(r['filters'])}")
             return 0
         out = {}
-        subset = args.filters.split(",") if args.filters else None
+        subset = [f.strip() for f in args.filters.split(",") if f.strip()] if args.filters else None
+        leg = not args.no_leg
         todo = ("host", "m4f", "m0") if args.what == "all" else (args.what,)
         for t in todo:
             if t.startswith("host"):
-                b = build_host("q" if t == "host-q" else "f32", with_git=True, opt=args.opt, filters=subset)
+                b = build_host("q" if t == "host-q" else "f32", with_git=True, opt=args.opt or DEFAULT_OPT["host"],
+                               filters=subset, leg=leg)
                 files = [b.exe]
                 out[t] = {"exe": str(b.exe)}
             else:
-                r = build_target(t, opt=args.opt, with_git=True, filters=subset)
+                r = build_target(t, opt=args.opt, with_git=True, filters=subset, leg=leg)
                 files = [r.elf, r.bin, r.hex, r.map]
                 out[t] = {"elf": str(r.elf), "bin": str(r.bin), "hex": str(r.hex), **r.size.as_dict()}
             if args.out:

@@ -9,6 +9,8 @@
     ref = unit_model("madgwick", "f32", time_us, acc, gyr, mag_uT, rate_hz=1000)
     two = joint_hil_run(s, prox, dist)             # two-sensor unit: HIL_SENSOR id 1 + id 0 in, KF_JOINT_ANGLE back
     ref = joint_model("flagship", "q", prox, dist, rate_hz=100, joint_params={"sequence": 0})
+    two = joint_hil_run(s, prox, dist, efforts=True)   # ... with KF_EFF_RATE_HZ != 0: KF_EFFORTS too
+    ref = leg_model(prox, dist, rate_hz=100, joint_params=..., leg_params=...)   # the leg EKF's outputs
 
 :func:`unit_model` computes, with the generated Python models, exactly what the unit computes
 for HIL input: the HIL_SENSOR float32 fields -> counts (``KF_HIL_MODE`` 0: as
@@ -32,7 +34,7 @@ import numpy as np
 
 from kinefuse.host.errors import KinefuseError
 
-MSG_RAW, MSG_ORI, MSG_JOINT, MSG_STATUS = 52500, 52501, 52502, 52504
+MSG_RAW, MSG_ORI, MSG_JOINT, MSG_EFFORTS, MSG_STATUS = 52500, 52501, 52502, 52503, 52504
 UNIT_COMPONENT = 200
 FRAC_OUT_Q = None  # per filter: read from the model
 
@@ -399,12 +401,17 @@ def joint_model(name: str, system: str, prox: dict, dist: dict, *, rate_hz: int 
             "q_prox": res["prox"]["q"], "q_dist": res["dist"]["q"]}
 
 
-def joint_hil_run(session, prox: dict, dist: dict, window: int = 50, timeout: float = 10.0) -> dict:
+def joint_hil_run(session, prox: dict, dist: dict, window: int = 50, timeout: float = 10.0,
+                  efforts: bool = False, dist_sent=None) -> dict:
     """Two-sensor HIL: per sample k, HIL_SENSOR id 1 (``dist``) then id 0 (``prox``); collects
     KF_JOINT_ANGLE (angles float32, status, sample_counter, joint_id, sequence, units) and the
-    KF_ORIENTATION of sensor 0, indexed by sample."""
+    KF_ORIENTATION of sensor 0, indexed by sample.  ``efforts``: also wait for one KF_EFFORTS per
+    sample (the leg EKF on: ``effort``/``effort_std`` (N, 12) float32, ``eff_status``,
+    ``eff_meta`` = model_id, count).  ``dist_sent`` (bool per sample): send sensor 1's sample k
+    only where True (default: all)."""
     from kinefuse.host.link.hil import hil_sensor_frames
     n = len(prox["t"])
+    sent = np.ones(n, bool) if dist_sent is None else np.asarray(dist_sent, bool)
     f0 = _split(hil_sensor_frames(prox["t"], prox["acc"], prox["gyr"], prox["mag"], mag_updated=prox.get("upd"),
                                   sensor_id=0))
     f1 = _split(hil_sensor_frames(dist["t"], dist["acc"], dist["gyr"], dist["mag"], mag_updated=dist.get("upd"),
@@ -414,20 +421,27 @@ def joint_hil_run(session, prox: dict, dist: dict, window: int = 50, timeout: fl
     status = np.zeros(n, np.int64)
     meta = np.zeros((n, 4), np.int64)       # joint_id, sequence, proximal_unit, distal_unit
     time_echo = np.zeros(n, np.int64)
+    effort = np.full((n, 12), np.nan, np.float32)
+    effort_std = np.full((n, 12), np.nan, np.float32)
+    eff_status = np.zeros(n, np.int64)
+    eff_meta = np.zeros((n, 2), np.int64)   # model_id, count
+    eff_time = np.zeros(n, np.int64)
     first = None
-    got = 0
+    got = got_eff = 0
     session.poll(0)
     session.drain()
     for start in range(0, n, window):
         stop = min(n, start + window)
-        session.send_bytes(b"".join(f1[k] + f0[k] for k in range(start, stop)))
+        session.send_bytes(b"".join((f1[k] if sent[k] else b"") + f0[k] for k in range(start, stop)))
         deadline = time.monotonic() + timeout
-        while got < stop:
+        while got < stop or (efforts and got_eff < stop):
             if time.monotonic() > deadline:
-                raise KinefuseError(f"two-sensor HIL: {stop - got} KF_JOINT_ANGLE missing after {timeout} s")
+                what = "KF_JOINT_ANGLE" if got < stop else "KF_EFFORTS"
+                raise KinefuseError(f"two-sensor HIL: {stop - min(got, got_eff if efforts else got)} {what} "
+                                    f"missing after {timeout} s")
             session.poll(0.05)
             for _, f in session.drain():
-                if f.msgid not in (MSG_RAW, MSG_ORI, MSG_JOINT):
+                if f.msgid not in (MSG_RAW, MSG_ORI, MSG_JOINT, MSG_EFFORTS):
                     continue
                 m = f.msg
                 if first is None:
@@ -445,7 +459,124 @@ def joint_hil_run(session, prox: dict, dist: dict, window: int = 50, timeout: fl
                     got += 1
                 elif f.msgid == MSG_ORI:
                     q[i] = np.array([m.q_w, m.q_x, m.q_y, m.q_z], np.float32)
-    return {"angles": angles, "status": status, "meta": meta, "time_us": time_echo, "q": q}
+                elif f.msgid == MSG_EFFORTS:
+                    effort[i] = np.asarray(m.effort, np.float32)
+                    effort_std[i] = np.asarray(m.effort_std, np.float32)
+                    eff_status[i] = m.status
+                    eff_meta[i] = [m.model_id, m.count]
+                    eff_time[i] = m.time_boot_us
+                    got_eff += 1
+    out = {"angles": angles, "status": status, "meta": meta, "time_us": time_echo, "q": q}
+    if efforts:
+        out.update(effort=effort, effort_std=effort_std, eff_status=eff_status, eff_meta=eff_meta,
+                   eff_time_us=eff_time)
+    return out
+
+
+# ----------------------------------------------------------------------------- leg EKF model
+
+EFF_VALID, EFF_SENSOR_MISSING, EFF_UPDATE_SKIPPED, EFF_RESET = 1, 2, 4, 8   # KF_EFFORTS_STATUS
+ACC_CLIPPED, GYRO_CLIPPED = 1, 2                                           # KF_RAW_SAMPLE_FLAGS
+
+
+def calibrated_f32(time_us, acc, gyr, mag_uT, *, rate_hz: int = 1000, mode: int = 0,
+                   calib: dict | None = None) -> dict[str, np.ndarray]:
+    """A float32 unit's filter input record for HIL samples of one sensor: ``gyr``, ``acc``
+    (N, 3) float32 (``KF_HIL_MODE`` 0: counts, then the generated calibration map; 1: the
+    float32 values sent), ``dt`` (N,) float32 s (from the ``time_usec`` steps, first nominal)
+    and the clipping ``flags`` (N,) the unit derives (KF_RAW_SAMPLE_FLAGS ACC/GYRO/MAG_CLIPPED)."""
+    from kinefuse.codegen import estimators
+    from kinefuse.codegen.runner import runner
+    from kinefuse.host.link.hil import UT_PER_GAUSS, raw_counts
+    n = len(time_us)
+    acc32, gyr32 = _f32(acc).reshape(n, 3), _f32(gyr).reshape(n, 3)
+    gauss32 = _f32(np.asarray(mag_uT, np.float64).reshape(n, 3) / UT_PER_GAUSS)
+    a, g, m, _, flags = raw_counts(acc32.astype(np.float64), gyr32.astype(np.float64),
+                                   gauss32.astype(np.float64) * UT_PER_GAUSS)
+    dt_us = time_steps_us(time_us, rate_hz)
+    if mode == 1:
+        dt32 = (dt_us.astype(np.float32) * np.float32(1e-6)).astype(np.float32)
+        return {"gyr": gyr32, "acc": acc32, "dt": dt32, "flags": flags}
+    ci = runner("calib_apply", "f32-model")
+    e = ci.encode({"acc_raw": a.astype(float), "gyr_raw": g.astype(float), "mag_raw": m.astype(float),
+                   "dt_us": dt_us.astype(float)}, _p32(estimators.get("calib_apply"), calib))
+    co = ci.run_encoded(e)
+    return {"gyr": co["gyr"].astype(np.float32), "acc": co["acc"].astype(np.float32),
+            "dt": co["dt"][:, 0].astype(np.float32), "flags": flags}
+
+
+def leg_axes(q_sb) -> np.ndarray:
+    """The unit's rows (gyr, acc along, acc anterior) x (sensor x, y, z), float32, for one
+    sensor-to-segment offset q_SB (w, x, y, z; KF_JA_PROX_* / KF_JA_DIST_* as float32): every
+    operation of kf_leg.c axes_of in the same order."""
+    f = np.float32
+    w, x, y, z = (f(v) for v in q_sb)
+    n2 = ((w * w + x * x) + y * y) + z * z
+    if not n2 >= f(1e-12):
+        w, x, y, z = f(1.0), f(0.0), f(0.0), f(0.0)
+    else:
+        k = f(1.0) / np.sqrt(n2)
+        w, x, y, z = w * k, x * k, y * k, z * k
+    one, two = f(1.0), f(2.0)
+    r00, r01, r02 = one - two * (y * y + z * z), two * (x * y - w * z), two * (x * z + w * y)
+    r10, r11, r12 = two * (x * y + w * z), one - two * (x * x + z * z), two * (y * z - w * x)
+    r20, r21, r22 = two * (x * z - w * y), two * (y * z + w * x), one - two * (x * x + y * y)
+    return np.array([[-r00, -r10, -r20], [-r01, -r11, -r21], [r02, r12, r22]], np.float32)
+
+
+def _dot_rows(row, v) -> np.ndarray:
+    """(a0*v0 + a1*v1) + a2*v2 in float32 per sample (v: (N, 3) float32)."""
+    return (row[0] * v[:, 0] + row[1] * v[:, 1]) + row[2] * v[:, 2]
+
+
+def leg_model(prox: dict, dist: dict, *, rate_hz: int = 1000, mode: int = 0, leg_params: dict | None = None,
+              joint_params: dict | None = None, calib: dict | None = None, dist_sent=None) -> dict[str, np.ndarray]:
+    """What a float32 two-sensor unit with the leg EKF on (``KF_JOINT_ID`` != 0, ``KF_EFF_RATE_HZ``
+    != 0) sends in KF_EFFORTS for HIL input as :func:`joint_hil_run` sends it (``prox`` = thigh,
+    HIL_SENSOR id 0; ``dist`` = shank, id 1, sent where ``dist_sent``): both sensors' calibrated
+    samples (:func:`calibrated_f32`), mapped into the leg EKF's segment-frame inputs with the
+    KF_JA_* offsets (:func:`leg_axes`; a sensor without a new sample, or with its clipping flag,
+    is lost for the step), dt of sensor 0, then the generated leg model (``leg_f32``, float32
+    parameters).  Returns ``effort``/``effort_std`` (N, 2) float32 (hip, knee), ``status``
+    (KF_EFFORTS_STATUS bits of each sample's message), the leg inputs (``inputs``) and outputs
+    (``out``)."""
+    from kinefuse.codegen import estimators
+    from kinefuse.codegen.runner import Encoded, runner
+    n = len(prox["t"])
+    sent = np.ones(n, bool) if dist_sent is None else np.asarray(dist_sent, bool)
+    c0 = calibrated_f32(prox["t"], prox["acc"], prox["gyr"], prox["mag"], rate_hz=rate_hz, mode=mode, calib=calib)
+    idx = np.flatnonzero(sent)
+    c1s = calibrated_f32(np.asarray(dist["t"])[idx], np.asarray(dist["acc"])[idx], np.asarray(dist["gyr"])[idx],
+                         np.asarray(dist["mag"])[idx], rate_hz=rate_hz, mode=mode, calib=calib)
+    c1 = {k: np.zeros((n,) + v.shape[1:], v.dtype) for k, v in c1s.items()}
+    for k, v in c1s.items():
+        c1[k][idx] = v
+    jp = _p32(estimators.get("joint-angle"), joint_params)
+    gyr = np.zeros((n, 2), np.float32)
+    acc = np.zeros((n, 4), np.float32)
+    g_ok = np.zeros((n, 2), bool)
+    a_ok = np.zeros((n, 2), bool)
+    for k, (c, fresh, side) in enumerate(((c0, np.ones(n, bool), "prox"), (c1, sent, "dist"))):
+        ax = leg_axes([jp[f"{side}_{ch}"] for ch in "wxyz"])
+        g_ok[:, k] = fresh & ((c["flags"] & GYRO_CLIPPED) == 0)
+        a_ok[:, k] = fresh & ((c["flags"] & ACC_CLIPPED) == 0)
+        gyr[:, k] = np.where(g_ok[:, k], _dot_rows(ax[0], c["gyr"]), np.float32(0.0))
+        acc[:, 2 * k] = np.where(a_ok[:, k], _dot_rows(ax[1], c["acc"]), np.float32(0.0))
+        acc[:, 2 * k + 1] = np.where(a_ok[:, k], _dot_rows(ax[2], c["acc"]), np.float32(0.0))
+    lr = runner("leg", "f32-model")
+    lp = _p32(estimators.get("leg"), leg_params)
+    enc_p = {k: lr.encode_values("param", k, t, [lp[k]])[0] for k, _, t in lr.fields["param"]}
+    inputs = {"gyr": gyr, "acc": acc, "foot": np.zeros((n, 2), np.float32), "gyr_valid": g_ok,
+              "acc_valid": a_ok, "foot_valid": np.zeros((n, 1), bool), "dt": c0["dt"].reshape(n, 1)}
+    out = lr.run_encoded(Encoded(inputs, enc_p, n))
+    rejected = out["rejected"][:, 0].astype(np.int64)
+    rej_step = np.diff(np.concatenate([[0], rejected])) != 0
+    missing = ~(g_ok.all(1) & a_ok.all(1)) | out["imu_lost"][:, 0].astype(bool) | rej_step
+    status = (EFF_VALID * out["initialised"][:, 0].astype(np.int64) + EFF_SENSOR_MISSING * missing
+              + EFF_UPDATE_SKIPPED * out["skipped_now"][:, 0].astype(np.int64)
+              + EFF_RESET * out["reset_now"][:, 0].astype(np.int64))
+    return {"effort": out["te"].astype(np.float32), "effort_std": out["te_std"].astype(np.float32),
+            "status": status, "inputs": inputs, "out": out}
 
 
 # ------------------------------------------------------------------------ end-to-end stream

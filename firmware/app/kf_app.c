@@ -88,18 +88,27 @@ int kf_app_poll(kf_app *app)
         kf_handle_frame(app, &msg);
         work = 1;
     }
-    /* two-sensor mode: sensor 1 first, so that a sensor-0 sample of the same instant sees it */
-    for (int k = 0; app->two_sensors && k < KF_SENSOR_BATCH && kf_hal_sensor2_read(&raw); k++) {
-        work = 1;
-        if (!app->hil) {
-            take_sensor_sample(app, &raw, 1);
+    /* two-sensor mode: the two sensors' samples in pairs, sensor 1 first, so that a sensor-0
+     * sample sees the sensor-1 sample of the same instant (joint angle, leg EKF) even when
+     * several of each wait in the FIFOs */
+    for (int k = 0; k < KF_SENSOR_BATCH; k++) {
+        int got = 0;
+        if (app->two_sensors && kf_hal_sensor2_read(&raw)) {
+            got = 1;
+            if (!app->hil) {
+                take_sensor_sample(app, &raw, 1);
+            }
         }
-    }
-    for (int k = 0; k < KF_SENSOR_BATCH && kf_hal_sensor_read(&raw); k++) {
-        work = 1;
-        if (!app->hil) {          /* in HIL mode the samples come from HIL_SENSOR only */
-            take_sensor_sample(app, &raw, 0);
+        if (kf_hal_sensor_read(&raw)) {
+            got = 1;
+            if (!app->hil) {      /* in HIL mode the samples come from HIL_SENSOR only */
+                take_sensor_sample(app, &raw, 0);
+            }
         }
+        if (!got) {
+            break;
+        }
+        work = 1;
     }
     /* a parameter list goes out while the queue is at most half full: streams keep priority */
     while (app->list_next >= 0 && kf_tx_pending(&app->tx) < KF_TX_BUFFER_BYTES / 2u) {

@@ -106,14 +106,29 @@ typedef struct kf_app {
     uint8_t initialised2;
     uint8_t two_sensors;
 
+    /* leg EKF (two-sensor mode with KF_EFF_RATE_HZ != 0; float32 builds, see kf_leg.c): hip and
+     * knee torques from both sensors' calibrated gyroscope and accelerometer, KF_EFFORTS */
+#if KF_HAVE_LEG
+    kf_leg_state leg;
+    kf_leg_output lout;
+    float leg_axes[2][3][3];       /* per sensor: rows giving the leg inputs (gyr, acc along, acc
+                                    * anterior) from the sensor-frame vectors (KF_JA_* offsets) */
+    kf_imu_input last_in2;         /* sensor 1's last calibrated sample */
+    uint8_t flags2;                /* ... its KF_RAW_SAMPLE_FLAGS (clipping) */
+    uint8_t fresh2;                /* 1: it arrived after the previous leg step */
+    int32_t leg_rejected;          /* lout.rejected before the last step */
+#endif
+    uint8_t leg_on;                /* the leg EKF runs (two sensors, KF_EFF_RATE_HZ != 0, built) */
+    uint8_t eff_status;            /* KF_EFFORTS_STATUS bits gathered since the last KF_EFFORTS */
+
     /* samples and streams */
     uint32_t sample_counter;
     uint64_t t_prev;
     uint8_t have_prev;
     uint8_t hil;
     uint8_t streaming;
-    uint16_t div_ori, div_hr, div_aq;   /* every n-th sample (0: off) */
-    uint16_t cnt_ori, cnt_hr, cnt_aq;
+    uint16_t div_ori, div_hr, div_aq, div_eff;   /* every n-th sample (0: off) */
+    uint16_t cnt_ori, cnt_hr, cnt_aq, cnt_eff;
 
     /* health */
     kf_counters cnt;
@@ -134,7 +149,8 @@ void kf_app_sample(kf_app *app, const kf_sample *s);
 
 /* Two-sensor mode: one sample of sensor 1 (the distal segment; kf_hal_sensor2_read or
  * HIL_SENSOR id 1): calibration, then its own filter instance.  Nothing is sent for it; the
- * next sample of sensor 0 sends KF_JOINT_ANGLE with both filters' latest orientations. */
+ * next sample of sensor 0 sends KF_JOINT_ANGLE with both filters' latest orientations (and,
+ * with the leg EKF on, steps it with both sensors' samples and sends KF_EFFORTS). */
 void kf_app_sample2(kf_app *app, const kf_sample *s);
 
 /* Current device time, us since boot (64 bits). */

@@ -18,6 +18,15 @@ void kf_config_select_filter(kf_app *app);
 void kf_config_reset_filter(kf_app *app);
 void kf_config_reset_filter2(kf_app *app);
 
+/* kf_leg.c: the leg EKF of a two-sensor unit (float32 builds; no-ops in the others) */
+void kf_leg_reset(kf_app *app);        /* leg_on from the parameters, restart, offsets */
+void kf_leg_axes(kf_app *app);         /* recompute the input rows from the KF_JA_* offsets */
+uint8_t kf_leg_set_param(kf_app *app, int32_t at, float v);   /* KF_LEG_* value at `at`: 0 or a MAV_PARAM_ERROR */
+void kf_leg_repair(kf_app *app);       /* stored KF_LEG_* values the generated init refuses -> defaults */
+void kf_leg_sample2(kf_app *app, const kf_imu_input *in, uint8_t flags);   /* sensor 1's sample */
+void kf_leg_step(kf_app *app, const kf_imu_input *in0, uint8_t flags0);    /* one step at sensor 0's sample */
+void kf_leg_send(kf_app *app, uint64_t t, uint32_t counter);              /* KF_EFFORTS */
+
 /* kf_send.c: pack one message and queue it (1: queued, 0: dropped) */
 int kf_send(kf_app *app, mavlink_message_t *msg);
 uint8_t kf_sysid(const kf_app *app);

@@ -103,6 +103,7 @@ static void reset_two_sensors(kf_app *app)
     app->have_prev2 = 0u;
     joint_vector(app, -1, 0.0f, jv);
     (void)kf_gen_joint_init(&app->joint, jv);   /* validated when the values were accepted */
+    kf_leg_reset(app);                          /* the leg EKF restarts with the filters */
 }
 
 /* Restart only sensor 1's filter instance (after a non-finite output). */
@@ -144,7 +145,8 @@ void kf_config_apply_rates(kf_app *app)
     app->div_ori = divider(rate, app->values[KF_P_ORI_RATE_HZ].u);
     app->div_hr = divider(rate, app->values[KF_P_HRIMU_RATE].u);
     app->div_aq = divider(rate, app->values[KF_P_ATTQ_RATE].u);
-    app->cnt_ori = app->cnt_hr = app->cnt_aq = 0u;
+    app->div_eff = divider(rate, app->values[KF_P_EFF_RATE_HZ].u);
+    app->cnt_ori = app->cnt_hr = app->cnt_aq = app->cnt_eff = 0u;
     (void)kf_hal_sensor_configure(rate);
 }
 
@@ -245,6 +247,7 @@ static void repair_groups(kf_app *app)
         app->values[i] = kf_param_table[i].def;
         app->cnt.stored_rejects++;
     }
+    kf_leg_repair(app);
 }
 
 void kf_config_load(kf_app *app)
@@ -319,10 +322,18 @@ uint8_t kf_config_set(kf_app *app, int32_t index, kf_pvalue v)
             return MAV_PARAM_ERROR_VALUE_OUT_OF_RANGE;   /* the generated range check */
         }
         app->joint = tmp;                                /* the step holds no estimate: restart */
+    } else if (d->group == KF_PG_LEG) {
+        uint8_t err = kf_leg_set_param(app, d->index, v.f);   /* live, as a filter's */
+        if (err != 0u) {
+            return err;
+        }
     }
     uint32_t old = app->values[index].u;
     app->values[index] = v;
     if (old != v.u) {
+        if (d->group == KF_PG_JOINT) {
+            kf_leg_axes(app);                  /* the sensor-to-segment offsets feed the leg EKF too */
+        }
         switch (index) {
         case KF_P_FILTER:
             kf_config_select_filter(app);
@@ -330,6 +341,12 @@ uint8_t kf_config_set(kf_app *app, int32_t index, kf_pvalue v)
         case KF_P_JOINT_ID:
             if ((old != 0u) != (v.u != 0u)) {
                 kf_config_reset_filter(app);   /* into or out of two-sensor mode */
+            }
+            break;
+        case KF_P_EFF_RATE_HZ:
+            kf_config_apply_rates(app);
+            if ((old != 0u) != (v.u != 0u)) {
+                kf_leg_reset(app);             /* the leg EKF on (from its start) or off */
             }
             break;
         case KF_P_RATE_HZ:

@@ -76,4 +76,11 @@ int kf_gen_joint_init(kf_joint_state *s, const float *v);
 void kf_gen_joint_update(kf_joint_state *s, const kf_filter_out *prox, const kf_filter_out *dist,
                          kf_joint_out *out);
 
+#if KF_HAVE_LEG
+/* Two-sensor mode: the generated leg EKF (leg_f32; float32 builds only).  Parameters from
+ * float32 values in parameter-table order (KF_LEG_*); 0, or -(i+1) when value i is out of its
+ * range (the defaults are then in use). */
+int kf_gen_leg_init(kf_leg_state *s, const float *v);
+#endif
+
 #endif /* KF_FILTERS_H */

@@ -1114,4 +1114,31 @@ void kf_gen_joint_update(kf_joint_state *s, const kf_filter_out *prox, const kf_
     out->rejected = o.rejected;
 }
 
+#if KF_HAVE_LEG
+int kf_gen_leg_init(kf_leg_state *s, const float *v)
+{
+    leg_f32_params p;
+    leg_f32_default_params(&p);
+    p.m1 = v[0];
+    p.m2 = v[1];
+    p.L1 = v[2];
+    p.c1 = v[3];
+    p.c2 = v[4];
+    p.I1 = v[5];
+    p.I2 = v[6];
+    p.g = v[7];
+    p.a1 = v[8];
+    p.b1 = v[9];
+    p.a2 = v[10];
+    p.b2 = v[11];
+    p.sigma_gyr = v[12];
+    p.sigma_acc = v[13];
+    p.q_torque = v[14];
+    p.p0_angle = v[15];
+    p.p0_rate = v[16];
+    p.p0_torque = v[17];
+    return leg_f32_init(s, &p);
+}
+#endif
+
 #endif

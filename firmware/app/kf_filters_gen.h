@@ -30,7 +30,9 @@
 #define KF_GEN_FRAC_JOINT_ANGLES 29
 #define KF_GEN_JOINT_PARAM_COUNT 10
 #define KF_GEN_JOINT_P_SEQUENCE 0   /* index of KF_JA_SEQUENCE */
+#define KF_GEN_JOINT_P_OFFSETS 2   /* index of KF_JA_PROX_W (then PROX_X..Z, DIST_W..Z) */
 #define KF_GEN_FRAC_DT_US 10
+#define KF_GEN_LEG_PARAM_COUNT 18   /* KF_LEG_*, in every build's table */
 
 #if KF_NUMERIC_Q
 #include "kf_imu_q.h"
@@ -176,6 +178,14 @@ typedef calib_apply_f32_state kf_calib_state;
 typedef calib_apply_f32_params kf_calib_params;
 #include "joint_angle_f32.h"
 typedef joint_angle_f32_state kf_joint_state;
+/* the leg EKF (two-sensor mode, KF_EFFORTS): float32 builds only, unless KF_WITHOUT_LEG */
+#ifndef KF_WITHOUT_LEG
+#define KF_HAVE_LEG 1
+#include "leg_f32.h"
+typedef leg_f32_state kf_leg_state;
+typedef leg_f32_output kf_leg_output;
+typedef kf_leg_input_f32 kf_leg_input;
+#endif
 typedef union {
     uint8_t none;   /* every filter may be left out of a build */
 #ifndef KF_WITHOUT_COMPLEMENTARY
@@ -242,6 +252,10 @@ typedef union {
     guo_f32_params guo;
 #endif
 } kf_filter_params_u;
+#endif
+
+#ifndef KF_HAVE_LEG
+#define KF_HAVE_LEG 0   /* fixed-point build, or KF_WITHOUT_LEG */
 #endif
 
 #endif /* KF_FILTERS_GEN_H */

@@ -166,6 +166,9 @@ static uint8_t set_interval(kf_app *app, float msgid_f, float interval_us)
     case MAVLINK_MSG_ID_ATTITUDE_QUATERNION:
         idx = KF_P_ATTQ_RATE;
         break;
+    case MAVLINK_MSG_ID_KF_EFFORTS:
+        idx = KF_P_EFF_RATE_HZ;                          /* 0 (the default) turns the leg EKF off */
+        break;
     default:
         return MAV_RESULT_UNSUPPORTED;
     }

@@ -27,6 +27,7 @@ const kf_param_desc kf_param_table[KF_PARAM_COUNT] = {
     KF_APP_ROW("KF_SERIAL_NO", KF_PT_UINT32, 0x4B460001u, 0u, 0xFFFFFFFFu, 0u),
     KF_APP_ROW("KF_SIGNING", KF_PT_UINT8, 0u, 0u, 1u, KF_PF_READONLY),
     KF_APP_ROW("KF_JOINT_ID", KF_PT_UINT8, 0u, 0u, 14u, 0u),
+    KF_APP_ROW("KF_EFF_RATE_HZ", KF_PT_UINT16, 0u, 0u, 1000u, 0u),
 #include "kf_params_gen.inc"
 };
 
@@ -59,6 +60,9 @@ int kf_param_in_range(const kf_param_desc *d, kf_pvalue v)
     }
     if (d == &kf_param_table[KF_P_FILTER]) {
         return v.u == 0u || kf_filter_index(v.u) >= 0;   /* none or a wired filter */
+    }
+    if (d == &kf_param_table[KF_P_EFF_RATE_HZ]) {
+        return v.u == 0u || KF_HAVE_LEG;                   /* the leg EKF is in this build */
     }
     return 1;
 }

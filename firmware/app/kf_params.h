@@ -5,7 +5,9 @@
  *
  * Order: application parameters (kf_app_param), calibration (KF_ACC_*, KF_GYR_*, KF_MAG_*,
  * generated), then each filter's parameters (KF_<tag>_*, generated) in kf_filter_list.h order,
- * then the joint-angle step's (KF_JA_*, generated; used in two-sensor mode, KF_JOINT_ID != 0).
+ * then the joint-angle step's (KF_JA_*, generated; used in two-sensor mode, KF_JOINT_ID != 0),
+ * then the leg EKF's (KF_LEG_*, generated; two-sensor mode with KF_EFF_RATE_HZ != 0, float32
+ * builds only: in the others the rows exist, with their ranges, but nothing uses them).
  */
 #ifndef KF_PARAMS_H
 #define KF_PARAMS_H
@@ -25,6 +27,7 @@
 #define KF_PG_CALIB  1u
 #define KF_PG_FILTER 2u
 #define KF_PG_JOINT  3u   /* joint-angle step (two-sensor mode) */
+#define KF_PG_LEG    4u   /* leg EKF (two-sensor mode, KF_EFFORTS) */
 
 /* flags */
 #define KF_PF_READONLY 1u
@@ -59,13 +62,16 @@ enum {
     KF_P_SERIAL_NO,        /* unit serial number */
     KF_P_SIGNING,          /* read-only: 1 when a signing key is set */
     KF_P_JOINT_ID,         /* KF_JOINT of a two-sensor unit (0: one sensor, no KF_JOINT_ANGLE) */
+    KF_P_EFF_RATE_HZ,      /* KF_EFFORTS rate, Hz; 0 (default): the leg EKF does not run.  Two-sensor
+                            * mode only; values other than 0 are refused where it is not built */
     KF_P_APP_COUNT
 };
 
 #define KF_P_CALIB_FIRST  KF_P_APP_COUNT
 #define KF_P_FILTER_FIRST (KF_P_CALIB_FIRST + KF_GEN_CALIB_PARAM_COUNT)
 #define KF_P_JOINT_FIRST  (KF_P_FILTER_FIRST + KF_GEN_FILTER_PARAM_COUNT)
-#define KF_PARAM_COUNT    (KF_P_JOINT_FIRST + KF_GEN_JOINT_PARAM_COUNT)
+#define KF_P_LEG_FIRST    (KF_P_JOINT_FIRST + KF_GEN_JOINT_PARAM_COUNT)
+#define KF_PARAM_COUNT    (KF_P_LEG_FIRST + KF_GEN_LEG_PARAM_COUNT)
 
 extern const kf_param_desc kf_param_table[KF_PARAM_COUNT];
 

@@ -7,7 +7,10 @@
  * Two-sensor mode (KF_JOINT_ID != 0): sensor 1 (distal) runs through the same calibration map
  * and its own instance of the selected filter (kf_app_sample2); whenever KF_ORIENTATION of
  * sensor 0 (proximal) goes out, the generated joint step combines the two filters' latest
- * outputs and KF_JOINT_ANGLE goes out with sensor 0's time and sample counter.
+ * outputs and KF_JOINT_ANGLE goes out with sensor 0's time and sample counter.  With the leg
+ * EKF on (KF_EFF_RATE_HZ != 0, float32 builds; kf_leg.c) every sample of sensor 0 steps it with
+ * both sensors' calibrated samples, and KF_EFFORTS goes out at KF_EFF_RATE_HZ (in HIL after
+ * every sample), after KF_JOINT_ANGLE when both are due.
  */
 #include <math.h>
 #include <stdint.h>
@@ -210,6 +213,9 @@ void kf_app_sample2(kf_app *app, const kf_sample *s)
     }
     uint32_t dt_us = time_step_us(app, s->time_us, &app->t_prev2, &app->have_prev2);
     filter_input(app, s, dt_us, &in);
+    if (app->leg_on) {
+        kf_leg_sample2(app, &in, s->flags);
+    }
     if (app->filter < 0) {
         return;
     }
@@ -270,6 +276,9 @@ void kf_app_sample(kf_app *app, const kf_sample *s)
             app->initialised = 1u;
         }
     }
+    if (app->leg_on) {
+        kf_leg_step(app, &in, s->flags);
+    }
 
     if (app->streaming || hil) {
         send_raw(app, s, counter, mag_valid);
@@ -279,6 +288,9 @@ void kf_app_sample(kf_app *app, const kf_sample *s)
         if (app->two_sensors) {
             send_joint_angle(app, s->time_us, counter);   /* at the orientation rate */
         }
+    }
+    if (app->leg_on && (hil || (app->streaming && due(app->div_eff, &app->cnt_eff)))) {
+        kf_leg_send(app, s->time_us, counter);
     }
     if (app->streaming && due(app->div_hr, &app->cnt_hr)) {
         send_highres(app, s, mag_valid);

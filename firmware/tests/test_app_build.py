@@ -65,6 +65,24 @@ def test_no_heap_and_size(target):
     linked = {line.split()[-1] for line in nm.splitlines() if line.strip()}
     for f in ("malloc", "free", "calloc", "realloc", "_sbrk", "_malloc_r"):
         assert f not in linked and f not in syms, f"{f} is linked into the {target} application"
-    # static RAM budget of a small wearable MCU (stack excluded)
+    # the float32 image carries the leg EKF (two-sensor mode, KF_EFFORTS), the fixed-point one not
+    assert ("leg_f32_update" in syms) == (target == "m4f")
+    # static RAM budget of a small wearable MCU (stack excluded), leg EKF included on the M4F
     assert res.size.ram < 16 * 1024, res.size
     assert res.size.flash > 10_000
+
+
+@pytest.mark.qemu
+@pytest.mark.skipif(shutil.which("arm-none-eabi-gcc") is None, reason="arm-none-eabi-gcc not installed")
+def test_m0_default_build_fits_a_256k_part():
+    """Without --filters the M0 links its default set (the image with all ten does not fit),
+    at -Os; the fixed-point build has no leg EKF (float32 only)."""
+    assert fb.default_filters("m0") == ["flagship", "madgwick", "mahony", "complementary"]
+    assert fb.default_filters("m4f") == fb.wired_filters()
+    res = fb.build_target("m0")
+    assert res.opt == "-Os" and res.size.flash < 256 * 1024, res.size
+    syms = {name for name, *_ in res.symbols()}
+    assert {f"{n}_q_update" for n in fb.default_filters("m0")} <= syms
+    assert not any(s.endswith("_q_update") and s[:-9] not in fb.default_filters("m0") + ["calib_apply", "joint_angle"]
+                   for s in syms), sorted(s for s in syms if s.endswith("_q_update"))
+    assert "leg_f32_update" not in syms

@@ -3,7 +3,9 @@
 * ``sil-f32`` / ``sil-q``: the application built for the host (``firmware/ports/host``),
   talking over a pseudo-terminal;
 * ``pil-m4f-f32``: the application built for the Cortex-M4F (``mps2-an386``) in QEMU, float32
-  filters; ``pil-m0-q``: Cortex-M0 (``mps2-an385``), fixed-point filters; UART0 on a pty.
+  filters; ``pil-m0-q``: Cortex-M0 (``mps2-an385``), fixed-point filters; UART0 on a pty.  Both
+  PIL images hold every wired filter (``filters="all"``: the M0's default build has only four,
+  to fit a 256 kB part; QEMU's board has room for all).
 
 The host encodes HIL_SENSOR frames (sensor frame, SI, mag in gauss), the unit answers each
 sample with KF_RAW_SAMPLE (the counts it derived) and KF_ORIENTATION, decoded by the real host
@@ -89,7 +91,7 @@ def unit_session(loop: str):
     from kinefuse.firmware.build import build_target
     from kinefuse.hil_tests.qemu.runner import QemuSession
     target = loop.split("-")[1]
-    fw = build_target(target)
+    fw = build_target(target, filters="all")   # every wired filter (the M0 default set has four)
     with QemuSession(fw.elf, target, uart="pty", paused=True) as q:
         s = Session(open_tty_raw(q.uart_device))
         try:

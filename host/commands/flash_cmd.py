@@ -6,7 +6,8 @@
     kinefuse flash --image fw.hex --mcu stm32f411re --dry-run   # print the command only
 
 The image is the application built for ``--target`` (``m4f``: float32 filters, ``m0``:
-fixed-point filters; ``--filters`` builds a subset) unless ``--image`` names one.  pyOCD gets
+fixed-point filters, by default flagship, madgwick, mahony and complementary at ``-Os`` so that
+it fits a 256 kB part; ``--filters`` builds a subset or ``all``) unless ``--image`` names one.  pyOCD gets
 the HEX (addresses included, or the ELF), dfu-util the raw BIN at ``--address`` (default: the
 image's load address).  pyOCD needs the MCU's target type (``--mcu``; ``pyocd list --targets``):
 the generic Cortex-M target cannot program flash.
@@ -76,7 +77,8 @@ def register(subparsers) -> None:
     p.add_argument("--target", choices=("m4f", "m0"), default="m4f",
                    help="build to flash when no --image: m4f (float32 filters) or m0 (fixed point); default m4f")
     p.add_argument("--image", metavar="FILE", help="flash this .hex/.elf/.bin instead of building")
-    p.add_argument("--filters", metavar="A,B", help="build only these wired filters (smaller image)")
+    p.add_argument("--filters", metavar="A,B", help="build only these wired filters, or 'all' (default: all; "
+                                                    "m0: flagship,madgwick,mahony,complementary)")
     p.add_argument("--tool", choices=TOOLS, default="pyocd", help="flashing tool (default pyocd)")
     p.add_argument("--mcu", metavar="TYPE", help="the unit's MCU: pyOCD target type (e.g. stm32f411re); "
                                                  "the image is checked against its memory map")

@@ -540,7 +540,7 @@ enums["KF_EFFORT_MODEL"][0] = EnumEntry("KF_EFFORT_MODEL_UNKNOWN", """Unspecifie
 KF_EFFORT_MODEL_DOUBLE_PENDULUM = 1
 enums["KF_EFFORT_MODEL"][1] = EnumEntry("KF_EFFORT_MODEL_DOUBLE_PENDULUM", """Planar double pendulum with the ground pin of bar 2 replaced by a force plate (seed 000, Annex A): [0] tau1 joint torque at point 1 (N*m), [1] Fx reaction at point 2 (N), [2] Fy reaction at point 2 (N), [3] T2 reaction torque at point 2 (N*m); optional base residual [4] Fx0 (N), [5] Fy0 (N), [6] T0 (N*m) at point 0 (count = 7).""")
 KF_EFFORT_MODEL_PLANAR_LEG = 2
-enums["KF_EFFORT_MODEL"][2] = EnumEntry("KF_EFFORT_MODEL_PLANAR_LEG", """Planar hip + knee leg driven by one IMU per segment: [0] hip flexion torque (N*m), [1] knee flexion torque (N*m).""")
+enums["KF_EFFORT_MODEL"][2] = EnumEntry("KF_EFFORT_MODEL_PLANAR_LEG", """Planar thigh-shank leg (sagittal plane, hip fixed) observed by one IMU per segment (the leg EKF, codegen/estimators/dynamics/leg.py): [0] hip torque on the thigh from the pelvis (N*m, positive flexing the hip), [1] knee torque on the shank from the thigh (N*m, positive extending the knee) (count = 2).""")
 KF_EFFORT_MODEL_ENUM_END = 3
 enums["KF_EFFORT_MODEL"][3] = EnumEntry("KF_EFFORT_MODEL_ENUM_END", """""")
 
@@ -550,9 +550,13 @@ enums["KF_EFFORTS_STATUS"].bitmask = True
 KF_EFFORTS_STATUS_VALID = 1
 enums["KF_EFFORTS_STATUS"][1] = EnumEntry("KF_EFFORTS_STATUS_VALID", """The estimator is initialised; values are estimates.""")
 KF_EFFORTS_STATUS_SENSOR_MISSING = 2
-enums["KF_EFFORTS_STATUS"][2] = EnumEntry("KF_EFFORTS_STATUS_SENSOR_MISSING", """At least one expected sensor input was missing in this step (its measurement rows were zeroed).""")
-KF_EFFORTS_STATUS_ENUM_END = 3
-enums["KF_EFFORTS_STATUS"][3] = EnumEntry("KF_EFFORTS_STATUS_ENUM_END", """""")
+enums["KF_EFFORTS_STATUS"][2] = EnumEntry("KF_EFFORTS_STATUS_SENSOR_MISSING", """At least one expected sensor input was missing or rejected in a step since the previous KF_EFFORTS (its measurement rows were zeroed).""")
+KF_EFFORTS_STATUS_UPDATE_SKIPPED = 4
+enums["KF_EFFORTS_STATUS"][4] = EnumEntry("KF_EFFORTS_STATUS_UPDATE_SKIPPED", """A measurement update was skipped in a step since the previous KF_EFFORTS because its innovation variance was not positive enough (the covariance lost positive definiteness).""")
+KF_EFFORTS_STATUS_RESET = 8
+enums["KF_EFFORTS_STATUS"][8] = EnumEntry("KF_EFFORTS_STATUS_RESET", """The estimator restarted after a non-finite or out-of-range estimate in a step since the previous KF_EFFORTS.""")
+KF_EFFORTS_STATUS_ENUM_END = 9
+enums["KF_EFFORTS_STATUS"][9] = EnumEntry("KF_EFFORTS_STATUS_ENUM_END", """""")
 
 # KF_UNIT_STATUS_FLAGS
 enums["KF_UNIT_STATUS_FLAGS"] = Enum()
