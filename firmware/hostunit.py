@@ -9,6 +9,7 @@
     ref = unit_model("madgwick", "f32", time_us, acc, gyr, mag_uT, rate_hz=1000)
     two = joint_hil_run(s, prox, dist)             # two-sensor unit: HIL_SENSOR id 1 + id 0 in, KF_JOINT_ANGLE back
     ref = joint_model("flagship", "q", prox, dist, rate_hz=100, joint_params={"sequence": 0})
+    ref = joint_model(..., calib={"acc_b0": 0.1}, calib2={"acc_b0": -0.2})   # each sensor's own map
     two = joint_hil_run(s, prox, dist, efforts=True)   # ... with KF_EFF_RATE_HZ != 0: KF_EFFORTS too
     ref = leg_model(prox, dist, rate_hz=100, joint_params=..., leg_params=...)   # the leg EKF's outputs
 
@@ -307,6 +308,7 @@ def unit_model(name: str, system: str, time_us, acc, gyr, mag_uT, mag_updated=No
             "mag_valid": upd & bool(mag_enable)}
     inputs = {k: fi.encode_values("input", k, t, host[k].reshape(n, -1)) for k, _, t in fi.fields["input"]}
     out = _filter_model(name, system, inputs, n, params)
+    out["inputs"] = inputs
     out["counts"] = counts
     return out
 
@@ -328,7 +330,9 @@ def counts_model(name: str, system: str, time_us, acc_counts, gyr_counts, mag_co
     co = ci.run_encoded(e)
     inputs = {"gyr": co["gyr"], "acc": co["acc"], "mag": co["mag"], "dt": co["dt"],
               "mag_valid": (np.asarray(mag_valid, bool) & bool(mag_enable)).reshape(n, 1)}
-    return _filter_model(name, system, inputs, n, params)
+    out = _filter_model(name, system, inputs, n, params)
+    out["inputs"] = inputs          # the filter input record (encoded: float32 or raw Q values)
+    return out
 
 
 def _p32(est, values) -> dict:
@@ -363,21 +367,24 @@ def _filter_model(name: str, system: str, inputs: dict, n: int, params) -> dict:
 
 def joint_model(name: str, system: str, prox: dict, dist: dict, *, rate_hz: int = 1000, mode: int = 0,
                 params: dict | None = None, joint_params: dict | None = None, calib: dict | None = None,
-                mag_enable: bool = True) -> dict[str, np.ndarray]:
+                calib2: dict | None = None, mag_enable: bool = True) -> dict[str, np.ndarray]:
     """What a two-sensor unit (``KF_JOINT_ID`` != 0) sends in KF_JOINT_ANGLE for HIL input:
     ``prox`` (HIL_SENSOR id 0) and ``dist`` (id 1) are dicts of ``t``, ``acc``, ``gyr``, ``mag``
     (µT) and optional ``upd``, one sample each per joint output, sensor 1's sample sent before
     sensor 0's.  Each sensor runs through :func:`unit_model` (its own filter instance and time
-    steps, the same calibration); the joint step (generated ``joint_angle`` model, float32
+    steps, its own calibration map: ``calib`` = sensor 0's ``calib_apply`` values, KF_ACC/GYR/MAG_*;
+    ``calib2`` = sensor 1's, KF_ACC2/GYR2/MAG2_*; None: the defaults); the joint step (generated ``joint_angle`` model, float32
     parameters) takes the two quaternions: f32 as float32, q the raw filter outputs requantised
     to the step's input format (round half up).  Returns ``angles`` (N, 3) float32 as sent
-    (q: ``float32(raw) * 2^-frac``), ``valid``, ``rejected`` and both sensors' ``q``."""
+    (q: ``float32(raw) * 2^-frac``), ``valid``, ``rejected``, both sensors' ``q`` and the input
+    records their filters were fed (``in_prox``, ``in_dist``: calibrated ``gyr``/``acc``/``mag``/
+    ``dt`` as the model encodes them, float32 or raw Q values)."""
     from kinefuse.codegen import estimators
     from kinefuse.codegen.runner import Encoded, runner
     res = {}
-    for key, d in (("prox", prox), ("dist", dist)):
+    for key, d, cal in (("prox", prox, calib), ("dist", dist, calib2)):
         res[key] = unit_model(name, system, d["t"], d["acc"], d["gyr"], d["mag"], d.get("upd"), rate_hz=rate_hz,
-                              mode=mode, params=params, calib=calib, mag_enable=mag_enable)
+                              mode=mode, params=params, calib=cal, mag_enable=mag_enable)
     n = len(prox["t"])
     jr = runner("joint_angle", f"{system}-model")
     jp = _p32(estimators.get("joint-angle"), joint_params)
@@ -398,7 +405,8 @@ def joint_model(name: str, system: str, prox: dict, dist: dict, *, rate_hz: int 
         frac = jr.formats["output.angles"][0]
         angles = (out["angles"].astype(np.int64).astype(np.float32) * np.float32(2.0 ** -frac)).astype(np.float32)
     return {"angles": angles, "valid": out["valid"][:, 0], "rejected": out["rejected"][:, 0],
-            "q_prox": res["prox"]["q"], "q_dist": res["dist"]["q"]}
+            "q_prox": res["prox"]["q"], "q_dist": res["dist"]["q"],
+            "in_prox": res["prox"]["inputs"], "in_dist": res["dist"]["inputs"]}
 
 
 def joint_hil_run(session, prox: dict, dist: dict, window: int = 50, timeout: float = 10.0,
@@ -530,11 +538,12 @@ def _dot_rows(row, v) -> np.ndarray:
 
 
 def leg_model(prox: dict, dist: dict, *, rate_hz: int = 1000, mode: int = 0, leg_params: dict | None = None,
-              joint_params: dict | None = None, calib: dict | None = None, dist_sent=None) -> dict[str, np.ndarray]:
+              joint_params: dict | None = None, calib: dict | None = None, calib2: dict | None = None,
+              dist_sent=None) -> dict[str, np.ndarray]:
     """What a float32 two-sensor unit with the leg EKF on (``KF_JOINT_ID`` != 0, ``KF_EFF_RATE_HZ``
     != 0) sends in KF_EFFORTS for HIL input as :func:`joint_hil_run` sends it (``prox`` = thigh,
     HIL_SENSOR id 0; ``dist`` = shank, id 1, sent where ``dist_sent``): both sensors' calibrated
-    samples (:func:`calibrated_f32`), mapped into the leg EKF's segment-frame inputs with the
+    samples (:func:`calibrated_f32`; ``calib`` sensor 0's map, ``calib2`` sensor 1's), mapped into the leg EKF's segment-frame inputs with the
     KF_JA_* offsets (:func:`leg_axes`; a sensor without a new sample, or with its clipping flag,
     is lost for the step), dt of sensor 0, then the generated leg model (``leg_f32``, float32
     parameters).  Returns ``effort``/``effort_std`` (N, 2) float32 (hip, knee), ``status``
@@ -547,7 +556,7 @@ def leg_model(prox: dict, dist: dict, *, rate_hz: int = 1000, mode: int = 0, leg
     c0 = calibrated_f32(prox["t"], prox["acc"], prox["gyr"], prox["mag"], rate_hz=rate_hz, mode=mode, calib=calib)
     idx = np.flatnonzero(sent)
     c1s = calibrated_f32(np.asarray(dist["t"])[idx], np.asarray(dist["acc"])[idx], np.asarray(dist["gyr"])[idx],
-                         np.asarray(dist["mag"])[idx], rate_hz=rate_hz, mode=mode, calib=calib)
+                         np.asarray(dist["mag"])[idx], rate_hz=rate_hz, mode=mode, calib=calib2)
     c1 = {k: np.zeros((n,) + v.shape[1:], v.dtype) for k, v in c1s.items()}
     for k, v in c1s.items():
         c1[k][idx] = v

@@ -95,8 +95,10 @@ typedef struct kf_app {
     float tare[4];                 /* applied to the output: q_out = tare * q */
     uint8_t tared;
 
-    /* two-sensor mode (KF_JOINT_ID != 0): sensor 1 (distal) has its own filter instance of the
-     * selected filter (same parameters, same calibration map); the joint step combines both */
+    /* two-sensor mode (KF_JOINT_ID != 0): sensor 1 (distal) has its own calibration map
+     * (KF_ACC2/GYR2/MAG2_*, the same generated calib_apply) and its own instance of the selected
+     * filter (same parameters); the joint step combines both */
+    kf_calib_state calib2;
     kf_filter_state_u filt2;
     kf_filter_out out2;
     kf_joint_state joint;
@@ -148,7 +150,7 @@ int kf_app_poll(kf_app *app);
 void kf_app_sample(kf_app *app, const kf_sample *s);
 
 /* Two-sensor mode: one sample of sensor 1 (the distal segment; kf_hal_sensor2_read or
- * HIL_SENSOR id 1): calibration, then its own filter instance.  Nothing is sent for it; the
+ * HIL_SENSOR id 1): its own calibration map (KF_ACC2/GYR2/MAG2_*), then its own filter instance.  Nothing is sent for it; the
  * next sample of sensor 0 sends KF_JOINT_ANGLE with both filters' latest orientations (and,
  * with the leg EKF on, steps it with both sensors' samples and sends KF_EFFORTS). */
 void kf_app_sample2(kf_app *app, const kf_sample *s);

@@ -1,6 +1,6 @@
 /*
  * kf_config.c - parameter values: defaults, load/save through kf_store, validation and the
- * side effects of a change (filter switch, stream rates, unit id, calibration).
+ * side effects of a change (filter switch, stream rates, unit id, the two sensors' calibration).
  */
 #include <stdint.h>
 #include <string.h>
@@ -24,10 +24,12 @@ static void filter_vector(const kf_app *app, int32_t k, int32_t at, float v, flo
     }
 }
 
-static void calib_vector(const kf_app *app, int32_t at, float v, float *vec)
+/* float32 calibration vector of sensor 0 (first = KF_P_CALIB_FIRST) or sensor 1
+ * (KF_P_CALIB2_FIRST): the same generated map, the same order */
+static void calib_vector(const kf_app *app, uint32_t first, int32_t at, float v, float *vec)
 {
     for (uint16_t i = 0; i < KF_GEN_CALIB_PARAM_COUNT; i++) {
-        vec[i] = app->values[KF_P_CALIB_FIRST + i].f;
+        vec[i] = app->values[first + i].f;
     }
     if (at >= 0) {
         vec[at] = v;
@@ -54,12 +56,21 @@ static int filter_check(kf_app *app, int32_t k, const float *vec)
     return f->init(&app->scratch, &app->fparams);
 }
 
+/* KF_UNIT_STATUS_FLAGS_CALIBRATED: sensor 0's map, or in two-sensor mode sensor 1's, is not
+ * the default */
 static void update_calibrated_flag(kf_app *app)
 {
     app->calibrated = 0u;
     for (uint32_t i = KF_P_CALIB_FIRST; i < KF_P_FILTER_FIRST; i++) {
         if (app->values[i].u != kf_param_table[i].def.u) {
             app->calibrated = 1u;
+        }
+    }
+    if (app->values[KF_P_JOINT_ID].u != 0u) {
+        for (uint32_t i = KF_P_CALIB2_FIRST; i < KF_P_CALIB2_FIRST + KF_GEN_CALIB2_PARAM_COUNT; i++) {
+            if (app->values[i].u != kf_param_table[i].def.u) {
+                app->calibrated = 1u;
+            }
         }
     }
 }
@@ -212,19 +223,26 @@ int kf_config_save(kf_app *app)
 
 /* Values that pass their own range but not the filter's/calibration's joint check go back
  * to their defaults, one at a time (the generated init names the first bad one). */
-static void repair_groups(kf_app *app)
+static void repair_calib(kf_app *app, uint32_t first, kf_calib_state *calib)
 {
-    float vec[KF_GEN_CALIB_PARAM_COUNT + KF_GEN_FILTER_PARAM_MAX];
+    float vec[KF_GEN_CALIB_PARAM_COUNT];
     for (int tries = 0; tries <= (int)KF_GEN_CALIB_PARAM_COUNT; tries++) {
-        calib_vector(app, -1, 0.0f, vec);
-        int r = kf_gen_calib_init(&app->calib, vec);
+        calib_vector(app, first, -1, 0.0f, vec);
+        int r = kf_gen_calib_init(calib, vec);
         if (r >= 0 || -r - 1 >= (int)KF_GEN_CALIB_PARAM_COUNT) {
             break;
         }
-        uint32_t i = KF_P_CALIB_FIRST + (uint32_t)(-r - 1);
+        uint32_t i = first + (uint32_t)(-r - 1);
         app->values[i] = kf_param_table[i].def;
         app->cnt.stored_rejects++;
     }
+}
+
+static void repair_groups(kf_app *app)
+{
+    float vec[KF_GEN_CALIB_PARAM_COUNT + KF_GEN_FILTER_PARAM_MAX];
+    repair_calib(app, KF_P_CALIB_FIRST, &app->calib);
+    repair_calib(app, KF_P_CALIB2_FIRST, &app->calib2);   /* sensor 1's map (absent from an older image: defaults) */
     for (int32_t k = 0; k < (int32_t)KF_GEN_FILTER_COUNT; k++) {
         for (int tries = 0; tries <= (int)KF_GEN_FILTER_PARAM_MAX; tries++) {
             filter_vector(app, k, -1, 0.0f, vec);
@@ -296,13 +314,18 @@ uint8_t kf_config_set(kf_app *app, int32_t index, kf_pvalue v)
     if (!kf_param_in_range(d, v)) {
         return MAV_PARAM_ERROR_VALUE_OUT_OF_RANGE;
     }
-    if (d->group == KF_PG_CALIB) {
+    if (d->group == KF_PG_CALIB || d->group == KF_PG_CALIB2) {
         kf_calib_state tmp;
-        calib_vector(app, d->index, v.f, vec);
+        uint8_t second = (uint8_t)(d->group == KF_PG_CALIB2);
+        calib_vector(app, second ? KF_P_CALIB2_FIRST : KF_P_CALIB_FIRST, d->index, v.f, vec);
         if (kf_gen_calib_init(&tmp, vec) != 0) {
             return MAV_PARAM_ERROR_VALUE_OUT_OF_RANGE;   /* the generated range check */
         }
-        app->calib = tmp;
+        if (second) {
+            app->calib2 = tmp;
+        } else {
+            app->calib = tmp;
+        }
     } else if (d->group == KF_PG_FILTER) {
         const kf_filter_ops *f = &kf_gen_filters[d->filter];
         filter_vector(app, d->filter, d->index, v.f, vec);

@@ -33,6 +33,7 @@
 #define KF_GEN_JOINT_P_OFFSETS 2   /* index of KF_JA_PROX_W (then PROX_X..Z, DIST_W..Z) */
 #define KF_GEN_FRAC_DT_US 10
 #define KF_GEN_LEG_PARAM_COUNT 18   /* KF_LEG_*, in every build's table */
+#define KF_GEN_CALIB2_PARAM_COUNT 39   /* sensor 1's map (KF_ACC2_* ...), the calibration rows again */
 
 #if KF_NUMERIC_Q
 #include "kf_imu_q.h"

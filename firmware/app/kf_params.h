@@ -7,7 +7,10 @@
  * generated), then each filter's parameters (KF_<tag>_*, generated) in kf_filter_list.h order,
  * then the joint-angle step's (KF_JA_*, generated; used in two-sensor mode, KF_JOINT_ID != 0),
  * then the leg EKF's (KF_LEG_*, generated; two-sensor mode with KF_EFF_RATE_HZ != 0, float32
- * builds only: in the others the rows exist, with their ranges, but nothing uses them).
+ * builds only: in the others the rows exist, with their ranges, but nothing uses them), then
+ * sensor 1's own calibration map (KF_ACC2_*, KF_GYR2_*, KF_MAG2_*, generated: the calibration
+ * rows again, same order; used in two-sensor mode).  New groups go at the end: the indices of
+ * the older rows stay (storage finds values by name hash, kf_store.h).
  */
 #ifndef KF_PARAMS_H
 #define KF_PARAMS_H
@@ -28,6 +31,7 @@
 #define KF_PG_FILTER 2u
 #define KF_PG_JOINT  3u   /* joint-angle step (two-sensor mode) */
 #define KF_PG_LEG    4u   /* leg EKF (two-sensor mode, KF_EFFORTS) */
+#define KF_PG_CALIB2 5u   /* sensor 1's calibration map (two-sensor mode) */
 
 /* flags */
 #define KF_PF_READONLY 1u
@@ -71,7 +75,8 @@ enum {
 #define KF_P_FILTER_FIRST (KF_P_CALIB_FIRST + KF_GEN_CALIB_PARAM_COUNT)
 #define KF_P_JOINT_FIRST  (KF_P_FILTER_FIRST + KF_GEN_FILTER_PARAM_COUNT)
 #define KF_P_LEG_FIRST    (KF_P_JOINT_FIRST + KF_GEN_JOINT_PARAM_COUNT)
-#define KF_PARAM_COUNT    (KF_P_LEG_FIRST + KF_GEN_LEG_PARAM_COUNT)
+#define KF_P_CALIB2_FIRST (KF_P_LEG_FIRST + KF_GEN_LEG_PARAM_COUNT)
+#define KF_PARAM_COUNT    (KF_P_CALIB2_FIRST + KF_GEN_CALIB2_PARAM_COUNT)
 
 extern const kf_param_desc kf_param_table[KF_PARAM_COUNT];
 

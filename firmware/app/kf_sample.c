@@ -4,8 +4,9 @@
  * due for it (KF_RAW_SAMPLE, KF_ORIENTATION, HIGHRES_IMU, ATTITUDE_QUATERNION, and in
  * two-sensor mode KF_JOINT_ANGLE).
  *
- * Two-sensor mode (KF_JOINT_ID != 0): sensor 1 (distal) runs through the same calibration map
- * and its own instance of the selected filter (kf_app_sample2); whenever KF_ORIENTATION of
+ * Two-sensor mode (KF_JOINT_ID != 0): sensor 1 (distal) runs through its own calibration map
+ * (KF_ACC2/GYR2/MAG2_*: the same generated calib_apply with sensor 1's parameters) and its own
+ * instance of the selected filter (kf_app_sample2); whenever KF_ORIENTATION of
  * sensor 0 (proximal) goes out, the generated joint step combines the two filters' latest
  * outputs and KF_JOINT_ANGLE goes out with sensor 0's time and sample counter.  With the leg
  * EKF on (KF_EFF_RATE_HZ != 0, float32 builds; kf_leg.c) every sample of sensor 0 steps it with
@@ -61,14 +62,15 @@ static uint32_t time_step_us(const kf_app *app, uint64_t t, uint64_t *t_prev, ui
     return dt;
 }
 
-/* counts + calibration, or the direct HIL values, -> the filter input record */
-static void filter_input(kf_app *app, const kf_sample *s, uint32_t dt_us, kf_imu_input *in)
+/* counts + the sensor's calibration map, or the direct HIL values, -> the filter input record */
+static void filter_input(const kf_app *app, kf_calib_state *calib, const kf_sample *s, uint32_t dt_us,
+                         kf_imu_input *in)
 {
     if (s->direct) {
         float dt = (float)dt_us * 1e-6f;   /* the same single rounding as calib_apply's dt */
         kf_gen_imu_from_f32(s->f_gyr, s->f_acc, s->f_mag, dt, in);
     } else {
-        kf_gen_calib_apply(&app->calib, s->acc, s->gyr, s->mag, dt_us, in);
+        kf_gen_calib_apply(calib, s->acc, s->gyr, s->mag, dt_us, in);
     }
     in->mag_valid = (uint8_t)(s->mag_valid != 0u && app->values[KF_P_MAG_ENABLE].u != 0u);
 }
@@ -212,7 +214,7 @@ void kf_app_sample2(kf_app *app, const kf_sample *s)
         return;
     }
     uint32_t dt_us = time_step_us(app, s->time_us, &app->t_prev2, &app->have_prev2);
-    filter_input(app, s, dt_us, &in);
+    filter_input(app, &app->calib2, s, dt_us, &in);   /* sensor 1's own map */
     if (app->leg_on) {
         kf_leg_sample2(app, &in, s->flags);
     }
@@ -258,7 +260,7 @@ void kf_app_sample(kf_app *app, const kf_sample *s)
 
     app->cnt.samples++;
     app->rates.samples++;
-    filter_input(app, s, dt_us, &in);
+    filter_input(app, &app->calib, s, dt_us, &in);
     app->last_in = in;
     app->mag_seen |= in.mag_valid;
     if ((s->flags & (KF_RAW_SAMPLE_FLAGS_ACC_CLIPPED | KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED

@@ -129,3 +129,29 @@ def test_efforts_off_by_default_and_refused_where_not_built(gait):
         assert pc.get("KF_EFF_RATE_HZ") == 0
         pc.set("KF_LEG_M1", 8.0)                                     # the rows exist (range only)
         s.close()
+
+
+def test_efforts_use_each_sensors_own_calibration_map(gait):
+    """Both sensors' calibrated samples reach the leg EKF through their own maps (KF_ACC/GYR_*
+    for the thigh, KF_ACC2/GYR2_* for the shank): every torque bit-identical to the leg model fed
+    with each sensor's own calibrated samples, and not to sensor 1 taking sensor 0's map."""
+    from test_app_joint import calib_maps, calib_params
+    _, seg, q_sb = gait
+    jp = {f"{side}_{c}": float(v) for side, name in (("prox", "thigh"), ("dist", "shank"))
+          for c, v in zip("wxyz", q_sb[name])}
+    cal0, cal1 = calib_maps(seed=12)
+    n = 150
+    part = {k: {f: v[:n] for f, v in seg[k].items()} for k in seg}
+    values = {"KF_RATE_HZ": RATE, "KF_JOINT_ID": 4, "KF_EFF_RATE_HZ": RATE,
+              **{f"KF_JA_{k.upper()}": v for k, v in jp.items()}, **calib_params(cal0, 0), **calib_params(cal1, 1)}
+    with HostUnit("f32", sensor=False) as unit:
+        s = unit.session()
+        _configure(s, values)
+        got = joint_hil_run(s, part["thigh"], part["shank"], efforts=True)
+        s.close()
+    ref = leg_model(part["thigh"], part["shank"], rate_hz=RATE, joint_params=jp, calib=cal0, calib2=cal1)
+    assert np.array_equal(got["effort"][:, :2].view(np.uint32), ref["effort"].view(np.uint32))
+    assert np.array_equal(got["effort_std"][:, :2].view(np.uint32), ref["effort_std"].view(np.uint32))
+    assert np.array_equal(got["eff_status"], ref["status"])
+    shared = leg_model(part["thigh"], part["shank"], rate_hz=RATE, joint_params=jp, calib=cal0, calib2=cal0)
+    assert not np.array_equal(got["effort"][:, :2].view(np.uint32), shared["effort"].view(np.uint32))

@@ -124,3 +124,49 @@ def test_storage_layout_matches_the_documented_format(unit):
     assert count == unit.lib.kft_param_count() - 1       # every parameter but read-only KF_SIGNING
     end = 56 + 8 * count
     assert struct.unpack_from("<I", image, end)[0] == zlib.crc32(image[:end])
+
+
+def _fnv(name: str) -> int:
+    h = 2166136261
+    for c in name.encode():
+        h = ((h ^ c) * 16777619) & 0xFFFFFFFF
+    return h
+
+
+def test_an_image_without_sensor_1_calibration_still_loads(unit):
+    """Sensor 1's calibration rows (KF_ACC2/GYR2/MAG2_*) came after the others: the older rows
+    keep their indices, and a copy saved by a firmware without them (the same layout, fewer
+    entries) loads with every value it holds and sensor 1's map at its defaults."""
+    import struct
+    import zlib
+    from kinefuse.firmware.apptables import parameter_table
+    new = [r["name"] for r in parameter_table() if r.get("sensor") == 1]
+    assert len(new) == 39 and "KF_ACC2_M00" in new and "KF_MAG2_SCALE" in new
+    total = unit.lib.kft_param_count()
+    assert [unit.param_index(n) for n in new] == list(range(total - len(new), total))   # appended
+    unit.set_param("KF_ACC_B0", 0.3)
+    unit.set_param("KF_GYR_M01", 0.02)
+    unit.set_param("KF_MW_BETA", 0.2)
+    unit.set_param("KF_ACC2_B0", -0.4)          # in the image, then cut out of it below
+    image = bytearray(unit.storage())
+    slot = 2048                                 # seq 4: the newest copy is in slot 1
+    count = struct.unpack_from("<H", image, slot + 6)[0]
+    drop = {_fnv(n) for n in new}
+    entries = [image[slot + 56 + 8 * i: slot + 64 + 8 * i] for i in range(count)]
+    old = [e for e in entries if struct.unpack_from("<I", e)[0] not in drop]
+    assert len(old) == count - len(new)
+    copy = bytearray(image[slot:slot + 56]) + b"".join(old)
+    struct.pack_into("<H", copy, 6, len(old))
+    copy += struct.pack("<I", zlib.crc32(bytes(copy)))
+    older = bytearray(b"\xff" * len(image))     # only the older firmware's copy: slot 0
+    older[:len(copy)] = copy
+    unit.restore_storage(bytes(older))
+    unit.reboot()
+    assert unit.param("KF_ACC_B0") == f32(0.3) and unit.param("KF_GYR_M01") == f32(0.02)
+    assert unit.param("KF_MW_BETA") == f32(0.2)
+    assert unit.param("KF_ACC2_B0") == 0.0 and unit.param("KF_ACC2_M00") == 1.0   # defaults
+    assert unit.counters()["stored_rejects"] == 0 and unit.counters()["storage_errors"] == 0
+    unit.set_param("KF_ACC2_B0", -0.4)          # the next save holds every row again
+    unit.reboot()
+    assert unit.param("KF_ACC2_B0") == f32(-0.4) and unit.param("KF_ACC_B0") == f32(0.3)
+    assert struct.unpack_from("<H", unit.storage(), 2048 + 6)[0] == count

@@ -1,7 +1,8 @@
 """`kinefuse calibrate apply`: a unit calibration file reaches the unit (host build over a pty)
 as its KF_ACC/GYR/MAG_* parameters, is read back, and the unit then applies exactly that map
 (HIL in counts mode, compared bit for bit with the generated models).  A file of another unit,
-or with a value the unit cannot hold, changes nothing."""
+or with a value the unit cannot hold, changes nothing.  `--sensor 1` writes a two-sensor unit's
+second IMU's file to KF_ACC2/GYR2/MAG2_*, which the unit applies to sensor 1 only."""
 from __future__ import annotations
 
 import json
@@ -10,7 +11,7 @@ import shutil
 import numpy as np
 import pytest
 
-from kinefuse.firmware.hostunit import HostUnit, hil_run, unit_model
+from kinefuse.firmware.hostunit import HostUnit, hil_run, joint_hil_run, joint_model, unit_model
 from kinefuse.host import cli
 from kinefuse.host.calib import unitfile
 from kinefuse.host.link.params import ParamClient
@@ -45,6 +46,16 @@ def _calib_values(pc) -> dict:
     return {n: pc.get(n) for n in ("KF_ACC_M01", "KF_ACC_B2", "KF_GYR_M20", "KF_GYR_B0", "KF_MAG_M11", "KF_MAG_B1")}
 
 
+def _model_calib(doc) -> dict:
+    """The file's maps as calib_apply values (the models' calib=)."""
+    calib = {}
+    for sensor, pre in (("accel", "acc"), ("gyro", "gyr"), ("mag", "mag")):
+        M, b = np.array(doc["sensors"][sensor]["M"]), np.array(doc["sensors"][sensor]["b"])
+        calib.update({f"{pre}_m{i}{j}": M[i, j] for i in range(3) for j in range(3)})
+        calib.update({f"{pre}_b{i}": b[i] for i in range(3)})
+    return calib
+
+
 def test_apply_writes_reads_back_and_the_unit_uses_it(unit, tmp_path, capsys):
     doc = _doc()
     path = tmp_path / "unit7.json"
@@ -73,11 +84,7 @@ def test_apply_writes_reads_back_and_the_unit_uses_it(unit, tmp_path, capsys):
         got = hil_run(s, t, acc, gyr, mag)
     finally:
         s.close()
-    calib = {}
-    for sensor, pre in (("accel", "acc"), ("gyro", "gyr"), ("mag", "mag")):
-        M, b = np.array(doc["sensors"][sensor]["M"]), np.array(doc["sensors"][sensor]["b"])
-        calib.update({f"{pre}_m{i}{j}": M[i, j] for i in range(3) for j in range(3)})
-        calib.update({f"{pre}_b{i}": b[i] for i in range(3)})
+    calib = _model_calib(doc)
     ref = unit_model("flagship", "f32", t, acc, gyr, mag, rate_hz=1000, calib=calib)
     plain = unit_model("flagship", "f32", t, acc, gyr, mag, rate_hz=1000)
     assert np.array_equal(got["q"].view(np.uint32), ref["q"].view(np.uint32))
@@ -151,3 +158,84 @@ def test_apply_to_a_signed_unit_needs_its_key(tmp_path, capsys):
         assert code == 0, err
         res = json.loads(out)
         assert len(res["written"]) == 36
+
+
+def _doc_seeded(seed: int, serial=SERIAL):
+    rng = np.random.default_rng(seed)
+    doc = unitfile.new(serial, {"acc_g": 16})
+    for sensor, scale in (("accel", 0.15), ("gyro", 0.01), ("mag", 10.0)):
+        unitfile.set_sensor(doc, sensor, np.eye(3) + rng.normal(0, 0.02, (3, 3)), rng.normal(0, scale, 3),
+                            method="test")
+    return doc
+
+
+def test_apply_sensor_1_round_trip_on_a_two_sensor_unit(tmp_path, capsys):
+    """Two files, one per IMU (same unit serial): --sensor 0 and --sensor 1 write KF_ACC_* and
+    KF_ACC2_* ..., each read back; the joint angles are then the models' with each sensor's own
+    map, bit for bit."""
+    docs = [_doc_seeded(21), _doc_seeded(22)]
+    paths = [tmp_path / "unit-thigh.json", tmp_path / "unit-shank.json"]
+    for d, p in zip(docs, paths):
+        unitfile.save(d, str(p))
+    code, out, err = _run(capsys, "calibrate", "apply", "--calib", paths[1], "--dry-run", "--sensor", "1", "--json")
+    assert code == 0, err
+    dry = json.loads(out)
+    assert dry["sensor"] == 1 and len(dry["params"]) == 36 and all("2_" in k for k in dry["params"])
+    with HostUnit("f32", sensor=False) as u:
+        port = f"pty:{u.device}"
+        s = u.session()
+        ParamClient(s, 1).set("KF_JOINT_ID", 4)
+        s.close()
+        res = []
+        for sensor, p in enumerate(paths):
+            code, out, err = _run(capsys, "calibrate", "apply", "--calib", p, "--port", port, "--sensor", sensor,
+                                  "--json")
+            assert code == 0 and err == "", err
+            res.append(json.loads(out))
+        assert [r["sensor"] for r in res] == [0, 1] and all(r["verified"] and len(r["written"]) == 36 for r in res)
+        assert sorted(res[1]["written"]) == sorted("KF_" + n[3:6] + "2" + n[6:] for n in res[0]["written"])
+        n = 120
+        rng = np.random.default_rng(3)
+        t = 1_000_000 + np.arange(n, dtype=np.int64) * 1000
+        segs = []
+        for k in range(2):
+            segs.append({"t": t + 100 * k, "acc": np.array([0.3, -0.2 + k, 9.7]) + rng.normal(0, 0.05, (n, 3)),
+                         "gyr": np.array([0.2, -0.1, 0.4 * k]) + rng.normal(0, 0.01, (n, 3)),
+                         "mag": np.array([18.0, 6.0 * k, -40.0]) + rng.normal(0, 0.3, (n, 3))})
+        s = u.session()
+        try:
+            pc = ParamClient(s, 1)
+            for sensor, d in enumerate(docs):
+                for key, pre in (("accel", "ACC"), ("gyro", "GYR"), ("mag", "MAG")):
+                    M, b = np.array(d["sensors"][key]["M"]), np.array(d["sensors"][key]["b"])
+                    tag = pre + ("2" if sensor else "")
+                    assert pc.get(f"KF_{tag}_M21") == np.float32(M[2, 1])
+                    assert pc.get(f"KF_{tag}_B0") == np.float32(b[0])
+            s.send("COMMAND_LONG", target_system=1, target_component=200, command=52502)
+            assert s.wait_for(lambda f: f.msgid == 77 and f.msg.command == 52502, timeout=3).msg.result == 0
+            got = joint_hil_run(s, segs[0], segs[1])
+        finally:
+            s.close()
+    cal0, cal1 = _model_calib(docs[0]), _model_calib(docs[1])
+    ref = joint_model("flagship", "f32", segs[0], segs[1], calib=cal0, calib2=cal1)
+    assert np.array_equal(got["angles"].view(np.uint32), ref["angles"].view(np.uint32))
+    assert np.array_equal(got["q"].view(np.uint32), ref["q_prox"].view(np.uint32))
+    shared = joint_model("flagship", "f32", segs[0], segs[1], calib=cal0, calib2=cal0)
+    assert not np.array_equal(got["angles"].view(np.uint32), shared["angles"].view(np.uint32))
+
+
+def test_apply_sensor_1_warns_on_a_one_sensor_unit_and_checks_its_ranges(unit, tmp_path, capsys):
+    path = tmp_path / "shank.json"
+    unitfile.save(_doc_seeded(23), str(path))
+    code, out, err = _run(capsys, "calibrate", "apply", "--calib", path, "--port", f"pty:{unit.device}",
+                          "--sensor", "1")
+    lines = err.strip().splitlines()
+    assert code == 0 and len(lines) == 1 and "KF_JOINT_ID 0" in lines[0], err
+    assert "of sensor 1" in out
+    far = tmp_path / "far.json"
+    unitfile.save(_doc(mag_b=(1500.0, 0.0, 0.0)), str(far))
+    code, out, err = _run(capsys, "calibrate", "apply", "--calib", far, "--dry-run", "--sensor", "1")
+    assert code == 2 and "KF_MAG2_B0" in err and "outside the unit's range" in err and ": b value" in err
+    with pytest.raises(SystemExit):
+        cli.main(["calibrate", "apply", "--calib", str(path), "--dry-run", "--sensor", "2"])
+    assert "invalid choice" in capsys.readouterr().err

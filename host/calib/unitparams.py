@@ -3,7 +3,11 @@
 The file (:mod:`.unitfile`) holds per sensor the map ``cal = M · (raw − b)`` with ``raw`` in SI
 units (m/s², rad/s, µT).  The unit applies the generated ``calib_apply`` map
 ``cal = M · (counts · scale − b)`` with the REAL32 parameters ``KF_<S>_M<ij>``, ``KF_<S>_B<i>``
-and ``KF_<S>_SCALE`` (S = ACC, GYR, MAG).  So M and b go over unchanged (as float32, what the
+and ``KF_<S>_SCALE`` (S = ACC, GYR, MAG).  A two-sensor unit (``KF_JOINT_ID`` != 0) has a second
+map for its sensor 1, the same parameters as ``KF_<S>2_*`` (``KF_ACC2_M00`` …), and so two
+calibration files, one per IMU, both with the unit's serial number: ``sensor=1``
+(``kinefuse calibrate apply --sensor 1``) writes a file to sensor 1's parameters.  The file does
+not say which sensor it is for.  So M and b go over unchanged (as float32, what the
 parameter protocol carries); the scale is left as it is: the host reads a unit's KF_RAW_SAMPLE
 counts in the dialect units (``kinefuse.host.link.dialect.RAW_SCALE``), which are the scale
 parameters' defaults, and :func:`apply_to_unit` warns when the unit's scale differs from them.
@@ -32,34 +36,51 @@ def f32(v: float) -> float:
     return struct.unpack("<f", struct.pack("<f", float(v)))[0]
 
 
-def _ranges() -> dict[str, tuple[float, float, float]]:
-    """KF_* calibration parameter -> (default, lo, hi) as float32, from the generated map."""
+#: unit-file sensor -> the calib_apply field prefix
+FIELD = {"accel": "acc", "gyro": "gyr", "mag": "mag"}
+SENSORS = (0, 1)            # sensor 0 (KF_ACC_* ...) and, on a two-sensor unit, sensor 1 (KF_ACC2_* ...)
+
+
+def param_name(sensor_key: str, part: str, sensor: int = 0) -> str:
+    """The unit's parameter of ``part`` (``M01``, ``B2``, ``SCALE``) of the file's sensor
+    ``sensor_key`` (accel|gyro|mag) for sensor 0 (``KF_ACC_M01``) or 1 (``KF_ACC2_M01``)."""
+    from kinefuse.firmware.apptables import calib_param_name
+    return calib_param_name(f"{FIELD[sensor_key]}_{part.lower()}", _sensor(sensor))
+
+
+def _sensor(sensor) -> int:
+    if sensor not in SENSORS:
+        raise KinefuseError(f"sensor {sensor!r}: a unit has sensor 0 and, in the two-sensor mode, sensor 1")
+    return int(sensor)
+
+
+def _ranges(sensor: int = 0) -> dict[str, tuple[float, float, float]]:
+    """KF_* calibration parameter of ``sensor`` -> (default, lo, hi) as float32, from the generated
+    map (sensor 1's parameters have sensor 0's ranges and defaults)."""
     from kinefuse.codegen import estimators
+    from kinefuse.firmware.apptables import calib_param_name
     est = estimators.get("calib_apply")
-    out = {}
-    for p in est.params:
-        s, _, rest = p.name.partition("_")
-        out[f"KF_{s.upper()}_{rest.upper()}"] = (f32(p.default), f32(p.lo), f32(p.hi))
-    return out
+    return {calib_param_name(p.name, sensor): (f32(p.default), f32(p.lo), f32(p.hi)) for p in est.params}
 
 
-def plan(doc: dict, source: str) -> dict[str, float]:
-    """{parameter: float32 value} for every sensor in the (validated) calibration ``doc``;
-    raises KinefuseError naming ``source`` when a value is outside the unit's range."""
-    rng = _ranges()
+def plan(doc: dict, source: str, sensor: int = 0) -> dict[str, float]:
+    """{parameter: float32 value} for every sensor in the (validated) calibration ``doc``, as
+    the parameters of the unit's sensor ``sensor`` (0: KF_ACC_* ..., 1: KF_ACC2_* ...); raises
+    KinefuseError naming ``source`` when a value is outside the unit's range."""
+    sensor = _sensor(sensor)
+    rng = _ranges(sensor)
     out: dict[str, float] = {}
-    for sensor, entry in doc["sensors"].items():
-        pre = PREFIX[sensor]
+    for key, entry in doc["sensors"].items():
         M = np.asarray(entry["M"], float)
         b = np.asarray(entry["b"], float)
-        vals = {f"KF_{pre}_M{i}{j}": M[i, j] for i in range(3) for j in range(3)}
-        vals.update({f"KF_{pre}_B{i}": b[i] for i in range(3)})
+        vals = {param_name(key, f"M{i}{j}", sensor): M[i, j] for i in range(3) for j in range(3)}
+        vals.update({param_name(key, f"B{i}", sensor): b[i] for i in range(3)})
         for name, v in vals.items():
             _, lo, hi = rng[name]
             v32 = f32(v)
             if not (math.isfinite(v32) and lo <= v32 <= hi):
-                what = "M" if "_M" in name else "b"
-                raise KinefuseError(f"{source}: sensors.{sensor}: {what} value {v:.6g} ({name}) is outside "
+                what = "M" if name.rsplit("_", 1)[1].startswith("M") else "b"   # KF_MAG_B0 is a b
+                raise KinefuseError(f"{source}: sensors.{key}: {what} value {v:.6g} ({name}) is outside "
                                     f"the unit's range [{lo:g}, {hi:g}]: not applied")
             out[name] = v32
     if not out:
@@ -80,14 +101,17 @@ def _same_bits(a: float, b: float) -> bool:
     return struct.pack("<f", float(a)) == struct.pack("<f", float(b))
 
 
-def apply_to_unit(session, sysid: int, doc: dict, source: str, *, warn=lambda msg: None,
+def apply_to_unit(session, sysid: int, doc: dict, source: str, *, sensor: int = 0, warn=lambda msg: None,
                   timeout: float = 0.5) -> dict:
-    """Write the calibration ``doc`` to unit ``sysid`` over ``session`` and verify it.
+    """Write the calibration ``doc`` to the parameters of sensor ``sensor`` (0, or 1 of a
+    two-sensor unit) of unit ``sysid`` over ``session`` and verify it.
 
-    Returns ``{"unit", "serial", "sensors", "written": {name: value}, "changed", "verified"}``."""
+    Returns ``{"unit", "serial", "sensor", "sensors", "written": {name: value}, "changed",
+    "verified"}``."""
     from kinefuse.host.link.dialect import RAW_SCALE
     from kinefuse.host.link.params import ParamClient, ParamError
-    values = plan(doc, source)
+    sensor = _sensor(sensor)
+    values = plan(doc, source, sensor)
     client = ParamClient(session, sysid, timeout=timeout)
     try:
         unit_serial = client.get(SERIAL_PARAM)
@@ -102,15 +126,25 @@ def apply_to_unit(session, sysid: int, doc: dict, source: str, *, warn=lambda ms
                             f"serial number {unit_serial} (0x{int(unit_serial):08X}): not applied")
     try:
         before = {name: client.get(name) for name in values}
-        for sensor in doc["sensors"]:
-            key = {"accel": "acc", "gyro": "gyro", "mag": "mag"}[sensor]
-            name = f"KF_{PREFIX[sensor]}_SCALE"
+        for key in doc["sensors"]:
+            unit_key = {"accel": "acc", "gyro": "gyro", "mag": "mag"}[key]
+            name = param_name(key, "SCALE", sensor)
             scale = client.get(name)
-            if not _same_bits(scale, f32(RAW_SCALE[key])):
-                warn(f"unit {sysid}: {name} = {scale:.7g}, not the KF_RAW_SAMPLE unit {RAW_SCALE[key]:.7g} "
+            if not _same_bits(scale, f32(RAW_SCALE[unit_key])):
+                warn(f"unit {sysid}: {name} = {scale:.7g}, not the KF_RAW_SAMPLE unit {RAW_SCALE[unit_key]:.7g} "
                      f"that unit recordings are read in: the calibration assumes readings in that unit")
     except ParamError as exc:
-        raise KinefuseError(f"unit {sysid}: {exc} (does its firmware apply calibrations?)") from None
+        hint = ("does its firmware have a calibration map for sensor 1 (KF_ACC2_* ...)?" if sensor
+                else "does its firmware apply calibrations?")
+        raise KinefuseError(f"unit {sysid}: {exc} ({hint})") from None
+    if sensor == 1:
+        try:
+            joint = client.get("KF_JOINT_ID")
+        except ParamError:
+            joint = None
+        if joint == 0:
+            warn(f"unit {sysid} is not in the two-sensor mode (KF_JOINT_ID 0): sensor 1's map is stored "
+                 f"but used only once KF_JOINT_ID is set")
     written: list[str] = []
     try:
         for name, v in values.items():
@@ -129,7 +163,7 @@ def apply_to_unit(session, sysid: int, doc: dict, source: str, *, warn=lambda ms
             bad.append(f"{name} = {got!r}, expected {v!r}")
     if bad:
         raise KinefuseError(f"unit {sysid}: read-back differs for {len(bad)} parameters ({bad[0]})")
-    return {"unit": sysid, "serial": doc["serial"], "unit_serial": unit_serial,
+    return {"unit": sysid, "serial": doc["serial"], "unit_serial": unit_serial, "sensor": sensor,
             "sensors": sorted(doc["sensors"]), "written": values,
             "changed": sorted(n for n in values if not _same_bits(before[n], values[n])),
             "verified": True}

@@ -7,6 +7,7 @@ Examples::
     kinefuse calibrate gyro --input still.csv --json
     kinefuse calibrate mag --input figure8.csv --field-norm 22.6 --json
     kinefuse calibrate apply --calib unit7.json --port /dev/ttyUSB0   # write it to the unit
+    kinefuse calibrate apply --calib unit7-shank.json --port /dev/ttyUSB0 --sensor 1   # two-sensor unit
 
 POSES.csv: one row per pose, the mean raw accelerometer x,y,z (or x,y for the seed-002 2-D
 protocol); TARGETS.csv: the expected gravity vector of each pose (same shape).  Both accept an
@@ -80,13 +81,19 @@ def register(subparsers) -> None:
 
     ap = sub.add_parser("apply", help="write a unit calibration file to the unit (parameters, read back)",
                         description="Write the calibration file's accelerometer, gyroscope and magnetometer "
-                                    "maps to the unit as its KF_ACC/GYR/MAG_M<ij>, _B<i> parameters, then read "
+                                    "maps to the unit as its KF_ACC/GYR/MAG_M<ij>, _B<i> parameters (--sensor 1: "
+                                    "KF_ACC2/GYR2/MAG2_*, the second IMU of a two-sensor unit), then read "
                                     "every value back.  Refused when the file's serial number is not the "
-                                    "unit's KF_SERIAL_NO.  Sensors absent from the file keep their values.")
+                                    "unit's KF_SERIAL_NO.  Sensors absent from the file keep their values.  A "
+                                    "two-sensor unit has two calibration files, one per IMU, both with the "
+                                    "unit's serial number.")
     ap.add_argument("--calib", required=True, metavar="CALIB.json", help="unit calibration file")
     ap.add_argument("--port", metavar="CONN", help="serial port or connection string of the unit")
     ap.add_argument("--baud", default=921600, metavar="BAUD", help="serial baud rate (default 921600)")
     ap.add_argument("--unit", type=int, metavar="SYSID", help="system id of the unit (default: first heartbeat)")
+    ap.add_argument("--sensor", type=int, choices=(0, 1), default=0,
+                    help="the unit's sensor the file calibrates: 0 (default; KF_ACC_* ...) or 1, the second "
+                         "IMU of a two-sensor unit (KF_ACC2_* ...)")
     ap.add_argument("--timeout", type=float, default=3.0, metavar="S", help="wait this long for the unit (default 3)")
     ap.add_argument("--dry-run", action="store_true", help="print the parameters without connecting")
     ap.add_argument("--json", action="store_true", help="print exactly one JSON object")
@@ -288,9 +295,10 @@ def run_mag(args) -> int:
 def run_apply(args) -> int:
     from kinefuse.host.calib import unitfile, unitparams
     doc = unitfile.load(args.calib)
-    values = unitparams.plan(doc, args.calib)
+    values = unitparams.plan(doc, args.calib, args.sensor)
     if args.dry_run:
-        _emit(args, {"serial": doc["serial"], "sensors": sorted(doc["sensors"]), "params": values},
+        _emit(args, {"serial": doc["serial"], "sensor": args.sensor, "sensors": sorted(doc["sensors"]),
+                     "params": values},
               [f"{k} = {v!r}" for k, v in values.items()])
         return 0
     if not args.port:
@@ -308,9 +316,9 @@ def run_apply(args) -> int:
                 raise KinefuseError(f"no HEARTBEAT on {args.port} within {args.timeout:g} s "
                                     f"(unit off, wrong port or wrong baud rate?)")
             sysid = hb.sysid
-        res = unitparams.apply_to_unit(s, sysid, doc, args.calib,
+        res = unitparams.apply_to_unit(s, sysid, doc, args.calib, sensor=args.sensor,
                                        warn=lambda m: print(f"kinefuse: warning: {m}", file=sys.stderr))
-    _emit(args, res, [f"unit {sysid}: wrote {len(res['written'])} calibration parameters "
+    _emit(args, res, [f"unit {sysid}: wrote {len(res['written'])} calibration parameters of sensor {args.sensor} "
                       f"({', '.join(res['sensors'])}; {len(res['changed'])} changed) from {args.calib}, "
                       f"read back and verified"])
     return 0
