@@ -245,7 +245,17 @@ def c_source(lo: Lowered, source_file: str) -> str:
               "#if !defined(FLT_EVAL_METHOD) || (FLT_EVAL_METHOD != 0)",
               '#error "kinefuse generated code needs FLT_EVAL_METHOD == 0 (no excess precision)"',
               "#endif", "#ifdef __FAST_MATH__",
-              '#error "kinefuse generated code must not be built with -ffast-math"', "#endif", ""]
+              '#error "kinefuse generated code must not be built with -ffast-math"', "#endif"]
+    if lo.system == "f32":
+        # a*b+c fused into one rounding changes results.  Clang honours the C99 pragma; GCC
+        # ignores it, but does not contract in ISO C mode (-std=c99); its GNU modes do unless
+        # -ffp-contract=off, which the preprocessor cannot see (say so with KF_FP_CONTRACT_OFF)
+        lines += ["#if defined(__clang__)", "#pragma STDC FP_CONTRACT OFF",
+                  "#elif defined(__GNUC__) && !defined(__STRICT_ANSI__) && !defined(KF_FP_CONTRACT_OFF)",
+                  '#error "kinefuse generated code: build with -std=c99 (GNU C modes fuse a*b+c), '
+                  'or with -ffp-contract=off -DKF_FP_CONTRACT_OFF"',
+                  "#endif"]
+    lines += [""]
     lines += [f"void {P}_default_params({P}_params *p)", "{"]
     for p in est.params:
         lines.append(f"    p->{p.name} = {_c_param_value(lo, p)};")

@@ -59,6 +59,26 @@ def test_c_compiles_warning_free_pedantic(name, tmp_path):
         assert r.returncode == 0, r.stderr[:2000]
 
 
+def test_f32_refuses_gnu_mode_contraction(tmp_path):
+    """GNU C modes fuse a*b+c (the M4F has vfma): the generated float32 C refuses to build there
+    unless -ffp-contract=off is declared; ISO C99 builds, and on the M4F it has no fused op."""
+    import shutil
+    path = GENERATED_DIR / f"{stem('complementary', 'f32')}.c"
+    base = ["gcc", "-O2", f"-I{GENERATED_DIR}", "-c", str(path), "-o", str(tmp_path / "x.o")]
+    r = subprocess.run(base + ["-std=gnu99"], capture_output=True, text=True)
+    assert r.returncode != 0 and "GNU C modes fuse" in r.stderr
+    assert subprocess.run(base + ["-std=gnu99", "-ffp-contract=off", "-DKF_FP_CONTRACT_OFF"]).returncode == 0
+    assert subprocess.run(base + ["-std=c99"]).returncode == 0
+    if shutil.which("arm-none-eabi-gcc") and shutil.which("arm-none-eabi-objdump"):
+        obj = tmp_path / "m4f.o"
+        subprocess.run(["arm-none-eabi-gcc", "-mcpu=cortex-m4", "-mthumb", "-mfpu=fpv4-sp-d16",
+                        "-mfloat-abi=hard", "-O2", "-std=c99", f"-I{GENERATED_DIR}", "-c", str(path),
+                        "-o", str(obj)], check=True)
+        dis = subprocess.run(["arm-none-eabi-objdump", "-d", str(obj)], capture_output=True,
+                             text=True, check=True).stdout
+        assert "vmul.f32" in dis and not re.search(r"\bv(fma|fms|fnma|fnms|mla|mls|nmla|nmls)\.", dis)
+
+
 @pytest.mark.parametrize("name", [f for f in FILTERS if "q" in estimators.get(f).systems])
 def test_q_header_lists_every_state_format(name):
     text = (GENERATED_DIR / f"{stem(name, 'q')}.h").read_text()

@@ -20,6 +20,11 @@
 #ifdef __FAST_MATH__
 #error "kinefuse generated code must not be built with -ffast-math"
 #endif
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#elif defined(__GNUC__) && !defined(__STRICT_ANSI__) && !defined(KF_FP_CONTRACT_OFF)
+#error "kinefuse generated code: build with -std=c99 (GNU C modes fuse a*b+c), or with -ffp-contract=off -DKF_FP_CONTRACT_OFF"
+#endif
 
 void mahony_f32_default_params(mahony_f32_params *p)
 {
