@@ -185,6 +185,9 @@ class Flagship(Estimator):
               "lengthened by 2^(1/4): under translation the accelerometer is trusted less"),
         Param("tau_vel", 2.0, "s", 0.1, 60.0,
               "time constant of the mean-square residual velocity"),
+        Param("mag_rate_max", 100.0, "Hz", 1.0, 10000.0,
+              "magnetometer readings are used at most this often (a faster magnetometer costs "
+              "time, not accuracy: the heading time constant is seconds)"),
     )
     state = (
         Var("q_i", 4, -1.0, 1.0, "", "strapdown orientation, sensor -> almost-inertial frame",
@@ -273,7 +276,7 @@ class Flagship(Estimator):
         live = logical_or(x.initialised, do_init)
         run = logical_and(gyr_ok, x.initialised)        # a regular step
         acc_ok = logical_and(acc_ok, live)
-        use_mag = all_of(gyr_ok, live, nine, u.mag_valid, mag_fine)
+        mag_ok = all_of(gyr_ok, live, nine, u.mag_valid, mag_fine)
         # a rejected reading leaves a gap: its time (one usual period when its own time step
         # is unusable; none for a duplicate, dt = 0) is bridged by the next regular step
         dt_lp = select(do_init, 0.0, x.dt_lp)
@@ -283,6 +286,12 @@ class Flagship(Estimator):
         dt = select(run, fmin(clamp(u.dt, 0.0, DT_MAX) + x.t_skip, DT_MAX), 0.0)
         t_skip_new = select(run, 0.0, select(x.initialised, fmin(x.t_skip + skipped, DT_MAX),
                                              0.0))
+        # a magnetometer reading is used at most mag_rate_max times a second (10 % jitter
+        # allowed): a faster magnetometer adds cost, not information, to a heading filter whose
+        # time constant is seconds; the first reading is always used
+        t_mag = fmin(x.t_mag + dt, 2.0 * DT_MAX)         # time since the last reading used
+        mag_due = logical_or(t_mag * p.mag_rate_max >= 0.9, logical_not(x.initialised))
+        use_mag = logical_and(mag_ok, mag_due)
 
         one = Quat(1.0, 0.0, 0.0, 0.0)
         zero3 = Vec3(0.0, 0.0, 0.0)
@@ -401,7 +410,6 @@ class Flagship(Estimator):
         p_head_pred = select(do_init, P_HEAD_MAX,
                              fmin(x.p_head + p.heading_rw * p.heading_rw * dt + gap_var,
                                   P_HEAD_MAX))
-        t_mag = fmin(x.t_mag + dt, 2.0 * DT_MAX)
         cur_old = _fld(x.cur_n, x.cur_d)
         cand_old = _fld(x.cand_n, x.cand_d)
         ref = _fld(x.ref_n, x.ref_d)
@@ -447,9 +455,9 @@ class Flagship(Estimator):
             # (homogeneous) field, not a disturbance moving with the sensor or passing by
             cand_off = logical_or(do_init, field_off(cand_old))
             rotating = rest_gyr.norm_sq() >= p.mag_new_min_rate * p.mag_new_min_rate
-            k_cand = fmin(dt / p.tau_mag_ref, 1.0)
+            k_cand = fmin(t_mag / p.tau_mag_ref, 1.0)
             cand = vselect(cand_off, cur, cand_old + (cur - cand_old) * k_cand)
-            cand_t = select(cand_off, 0.0, select(rotating, fmin(x.cand_t + dt, T_SAT), x.cand_t))
+            cand_t = select(cand_off, 0.0, select(rotating, fmin(x.cand_t + t_mag, T_SAT), x.cand_t))
 
             # rejection (field tests or gate) is bounded: the rejection time grows while readings
             # are rejected and decays twice as fast while they are accepted (noise at a threshold
@@ -459,8 +467,9 @@ class Flagship(Estimator):
             h_first = logical_and(use_mag, logical_not(has_ref))
             rejected_now = all_of(use_mag, has_ref, logical_or(
                 disturbed_now, logical_and(settled, implausible)))
-            dist_t = select(rejected_now, fmin(x.dist_t + dt, T_SAT), fmax(x.dist_t - 2.0 * dt, 0.0))
-            undist_t = select(disturbed_now, 0.0, fmin(x.undist_t + dt, T_SAT))
+            dist_t = select(rejected_now, fmin(x.dist_t + t_mag, T_SAT),
+                            fmax(x.dist_t - 2.0 * t_mag, 0.0))
+            undist_t = select(disturbed_now, 0.0, fmin(x.undist_t + t_mag, T_SAT))
             give_up = logical_and(rejected_now, dist_t >= p.mag_reject_time)
             adopt = logical_or(logical_and(disturbed_now, cand_t >= p.mag_new_time), give_up)
             reset_head = logical_or(h_first, logical_and(give_up, implausible))
@@ -473,6 +482,10 @@ class Flagship(Estimator):
             # -- heading update: R_c = heading_rw^2 tau_mag^2 (noise density) makes tau_mag the
             # steady-state time constant; a sample covering t_mag seconds has variance R_c / t_mag
             r_c = p.heading_rw * p.heading_rw * p.tau_mag * p.tau_mag
+            # when a bounded rejection ends, the heading has gone uncorrected for a long time:
+            # its variance is at least the disagreement seen (sin^2), so a plausible but large
+            # disagreement is corrected in seconds, not at the steady-state time constant
+            p_head = select(give_up, fmax(p_head, fmin(ex * ex, P_HEAD_MAX)), p_head)
             pt = p_head * t_mag
             k_head = select(reset_head, 1.0,
                             select(accept, assume(pt / fmax(pt + r_c, 1e-12), 0.0, 1.0), 0.0))
@@ -495,8 +508,8 @@ class Flagship(Estimator):
                             select(accept, (1.0 - k_head) * p_head, p_head))
 
             # reference: learnt while accepted (1/N at first, then tau_mag_ref), or adopted
-            ref_t = select(accept, fmin(x.ref_t + dt, T_SAT), x.ref_t)
-            k_ref = fmin(dt * (1.0 / fmax(fmin(ref_t, p.tau_mag_ref), 1e-3)), 1.0)
+            ref_t = select(accept, fmin(x.ref_t + t_mag, T_SAT), x.ref_t)
+            k_ref = fmin(t_mag * (1.0 / fmax(fmin(ref_t, p.tau_mag_ref), 1e-3)), 1.0)
             ref_new = vselect(h_first, cur, vselect(adopt, cand, vselect(
                 logical_and(accept, has_ref), ref + (cur - ref) * k_ref, ref)))
             ref_t = select(logical_or(h_first, adopt), fmax(ref_t, 1e-3), ref_t)

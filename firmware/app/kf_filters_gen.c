@@ -122,7 +122,7 @@ static void mahony_update(void *state, const kf_imu_input *in, kf_filter_out *o)
 #endif
 
 #ifndef KF_WITHOUT_FLAGSHIP
-/* flagship: 28 parameters (KF_FL_MODE, KF_FL_TAU_ACC, KF_FL_TAU_MAG, KF_FL_HEADING_RW, KF_FL_TAU_BIAS, KF_FL_BIAS_SIG0, KF_FL_BIAS_FORGT, KF_FL_BIAS_SIG_R, KF_FL_BIAS_MAX, KF_FL_REST_TH_G, KF_FL_REST_TH_A, KF_FL_REST_TIME, KF_FL_TAU_REST, KF_FL_TAU_MAG_N, KF_FL_MAG_TH, KF_FL_MAG_DIP_TH, KF_FL_MAG_GATE, KF_FL_MAG_SIG_GT, KF_FL_TAU_MAG_RF, KF_FL_MAG_NEW_T, KF_FL_MAG_NEW_MR, KF_FL_MAG_REJ_T, KF_FL_MAG_MIN_UD, KF_FL_GYR_RANGE, KF_FL_ACC_RANGE, KF_FL_INCL_RATE, KF_FL_INCL_VEL, KF_FL_TAU_VEL) */
+/* flagship: 29 parameters (KF_FL_MODE, KF_FL_TAU_ACC, KF_FL_TAU_MAG, KF_FL_HEADING_RW, KF_FL_TAU_BIAS, KF_FL_BIAS_SIG0, KF_FL_BIAS_FORGT, KF_FL_BIAS_SIG_R, KF_FL_BIAS_MAX, KF_FL_REST_TH_G, KF_FL_REST_TH_A, KF_FL_REST_TIME, KF_FL_TAU_REST, KF_FL_TAU_MAG_N, KF_FL_MAG_TH, KF_FL_MAG_DIP_TH, KF_FL_MAG_GATE, KF_FL_MAG_SIG_GT, KF_FL_TAU_MAG_RF, KF_FL_MAG_NEW_T, KF_FL_MAG_NEW_MR, KF_FL_MAG_REJ_T, KF_FL_MAG_MIN_UD, KF_FL_GYR_RANGE, KF_FL_ACC_RANGE, KF_FL_INCL_RATE, KF_FL_INCL_VEL, KF_FL_TAU_VEL, KF_FL_MAG_RAT_MA) */
 static void flagship_build(const float *v, void *params)
 {
     flagship_q_params *p = (flagship_q_params *)params;
@@ -155,6 +155,7 @@ static void flagship_build(const float *v, void *params)
     p->incl_rate_ref = q_param(v[25], 26, 3355443, 2013265920);
     p->incl_vel_ref = q_param(v[26], 27, 1342177, 1342177280);
     p->tau_vel = q_param(v[27], 25, 3355443, 2013265920);
+    p->mag_rate_max = q_param(v[28], 17, 131072, 1310720000);
 }
 static int flagship_init(void *state, const void *params)
 {
@@ -414,39 +415,39 @@ const kf_filter_ops kf_gen_filters[KF_GEN_FILTER_COUNT] = {
     {"mahony", 4u, 6u, 3u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_FLAGSHIP
-    {"flagship", 5u, 9u, 28u, flagship_build, flagship_init, flagship_set, flagship_update},
+    {"flagship", 5u, 9u, 29u, flagship_build, flagship_init, flagship_set, flagship_update},
 #else
-    {"flagship", 5u, 9u, 28u, NULL, NULL, NULL, NULL},
+    {"flagship", 5u, 9u, 29u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_ESKF
-    {"eskf", 6u, 37u, 16u, eskf_build, eskf_init, eskf_set, eskf_update},
+    {"eskf", 6u, 38u, 16u, eskf_build, eskf_init, eskf_set, eskf_update},
 #else
-    {"eskf", 6u, 37u, 16u, NULL, NULL, NULL, NULL},
+    {"eskf", 6u, 38u, 16u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_ECOMPASS
-    {"ecompass", 8u, 53u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
+    {"ecompass", 8u, 54u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
 #else
-    {"ecompass", 8u, 53u, 1u, NULL, NULL, NULL, NULL},
+    {"ecompass", 8u, 54u, 1u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_TRIAD
-    {"triad", 9u, 54u, 3u, triad_build, triad_init, triad_set, triad_update},
+    {"triad", 9u, 55u, 3u, triad_build, triad_init, triad_set, triad_update},
 #else
-    {"triad", 9u, 54u, 3u, NULL, NULL, NULL, NULL},
+    {"triad", 9u, 55u, 3u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAC
-    {"vac", 10u, 57u, 7u, vac_build, vac_init, vac_set, vac_update},
+    {"vac", 10u, 58u, 7u, vac_build, vac_init, vac_set, vac_update},
 #else
-    {"vac", 10u, 57u, 7u, NULL, NULL, NULL, NULL},
+    {"vac", 10u, 58u, 7u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAK
-    {"vak", 11u, 64u, 5u, vak_build, vak_init, vak_set, vak_update},
+    {"vak", 11u, 65u, 5u, vak_build, vak_init, vak_set, vak_update},
 #else
-    {"vak", 11u, 64u, 5u, NULL, NULL, NULL, NULL},
+    {"vak", 11u, 65u, 5u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_GUO
-    {"guo", 12u, 69u, 3u, guo_build, guo_init, guo_set, guo_update},
+    {"guo", 12u, 70u, 3u, guo_build, guo_init, guo_set, guo_update},
 #else
-    {"guo", 12u, 69u, 3u, NULL, NULL, NULL, NULL},
+    {"guo", 12u, 70u, 3u, NULL, NULL, NULL, NULL},
 #endif
 };
 
@@ -669,7 +670,7 @@ static void mahony_update(void *state, const kf_imu_input *in, kf_filter_out *o)
 #endif
 
 #ifndef KF_WITHOUT_FLAGSHIP
-/* flagship: 28 parameters (KF_FL_MODE, KF_FL_TAU_ACC, KF_FL_TAU_MAG, KF_FL_HEADING_RW, KF_FL_TAU_BIAS, KF_FL_BIAS_SIG0, KF_FL_BIAS_FORGT, KF_FL_BIAS_SIG_R, KF_FL_BIAS_MAX, KF_FL_REST_TH_G, KF_FL_REST_TH_A, KF_FL_REST_TIME, KF_FL_TAU_REST, KF_FL_TAU_MAG_N, KF_FL_MAG_TH, KF_FL_MAG_DIP_TH, KF_FL_MAG_GATE, KF_FL_MAG_SIG_GT, KF_FL_TAU_MAG_RF, KF_FL_MAG_NEW_T, KF_FL_MAG_NEW_MR, KF_FL_MAG_REJ_T, KF_FL_MAG_MIN_UD, KF_FL_GYR_RANGE, KF_FL_ACC_RANGE, KF_FL_INCL_RATE, KF_FL_INCL_VEL, KF_FL_TAU_VEL) */
+/* flagship: 29 parameters (KF_FL_MODE, KF_FL_TAU_ACC, KF_FL_TAU_MAG, KF_FL_HEADING_RW, KF_FL_TAU_BIAS, KF_FL_BIAS_SIG0, KF_FL_BIAS_FORGT, KF_FL_BIAS_SIG_R, KF_FL_BIAS_MAX, KF_FL_REST_TH_G, KF_FL_REST_TH_A, KF_FL_REST_TIME, KF_FL_TAU_REST, KF_FL_TAU_MAG_N, KF_FL_MAG_TH, KF_FL_MAG_DIP_TH, KF_FL_MAG_GATE, KF_FL_MAG_SIG_GT, KF_FL_TAU_MAG_RF, KF_FL_MAG_NEW_T, KF_FL_MAG_NEW_MR, KF_FL_MAG_REJ_T, KF_FL_MAG_MIN_UD, KF_FL_GYR_RANGE, KF_FL_ACC_RANGE, KF_FL_INCL_RATE, KF_FL_INCL_VEL, KF_FL_TAU_VEL, KF_FL_MAG_RAT_MA) */
 static void flagship_build(const float *v, void *params)
 {
     flagship_f32_params *p = (flagship_f32_params *)params;
@@ -702,6 +703,7 @@ static void flagship_build(const float *v, void *params)
     p->incl_rate_ref = v[25];
     p->incl_vel_ref = v[26];
     p->tau_vel = v[27];
+    p->mag_rate_max = v[28];
 }
 static int flagship_init(void *state, const void *params)
 {
@@ -961,39 +963,39 @@ const kf_filter_ops kf_gen_filters[KF_GEN_FILTER_COUNT] = {
     {"mahony", 4u, 6u, 3u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_FLAGSHIP
-    {"flagship", 5u, 9u, 28u, flagship_build, flagship_init, flagship_set, flagship_update},
+    {"flagship", 5u, 9u, 29u, flagship_build, flagship_init, flagship_set, flagship_update},
 #else
-    {"flagship", 5u, 9u, 28u, NULL, NULL, NULL, NULL},
+    {"flagship", 5u, 9u, 29u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_ESKF
-    {"eskf", 6u, 37u, 16u, eskf_build, eskf_init, eskf_set, eskf_update},
+    {"eskf", 6u, 38u, 16u, eskf_build, eskf_init, eskf_set, eskf_update},
 #else
-    {"eskf", 6u, 37u, 16u, NULL, NULL, NULL, NULL},
+    {"eskf", 6u, 38u, 16u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_ECOMPASS
-    {"ecompass", 8u, 53u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
+    {"ecompass", 8u, 54u, 1u, ecompass_build, ecompass_init, ecompass_set, ecompass_update},
 #else
-    {"ecompass", 8u, 53u, 1u, NULL, NULL, NULL, NULL},
+    {"ecompass", 8u, 54u, 1u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_TRIAD
-    {"triad", 9u, 54u, 3u, triad_build, triad_init, triad_set, triad_update},
+    {"triad", 9u, 55u, 3u, triad_build, triad_init, triad_set, triad_update},
 #else
-    {"triad", 9u, 54u, 3u, NULL, NULL, NULL, NULL},
+    {"triad", 9u, 55u, 3u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAC
-    {"vac", 10u, 57u, 7u, vac_build, vac_init, vac_set, vac_update},
+    {"vac", 10u, 58u, 7u, vac_build, vac_init, vac_set, vac_update},
 #else
-    {"vac", 10u, 57u, 7u, NULL, NULL, NULL, NULL},
+    {"vac", 10u, 58u, 7u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_VAK
-    {"vak", 11u, 64u, 5u, vak_build, vak_init, vak_set, vak_update},
+    {"vak", 11u, 65u, 5u, vak_build, vak_init, vak_set, vak_update},
 #else
-    {"vak", 11u, 64u, 5u, NULL, NULL, NULL, NULL},
+    {"vak", 11u, 65u, 5u, NULL, NULL, NULL, NULL},
 #endif
 #ifndef KF_WITHOUT_GUO
-    {"guo", 12u, 69u, 3u, guo_build, guo_init, guo_set, guo_update},
+    {"guo", 12u, 70u, 3u, guo_build, guo_init, guo_set, guo_update},
 #else
-    {"guo", 12u, 69u, 3u, NULL, NULL, NULL, NULL},
+    {"guo", 12u, 70u, 3u, NULL, NULL, NULL, NULL},
 #endif
 };
 

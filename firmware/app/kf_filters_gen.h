@@ -12,8 +12,8 @@
 
 #define KF_GEN_FILTER_COUNT 10
 #define KF_GEN_CALIB_PARAM_COUNT 39
-#define KF_GEN_FILTER_PARAM_COUNT 72
-#define KF_GEN_FILTER_PARAM_MAX 28
+#define KF_GEN_FILTER_PARAM_COUNT 73
+#define KF_GEN_FILTER_PARAM_MAX 29
 
 /* A build may leave filters out with -DKF_WITHOUT_<NAME> (e.g. KF_WITHOUT_GUO): their rows
  * stay in the tables (parameters keep their names and values) with no functions. */
