@@ -38,9 +38,6 @@ if os.environ.get("CI"):          # CI: no shrinking (minimal examples are found
 # (filter, property, number system or None for all) -> why it fails (reported to the owner,
 # with the minimal example hypothesis found; see the harness report)
 KNOWN_FAILURES = {
-    ("mahony", "rest_convergence", "q"): (
-        "mahony q: at rest upside down (q_rest = (0, 0, 1, 0)) after starting at (-0.90, 0.44, 0, "
-        "0), the inclination error stays at 17.3 deg after 900 s (f32: converges)"),
 }
 
 
