@@ -123,18 +123,54 @@ def test_madgwick_on_the_12_trials_matches_the_published_filter():
     assert max(heads) < 45.0          # a frame error shows up as ~90 or 180 deg of heading
 
 
-@pytest.mark.broad_full
-@pytest.mark.parametrize("name", FIRST)
-def test_full_trial_bit_exact(name):
-    from kinefuse.host import broad, runner
+def _full_trials() -> list:
+    """The 12 full BROAD trials when the shared folder exists (else one placeholder that skips)."""
+    from kinefuse.host import broad
     d = broad.shared_broad_dir()
-    if d is None:
+    if d is None or not d.is_dir():
+        return [pytest.param(None, id="no-broad")]
+    try:
+        return [pytest.param(f, id=f.stem) for f in broad.find_trials(d)]
+    except Exception as exc:           # reported by the test, not as a collection error
+        return [pytest.param(f"{d}: {exc}", id="broad-unreadable")]
+
+
+FULL_TRIALS = _full_trials()
+# the float64 reference runs ~8-10k samples/s, so its deviation is checked on the first REF_N
+# samples (~35 s at BROAD's 285.7 Hz: the rest phase and the start of the movement) of every
+# trial; the bits of C and model are compared on every sample
+REF_N = 10_000
+TARGETS = {"f32": (0.005, 0.05), "q": (0.05, 0.5)}   # (RMS, max) deviation from the reference, deg
+
+
+@pytest.mark.broad_full
+@pytest.mark.parametrize("path", FULL_TRIALS)
+@pytest.mark.parametrize("name", FIRST)
+def test_full_trial_bit_exact(name, path):
+    """Issue targets on each of the 12 full BROAD trials (parametrised so xdist spreads them):
+    every output sample of the generated C (f32 and q) has the bits of its Python model, and the
+    orientation deviates from the float64 reference by f32 RMS <= 0.005 deg, max <= 0.05 deg, q
+    RMS <= 0.05 deg, max <= 0.5 deg on the trial's first REF_N samples (each trial's RMS: stricter
+    than the RMS over all trials that the issue states)."""
+    from kinefuse.host import broad, runner
+    if path is None:
         pytest.skip("the 12 full BROAD trials are not available")
-    t = broad.load_trial(sorted(broad.find_trials(d))[0])
-    inp = runner.imu_inputs(t)
+    if isinstance(path, str):
+        pytest.fail(path)
+    assert len(FULL_TRIALS) == 12, [p.id for p in FULL_TRIALS]
+    inp = runner.imu_inputs(broad.load_trial(path))
+    assert len(inp["dt"]) > REF_N
+    sub = {k: v[:REF_N] for k, v in inp.items()}
+    ref = cg.run(name, "ref", sub)["q"]
     for system in ("f32", "q"):
-        assert _differing(cg.run(name, system, inp, raw=True),
-                          cg.run(name, f"{system}-model", inp, raw=True)) == 0
+        n_diff = _differing(cg.run(name, system, inp, raw=True),
+                            cg.run(name, f"{system}-model", inp, raw=True))
+        assert n_diff == 0, f"{name} {system} on {path.stem}: {n_diff} of {len(inp['dt'])} differ"
+        d = quat_angle_deg(ref, cg.run(name, system, sub)["q"])
+        rms, mx = float(np.sqrt(np.mean(d ** 2))), float(d.max())
+        rms_max, max_max = TARGETS[system]
+        assert rms <= rms_max and mx <= max_max, \
+            f"{name} {system} on {path.stem}: RMS {rms:.3g} deg, max {mx:.3g} deg from the reference"
 
 
 _H = 0.7071067811865476
