@@ -7,13 +7,15 @@ target      what                      filters                         output
             firmware/ports/host       (``system="q"``: ``*_q``, tests)
 ``m4f``     QEMU ``mps2-an386`` port  ``*_f32`` (hardware float)      ELF / BIN / HEX + map
                                       + leg EKF
+``m4f-q``   the same port             ``*_q`` (fixed point), all      ELF / BIN / HEX + map
+                                      (PIL: q on the M4F too)
 ``m0``      QEMU ``mps2-an385`` port  ``*_q`` (fixed point), default  ELF / BIN / HEX + map
                                       flagship, madgwick, mahony,
                                       complementary; ``-Os``
 ==========  ========================  ==============================  =========================
 
 The leg EKF (two-sensor mode, KF_EFFORTS) is generated in float32 only: the float32 builds link
-it unless ``--no-leg``; the fixed-point builds (M0, ``host-q``) never have it.  The M0 default
+it unless ``--no-leg``; the fixed-point builds (M0, ``m4f-q``, ``host-q``) never have it.  The M0 default
 filter set and ``-Os`` make the image fit a 256 kB part; ``--filters all`` (or a list) and
 ``--opt`` override them.
 
@@ -24,6 +26,7 @@ Cortex-M builds go through :func:`kinefuse.firmware.targets.build` (board HAL, l
 ``--gc-sections``, size report).
 
     python -m kinefuse.firmware.build all            # host + m4f + m0, size report
+    python -m kinefuse.firmware.build m4f-q          # fixed-point filters on the M4F
     python -m kinefuse.firmware.build m0 --out out/  # copy ELF/BIN/HEX/map to out/
     python -m kinefuse.firmware.build tables [--check]
 """
@@ -50,7 +53,8 @@ GENERATED_DIR = FIRMWARE_DIR / "generated"
 MAVLINK_DIR = FIRMWARE_DIR / "mavlink" / "generated"
 HOST_PORT_DIR = FIRMWARE_DIR / "ports" / "host"
 
-#: target -> number system of its filters
+#: target -> number system of its filters by default (``build_target(..., system=)`` and the
+#: CLI's ``m4f-q`` / ``host-q`` choose the other one)
 TARGET_SYSTEM = {"host": "f32", "m4f": "f32", "m0": "q"}
 #: filters of a Cortex-M build that names none (``filters=None``; ``"all"``: every wired one).
 #: The M0 image with all ten fixed-point filters (337,404 B at -Os, 737,268 B at -O2) does not
@@ -225,25 +229,32 @@ def _first_error(stderr: str, fallback: str) -> str:
 # ------------------------------------------------------------------------------- Cortex-M
 
 def build_target(target: str, *, opt: str | None = None, with_git: bool = False, out_dir=None, filters=None,
-                 leg: bool = True):
+                 leg: bool = True, system: str | None = None):
     """Cross-build the application for ``m4f`` (float32 filters; with the leg EKF unless ``leg``
     is False) or ``m0`` (fixed point: no leg EKF), with the subset ``filters`` of the wired
     filters, ``"all"`` of them, or (None) the target's default set (:data:`DEFAULT_FILTERS`:
     M4F all, M0 flagship, madgwick, mahony, complementary); ``opt`` None: :data:`DEFAULT_OPT`.
+    ``system`` ("f32" or "q") overrides the target's number system (:data:`TARGET_SYSTEM`):
+    ``build_target("m4f", system="q")`` is the fixed-point application on the M4F (the PIL
+    harness runs q on both Cortex-M targets); the image is named ``kinefuse-<target>-<system>``.
 
     Returns :class:`kinefuse.firmware.targets.BuildResult` (ELF/BIN/HEX/map, size)."""
     from kinefuse.firmware.targets import build
     if target not in ("m4f", "m0"):
         raise KinefuseError(f"unknown target {target!r} (choose from m4f, m0; host: build_host)")
     _check_tables()
-    system = TARGET_SYSTEM[target]
+    if system is None:
+        system = TARGET_SYSTEM[target]
+    elif system not in ("f32", "q"):
+        raise KinefuseError(f"number system must be 'f32' or 'q', not {system!r}")
+    default_system = system == TARGET_SYSTEM[target]
     opt = opt or DEFAULT_OPT[target]
     if filters is None:
-        filters = default_filters(target)
+        filters = default_filters(target) if default_system else "all"
     defs = _defines(system, BOARD_TX_BYTES, with_git, filters, leg)
     return build(app_sources(system, board_main=True, filters=filters, leg=leg), target,
                  include_dirs=[APP_DIR, GENERATED_DIR, MAVLINK_DIR], defines=defs, opt=opt,
-                 name=f"kinefuse-{target}", out_dir=out_dir,
+                 name=f"kinefuse-{target}" + ("" if default_system else f"-{system}"), out_dir=out_dir,
                  extra_cflags=["-isystem", str(MAVLINK_DIR)])
 
 
@@ -278,7 +289,7 @@ def size_report(opts=("-O2", "-Os")) -> list[dict]:
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m kinefuse.firmware.build",
                                  description="build the kinefuse unit application")
-    ap.add_argument("what", choices=("host", "host-q", "m4f", "m0", "all", "tables", "sizes"))
+    ap.add_argument("what", choices=("host", "host-q", "m4f", "m4f-q", "m0", "all", "tables", "sizes"))
     ap.add_argument("--out", help="copy the outputs into this folder")
     ap.add_argument("--opt", help="optimisation flag (default -O2; m0: -Os)")
     ap.add_argument("--check", action="store_true", help="tables: exit 1 when the generated files are stale")
@@ -321,7 +332,8 @@ def main(argv=None) -> int:
                 files = [b.exe]
                 out[t] = {"exe": str(b.exe)}
             else:
-                r = build_target(t, opt=args.opt, with_git=True, filters=subset, leg=leg)
+                r = build_target(t.split("-")[0], opt=args.opt, with_git=True, filters=subset, leg=leg,
+                                 system="q" if t.endswith("-q") else None)
                 files = [r.elf, r.bin, r.hex, r.map]
                 out[t] = {"elf": str(r.elf), "bin": str(r.bin), "hex": str(r.hex), **r.size.as_dict()}
             if args.out:

@@ -18,7 +18,9 @@ for HIL input: the HIL_SENSOR float32 fields -> counts (``KF_HIL_MODE`` 0: as
 ``kinefuse.host.link.hil.raw_counts``, then the generated calibration map ``calib_apply``) or
 direct float32 values (mode 1: gyr, acc as sent, mag ``float32(gauss) * 100f``), the time step
 from ``time_usec`` differences (the first sample: the nominal period ``round(1e6 / KF_RATE_HZ)``),
-then the filter; the q build reports ``float32(raw) * 2^-frac``.  Parameters are float32 on the
+then the filter; the q build reports ``float32(raw) * 2^-frac`` in KF_ORIENTATION and, with
+``KF_HIL_MODE`` bit 1 (:data:`HIL_Q_RAW`), the raw Q quaternion itself in a MEMORY_VECT after
+each one (``hil_run(..., q_raw=True)``).  Parameters are float32 on the
 unit: the q build converts the float32 value (``kf_q_from_f32``).
 :func:`synthetic_samples` recomputes the host port's synthetic sensor (kf_host_sensor.c).
 """
@@ -36,6 +38,11 @@ import numpy as np
 from kinefuse.host.errors import KinefuseError
 
 MSG_RAW, MSG_ORI, MSG_JOINT, MSG_EFFORTS, MSG_STATUS = 52500, 52501, 52502, 52503, 52504
+MSG_MEMORY_VECT = 249
+#: KF_HIL_MODE bits (firmware/app/kf_params.h): 1 direct float32 input, 2 raw Q quaternion out
+HIL_DIRECT, HIL_Q_RAW = 1, 2
+#: the raw-Q MEMORY_VECT: ver, type (kf_params.h KF_QRAW_VER, KF_QRAW_TYPE_Q)
+QRAW_VER, QRAW_TYPE_Q = 0x4B, 1
 UNIT_COMPONENT = 200
 FRAC_OUT_Q = None  # per filter: read from the model
 
@@ -209,13 +216,15 @@ def _split(data: bytes) -> list[bytes]:
 
 
 def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 100,
-            timeout: float = 10.0, key: bytes | None = None) -> dict[str, np.ndarray]:
+            timeout: float = 10.0, key: bytes | None = None, q_raw: bool = False) -> dict[str, np.ndarray]:
     """Send one HIL_SENSOR per sample (``window`` at a time, waiting for every answer before
     the next window: nothing can overflow) and collect the unit's answers.
 
     Returns arrays per sample: ``raw`` (acc, gyr, mag counts, flags), ``q`` (N, 4) float32 from
-    KF_ORIENTATION (NaN where none came), ``counter`` (sample_counter echoed), ``status``,
-    ``time_us`` echoed.  Raises KinefuseError when an answer is missing after ``timeout``."""
+    KF_ORIENTATION (NaN where none came), ``cov``, ``counter`` (sample_counter echoed),
+    ``status``, ``time_us`` echoed; with ``q_raw`` (a q build with ``KF_HIL_MODE`` bit 1 set)
+    also ``q_raw`` (N, 4) int64, the raw Q quaternion of the MEMORY_VECT after each
+    KF_ORIENTATION.  Raises KinefuseError when an answer is missing after ``timeout``."""
     frames = hil_frames(time_us, acc, gyr, mag_uT, mag_updated, key=key)
     n = len(frames)
     q = np.full((n, 4), np.nan, np.float32)
@@ -225,20 +234,33 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
     status = np.zeros(n, np.int64)
     raw = np.zeros((n, 9), np.int64)
     flags = np.zeros(n, np.int64)
+    qr = np.zeros((n, 4), np.int64)
     first_counter = None
     got_raw = got_ori = 0
+    got_qr = n if not q_raw else 0
+    last_ori = None                            # (index, sample_counter) of the newest KF_ORIENTATION
     session.poll(0)
     session.drain()                            # older frames (a sensor stream) are not answers
     for start in range(0, n, window):
         stop = min(n, start + window)
         session.send_bytes(b"".join(frames[start:stop]))
         deadline = time.monotonic() + timeout
-        while got_ori < stop or got_raw < stop:
+        while got_ori < stop or got_raw < stop or got_qr < stop:
             if time.monotonic() > deadline:
-                raise KinefuseError(f"HIL: {stop - min(got_raw, got_ori)} answers missing after {timeout} s "
+                raise KinefuseError(f"HIL: {stop - min(got_raw, got_ori, got_qr)} answers missing after {timeout} s "
                                     f"(samples {start}..{stop - 1})")
             session.poll(0.05)
             for _, f in session.drain():
+                if f.msgid == MSG_MEMORY_VECT and q_raw:
+                    m = f.msg
+                    if last_ori is None or m.ver != QRAW_VER or m.type != QRAW_TYPE_Q:
+                        continue
+                    # address: the low 16 bits of the sample counter (it follows its KF_ORIENTATION)
+                    i = last_ori[0] - ((last_ori[1] - m.address) & 0xFFFF)
+                    if 0 <= i < n:
+                        qr[i] = np.frombuffer(bytes(b & 0xFF for b in m.value[:16]), "<i4")
+                        got_qr += 1
+                    continue
                 if f.msgid not in (MSG_RAW, MSG_ORI):
                     continue
                 m = f.msg
@@ -260,8 +282,12 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
                     cov[i] = np.asarray(m.cov, np.float32)
                     status[i] = m.status
                     got_ori += 1
-    return {"q": q, "cov": cov, "counter": counters, "time_us": t_echo, "status": status,
-            "acc": raw[:, 0:3], "gyr": raw[:, 3:6], "mag": raw[:, 6:9], "flags": flags}
+                    last_ori = (i, m.sample_counter)
+    out = {"q": q, "cov": cov, "counter": counters, "time_us": t_echo, "status": status,
+           "acc": raw[:, 0:3], "gyr": raw[:, 3:6], "mag": raw[:, 6:9], "flags": flags}
+    if q_raw:
+        out["q_raw"] = qr
+    return out
 
 
 # ---------------------------------------------------------------------------------- model

@@ -63,4 +63,9 @@ uint32_t kf_hal_sensor_dropped(void);
  * with id = 1 stands in for it. */
 int kf_hal_sensor2_read(kf_raw_sample *out);
 
+/* Nothing to do in this main-loop turn (kf_app_poll returned 0): wait for the next event
+ * (received byte, clock tick) if the board can; must return within about a millisecond.
+ * Default: return at once (busy loop). */
+void kf_hal_idle(void);
+
 #endif /* KF_HAL_H */

@@ -27,3 +27,7 @@ __attribute__((weak)) int kf_hal_sensor2_read(kf_raw_sample *out)
     (void)out;
     return 0;    /* no second sensor on this board */
 }
+
+__attribute__((weak)) void kf_hal_idle(void)
+{
+}

@@ -338,7 +338,7 @@ static void handle_hil(kf_app *app, const mavlink_message_t *msg)
                         | (cg ? KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED : 0u)
                         | (cm ? KF_RAW_SAMPLE_FLAGS_MAG_CLIPPED : 0u)
                         | ((m.fields_updated & 0x1000u) ? KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID : 0u));
-    s.direct = (uint8_t)(app->values[KF_P_HIL_MODE].u == 1u);
+    s.direct = (uint8_t)((app->values[KF_P_HIL_MODE].u & KF_HIL_MODE_DIRECT) != 0u);
     if (!app->hil) {
         app->hil = 1u;         /* from now on the sensor is ignored (until reset) */
         kf_config_reset_filter(app);   /* no estimate mixing sensor and simulated motion; the

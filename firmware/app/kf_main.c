@@ -11,6 +11,8 @@ int main(void)
     kf_hal_init();
     kf_app_init(&g_app);
     for (;;) {
-        (void)kf_app_poll(&g_app);
+        if (!kf_app_poll(&g_app)) {
+            kf_hal_idle();         /* nothing to do this turn: wait for an interrupt */
+        }
     }
 }

@@ -23,7 +23,7 @@ const kf_param_desc kf_param_table[KF_PARAM_COUNT] = {
     KF_APP_ROW("KF_FILTER", KF_PT_UINT8, 5u, 0u, 255u, 0u),
     KF_APP_ROW("KF_MAG_ENABLE", KF_PT_UINT8, 1u, 0u, 1u, 0u),
     KF_APP_ROW("KF_STREAM_BOOT", KF_PT_UINT8, 1u, 0u, 1u, 0u),
-    KF_APP_ROW("KF_HIL_MODE", KF_PT_UINT8, 0u, 0u, 1u, 0u),
+    KF_APP_ROW("KF_HIL_MODE", KF_PT_UINT8, 0u, 0u, 3u, 0u),
     KF_APP_ROW("KF_SERIAL_NO", KF_PT_UINT32, 0x4B460001u, 0u, 0xFFFFFFFFu, 0u),
     KF_APP_ROW("KF_SIGNING", KF_PT_UINT8, 0u, 0u, 1u, KF_PF_READONLY),
     KF_APP_ROW("KF_JOINT_ID", KF_PT_UINT8, 0u, 0u, 14u, 0u),

@@ -62,7 +62,8 @@ enum {
     KF_P_FILTER,           /* KF_FILTER id of the running filter (0: none) */
     KF_P_MAG_ENABLE,       /* 0: never pass magnetometer readings to the filter (6D) */
     KF_P_STREAM_BOOT,      /* 1: stream from power-up (else wait for MAV_CMD_KF_STREAM) */
-    KF_P_HIL_MODE,         /* HIL_SENSOR input: 0 counts + calibration, 1 direct float32 */
+    KF_P_HIL_MODE,         /* HIL_SENSOR input, bits: KF_HIL_MODE_DIRECT (else counts +
+                            * calibration), KF_HIL_MODE_Q_RAW (q builds: also the raw quaternion) */
     KF_P_SERIAL_NO,        /* unit serial number */
     KF_P_SIGNING,          /* read-only: 1 when a signing key is set */
     KF_P_JOINT_ID,         /* KF_JOINT of a two-sensor unit (0: one sensor, no KF_JOINT_ANGLE) */
@@ -70,6 +71,14 @@ enum {
                             * mode only; values other than 0 are refused where it is not built */
     KF_P_APP_COUNT
 };
+
+/* KF_HIL_MODE bits */
+#define KF_HIL_MODE_DIRECT 1u   /* HIL_SENSOR values go to the filter as float32, no calibration */
+#define KF_HIL_MODE_Q_RAW  2u   /* fixed-point builds: after each HIL KF_ORIENTATION, a MEMORY_VECT
+                                 * with the filter's raw Q-format quaternion (kf_sample.c) */
+/* that MEMORY_VECT: ver and type (address = low 16 bits of sample_counter) */
+#define KF_QRAW_VER        0x4Bu  /* 'K': kinefuse's own layout, not common.xml's ver 1 types */
+#define KF_QRAW_TYPE_Q     1u     /* value = int32[4] little-endian: q_raw w, x, y, z */
 
 #define KF_P_CALIB_FIRST  KF_P_APP_COUNT
 #define KF_P_FILTER_FIRST (KF_P_CALIB_FIRST + KF_GEN_CALIB_PARAM_COUNT)

@@ -149,6 +149,28 @@ static void send_orientation(kf_app *app, uint64_t t, uint32_t counter)
     }
 }
 
+#if KF_NUMERIC_Q
+/* HIL with KF_HIL_MODE bit 1 (q builds): the filter's raw Q-format quaternion, all 32 bits of
+ * each component (KF_ORIENTATION's float32 keeps 24), right after KF_ORIENTATION, as MEMORY_VECT:
+ * address = low 16 bits of sample_counter, ver = KF_QRAW_VER, type = KF_QRAW_TYPE_Q, value =
+ * q_raw[0..3] (w, x, y, z) as little-endian int32; the filter's output, before any tare. */
+static void send_q_raw(kf_app *app, uint32_t counter)
+{
+    mavlink_message_t msg;
+    int8_t v[32];
+    memset(v, 0, sizeof v);
+    for (int i = 0; i < 4; i++) {
+        uint32_t u = (uint32_t)app->out.q_raw[i];
+        for (int b = 0; b < 4; b++) {
+            v[4 * i + b] = (int8_t)(uint8_t)(u >> (8 * b));
+        }
+    }
+    mavlink_msg_memory_vect_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg,
+                                        (uint16_t)(counter & 0xFFFFu), KF_QRAW_VER, KF_QRAW_TYPE_Q, v);
+    (void)kf_send(app, &msg);
+}
+#endif
+
 static void send_highres(kf_app *app, const kf_sample *s, uint8_t mag_valid)
 {
     mavlink_message_t msg;
@@ -287,6 +309,11 @@ void kf_app_sample(kf_app *app, const kf_sample *s)
     }
     if (app->filter >= 0 && (hil || (app->streaming && due(app->div_ori, &app->cnt_ori)))) {
         send_orientation(app, s->time_us, counter);
+#if KF_NUMERIC_Q
+        if (hil && (app->values[KF_P_HIL_MODE].u & KF_HIL_MODE_Q_RAW) != 0u) {
+            send_q_raw(app, counter);
+        }
+#endif
         if (app->two_sensors) {
             send_joint_angle(app, s->time_us, counter);   /* at the orientation rate */
         }

@@ -28,12 +28,14 @@ class Report:
     bitexact: list = field(default_factory=list)    # rows
     cost: list = field(default_factory=list)
     seconds: float = 0.0
+    firmware_speed: list = field(default_factory=list)   # per firmware loop: samples, seconds streaming
 
     def as_dict(self) -> dict:
         return {"cases": self.cases, "filters": self.filters,
                 "errors": [{"filter": f, "case": c, "system": s, **v}
                            for (f, c, s), v in self.errors.items()],
-                "bitexact": self.bitexact, "cost": self.cost, "seconds": self.seconds}
+                "bitexact": self.bitexact, "cost": self.cost, "seconds": self.seconds,
+                "firmware_speed": self.firmware_speed}
 
     @property
     def all_bitexact(self) -> bool:
@@ -51,7 +53,12 @@ def rmse_errors(q_est: np.ndarray, case: Case) -> dict[str, float]:
 
 def build_report(cases: list[Case], filters: list[str], loop_names: dict[str, list[str]] | None = None,
                  with_ref: bool = False, qemu: bool = True, firmware: bool = False,
-                 progress: Callable[[str], None] | None = None) -> Report:
+                 progress: Callable[[str], None] | None = None, pil_samples: int | None = None,
+                 sil_samples: int = 0, jobs: int = 1) -> Report:
+    """Every filter and case through the loops of its number systems.  ``firmware``: also the
+    unit application (SIL; PIL when ``qemu``) on the first ``sil_samples`` / ``pil_samples``
+    samples of each case (0: the whole case; ``pil_samples`` None: ``firmware.PIL_SAMPLES``),
+    one unit per loop, ``jobs`` loops at a time."""
     t0 = time.perf_counter()
     rep = Report([c.name for c in cases], filters)
     for name in filters:
@@ -83,29 +90,99 @@ def build_report(cases: list[Case], filters: list[str], loop_names: dict[str, li
                 if first is not None:
                     q = loops.decode(name, first, outs[first])["q"]
                     rep.errors[(name, case.name, system)] = rmse_errors(q, case)
-                if firmware:
-                    _firmware_rows(rep, name, system, case, qemu, progress)
+    if firmware:
+        _firmware_rows(rep, cases, filters, qemu, progress, pil_samples, sil_samples, jobs)
     rep.seconds = time.perf_counter() - t0
     return rep
 
 
-def _firmware_rows(rep: Report, name: str, system: str, case: Case, qemu: bool, progress) -> None:
-    """The unit application in the loop (SIL; PIL when ``qemu``) against the unit model."""
+def _firmware_rows(rep: Report, cases: list[Case], filters: list[str], qemu: bool, progress,
+                   pil_samples: int | None, sil_samples: int, jobs: int) -> None:
+    """The unit application in the loop (SIL; PIL when ``qemu``) against the unit model: one
+    unit per loop running every filter and case; the model's answers computed once per filter,
+    number system, case and length."""
+    from concurrent.futures import ThreadPoolExecutor
+
     from kinefuse.hil_tests.harness import firmware as fw
-    for lp in fw.firmware_loops(name, system):
-        if lp.startswith("pil-") and not qemu:
-            continue
-        if progress:
-            progress(f"{name} / {case.name}: {lp}")
-        n = fw.PIL_SAMPLES if lp.startswith("pil-") else min(case.n, 3000)
-        row = {"filter": name, "case": case.name, "system": system, "model": f"{system} unit model",
-               "loop": lp, "samples": n, "mismatch": None, "error": None}
+    if pil_samples is None:
+        pil_samples = fw.PIL_SAMPLES
+    by_loop: dict[str, list[tuple[str, str]]] = {}
+    for name in filters:
+        for system in loops.systems(name):
+            for lp in fw.firmware_loops(name, system):
+                if lp.startswith("pil-") and not qemu:
+                    continue
+                by_loop.setdefault(lp, []).append((name, system))
+    # the models' answers first, in this thread: generated Python models hold the GIL for long
+    # stretches, which would starve the streaming threads (each poll of a unit waits for it)
+    lengths = {lp: (pil_samples if lp.startswith("pil-") else sil_samples) for lp in by_loop}
+    cache: dict = {}
+    for lp, todo in by_loop.items():
+        for name, system in todo:
+            for case in cases:
+                hil = fw.HilInput.from_case(case, lengths[lp] or None)
+                key = (name, system, case.name, len(hil.time_us))
+                if key not in cache:
+                    if progress:
+                        progress(f"{name} / {case.name}: {system} unit model")
+                    cache[key] = fw.compared_outputs(system, fw.expected(name, system, hil), True)
+
+    def expected(name, system, case, hil):
+        return cache[(name, system, case.name, len(hil.time_us))]
+
+    def run(lp):
+        rows = []
+        n = lengths[lp]
         try:
-            m, _got, _ref = fw.compare_unit(lp, name, case, n=n)
-            row["mismatch"] = m.as_dict() if m else None
+            runner = fw.UnitRunner(lp, timeout=120.0).__enter__()
         except Exception as exc:            # reported in the table, not hidden
-            row["error"] = f"{type(exc).__name__}: {exc}"
-        rep.bitexact.append(row)
+            for name, system in by_loop[lp]:
+                rows += [_fw_row(name, c, system, lp, 0, error=f"{type(exc).__name__}: {exc}") for c in cases]
+            return rows, None
+        try:
+            for name, system in by_loop[lp]:
+                for case in cases:
+                    if progress:
+                        progress(f"{name} / {case.name}: {lp}")
+                    hil = fw.HilInput.from_case(case, n or None)
+                    row = _fw_row(name, case, system, lp, len(hil.time_us))
+                    try:
+                        t0 = runner.seconds
+                        got = fw.compared_outputs(system, runner.run(name, hil), False)
+                        row["seconds"] = runner.seconds - t0
+                        inputs = {"time_us": hil.time_us, "acc": hil.acc, "gyr": hil.gyr,
+                                  "mag": hil.mag, "mag_valid": hil.mag_valid}
+                        m = compare.compare(f"{system} unit model", expected(name, system, case, hil), lp, got, inputs)
+                        row["mismatch"] = m.as_dict() if m else None
+                    except Exception as exc:    # reported in the table, not hidden
+                        row["error"] = f"{type(exc).__name__}: {exc}"
+                    rows.append(row)
+            speed = {"loop": lp, "samples": runner.samples, "seconds": runner.seconds,
+                     "samples_per_s": runner.samples / runner.seconds if runner.seconds else None}
+        finally:
+            runner.__exit__(None, None, None)
+        return rows, speed
+
+    order = sorted(by_loop, key=lambda lp: not lp.startswith("pil-"))   # the long ones first
+    for lp in order:
+        if lp.startswith("pil-"):
+            if progress:
+                progress(f"building the {lp} image")
+            try:
+                fw.pil_image(lp)            # cross-built here, not by several threads at once
+            except Exception:               # noqa: S110 - run() reports it per row
+                pass
+    with ThreadPoolExecutor(max(1, jobs)) as pool:
+        results = list(pool.map(run, order))
+    for rows, speed in results:
+        rep.bitexact.extend(rows)
+        if speed is not None:
+            rep.firmware_speed.append(speed)
+
+
+def _fw_row(name, case, system, lp, n, error=None) -> dict:
+    return {"filter": name, "case": case.name, "system": system, "model": f"{system} unit model",
+            "loop": lp, "samples": n, "mismatch": None, "error": error}
 
 
 def write_markdown(rep: Report, out_dir: Path, png_name: str | None) -> Path:
@@ -142,6 +219,14 @@ def write_markdown(rep: Report, out_dir: Path, png_name: str | None) -> Path:
         lines.append(f"| {f} | {s} | {lp} vs {rows[0]['model']} | {len(rows)} | "
                      f"{sum(r['samples'] for r in rows)} | {'yes' if not bad else 'NO'} | {first} |")
     lines.append("")
+    if rep.firmware_speed:
+        lines += ["Firmware loops (unit application, HIL_SENSOR in over its UART): samples streamed per "
+                  "second of streaming (configuration excluded).", "",
+                  "| loop | samples | seconds | samples/s |", "|---|---:|---:|---:|"]
+        for r in rep.firmware_speed:
+            sps = "" if r["samples_per_s"] is None else f"{r['samples_per_s']:,.0f}"
+            lines.append(f"| {r['loop']} | {r['samples']:,} | {r['seconds']:.1f} | {sps} |")
+        lines.append("")
     if rep.cost:
         lines += ["## Cost per update", "",
                   "Instructions exact (QEMU); cycles and µs at 64 MHz are a Cortex-M4 table estimate; "

@@ -57,6 +57,20 @@ class Case:
                                    t=self.t[start:stop] - self.t[start])
 
 
+def concat(cases: list[Case], name: str | None = None) -> Case:
+    """One case from several, in order (the rate of the first; each piece keeps its own ``dt``,
+    so a filter continues from the previous piece's state: the jumps are part of the case)."""
+    t, off = [], 0.0
+    for c in cases:
+        t.append(c.t - c.t[0] + off)
+        off = t[-1][-1] + float(c.inputs["dt"][-1])
+    return Case(name=name or "+".join(c.name for c in cases), source="+".join(sorted({c.source for c in cases})),
+                rate_hz=cases[0].rate_hz,
+                inputs={k: np.concatenate([c.inputs[k] for c in cases]) for k in cases[0].inputs},
+                q_true=np.concatenate([c.q_true for c in cases]),
+                movement=np.concatenate([c.movement for c in cases]), t=np.concatenate(t))
+
+
 def _inputs(gyr, acc, mag, mag_valid, dt) -> dict[str, np.ndarray]:
     return {"gyr": np.asarray(gyr, np.float64), "acc": np.asarray(acc, np.float64),
             "mag": np.asarray(mag, np.float64), "mag_valid": np.asarray(mag_valid, bool),

@@ -19,14 +19,23 @@ def register(subparsers) -> None:
     r.add_argument("--filters", default=None, help="comma-separated filters (default: every IMU filter)")
     r.add_argument("--scenarios", default=None, help="comma-separated simulator scenarios")
     r.add_argument("--seconds", type=float, default=None, help="keep only the first SECONDS of each scenario")
+    r.add_argument("--broad-seconds", type=float, default=None,
+                   help="keep only the first SECONDS of the BROAD trial (default: --seconds; 0: the whole trial)")
     r.add_argument("--broad", default=None,
                    help="BROAD trial file added to the set (default: first shared/bundled trial; 'none')")
     r.add_argument("--seed", type=int, default=1, help="simulator seed (default 1)")
     r.add_argument("--no-qemu", action="store_true", help="skip the Cortex-M loops")
     r.add_argument("--with-ref", action="store_true", help="also score the float64 reference (slow)")
     r.add_argument("--firmware", action="store_true",
-                   help="also run the unit application: SIL (host build, pty) and PIL (QEMU, "
-                        "first samples of each scenario) against the unit model")
+                   help="also run the unit application: SIL (host build f32/q, pty) and PIL (QEMU M4F "
+                        "f32/q, M0 q) against the unit model, every output bit (q: the raw Q quaternion)")
+    r.add_argument("--pil-samples", type=int, default=None, metavar="N",
+                   help="--firmware: PIL runs the first N samples of each case (default 300; 0: whole cases; "
+                        "QEMU's UART streams a few hundred samples/s)")
+    r.add_argument("--sil-samples", type=int, default=0, metavar="N",
+                   help="--firmware: SIL runs the first N samples of each case (default 0: whole cases)")
+    r.add_argument("--jobs", type=int, default=1,
+                   help="--firmware: firmware loops run at a time (one unit each; default 1)")
     r.add_argument("--cost", default=None, metavar="JSON",
                    help="include a cost table from `kinefuse bench cost --json` output")
     r.add_argument("--json", action="store_true", help="one JSON object on stdout")
@@ -44,6 +53,10 @@ def run_report(args: argparse.Namespace) -> int:
         raise KinefuseError(f"unknown IMU filter {bad[0]!r} (available: {', '.join(loops.imu_filters())})")
     if args.seconds is not None and not args.seconds > 0:
         raise KinefuseError("--seconds must be positive")
+    if args.broad_seconds is not None and args.broad_seconds < 0:
+        raise KinefuseError("--broad-seconds must be positive, or 0 for the whole trial")
+    if (args.pil_samples is not None and args.pil_samples < 0) or args.sil_samples < 0 or args.jobs < 1:
+        raise KinefuseError("--pil-samples and --sil-samples must be >= 0, --jobs >= 1")
     qemu = not args.no_qemu
     if qemu:
         from kinefuse.hil_tests.qemu import qemu_unavailable
@@ -73,13 +86,15 @@ def run_report(args: argparse.Namespace) -> int:
             if not Path(path).exists():
                 raise KinefuseError(f"BROAD trial {path} not found")
             case = scenarios.broad_case(path)
-            cases.append(case.head(int(seconds * case.rate_hz)) if seconds else case)
+            keep = seconds if args.broad_seconds is None else args.broad_seconds
+            cases.append(case.head(int(keep * case.rate_hz)) if keep else case)
         if args.firmware:
             from kinefuse.hil_tests.harness.firmware import firmware_missing
             if firmware_missing():
                 raise KinefuseError(firmware_missing())
         rep = report.build_report(cases, filters, with_ref=args.with_ref, qemu=qemu,
-                                  firmware=args.firmware,
+                                  firmware=args.firmware, pil_samples=args.pil_samples,
+                                  sil_samples=args.sil_samples, jobs=args.jobs,
                                   progress=lambda s: bar.update(task, description=s))
     rep.cost = cost
     png = report.write_png(rep, out)

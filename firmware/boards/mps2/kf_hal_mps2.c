@@ -7,6 +7,12 @@
  * Storage is RAM in .noinit: it survives kf_hal_reboot() but not a power cycle (a new QEMU).
  * The board's state lives in this file's statics: one board, one instance.  kf_hal_micros()
  * is for thread context (not interrupt handlers).
+ *
+ * Idle (kf_hal_idle): WFI until the next interrupt - SysTick within 1 ms, or UART0 RX (its
+ * interrupt is enabled only to wake the core; the handler just clears it, the byte is still
+ * read by polling).  Under QEMU this matters for speed: a core spinning on the UART's status
+ * register takes QEMU's global lock for every read, and the thread that delivers received
+ * bytes (one at a time: the UART has a one-byte buffer) waits for that lock.
  */
 #include <stdint.h>
 #include <string.h>
@@ -37,9 +43,27 @@ void SysTick_Handler(void)
     g_millis = g_millis + 1u;
 }
 
+void UART0_RX_Handler(void)
+{
+    KF_UART0->intstatus = KF_CMSDK_UART_INT_RX;   /* write 1 to clear: the line drops */
+}
+
+void kf_hal_idle(void)
+{
+    /* with interrupts masked a pending one still ends WFI: no byte can slip in between the
+     * check and the wait; the handler runs when they are unmasked */
+    __asm__ volatile("cpsid i" ::: "memory");
+    if (!kf_cmsdk_uart_rx_ready(KF_UART0)) {
+        __asm__ volatile("wfi" ::: "memory");
+    }
+    __asm__ volatile("cpsie i" ::: "memory");
+}
+
 void kf_hal_init(void)
 {
     kf_cmsdk_uart_init(KF_UART0, MPS2_SYSCLK_HZ, KF_UART_BAUD);
+    kf_cmsdk_uart_rx_irq(KF_UART0, 1);
+    NVIC_ISER0 = 1u << MPS2_IRQ_UART0_RX;
 
     g_millis = 0u;
     g_last_micros = 0u;

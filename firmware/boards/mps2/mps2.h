@@ -22,6 +22,9 @@
 #define SCS_ICSR      (*(volatile uint32_t *)0xE000ED04u)  /* interrupt control and state */
 #define SCS_AIRCR     (*(volatile uint32_t *)0xE000ED0Cu)  /* application interrupt/reset control */
 #define SCS_CPACR     (*(volatile uint32_t *)0xE000ED88u)  /* coprocessor access (ARMv7-M only) */
+#define NVIC_ISER0    (*(volatile uint32_t *)0xE000E100u)  /* interrupt set-enable, IRQ 0..31 */
+
+#define MPS2_IRQ_UART0_RX  0u          /* QEMU hw/arm/mps2.c: UART0 RX = IRQ 0, TX = IRQ 1 */
 
 #define SYST_CSR_ENABLE    (1u << 0)
 #define SYST_CSR_TICKINT   (1u << 1)

@@ -34,12 +34,14 @@ void SVC_Handler(void) __attribute__((weak, alias("Default_Handler")));
 void DebugMon_Handler(void) __attribute__((weak, alias("Default_Handler")));
 void PendSV_Handler(void) __attribute__((weak, alias("Default_Handler")));
 void SysTick_Handler(void) __attribute__((weak, alias("Default_Handler")));
+void UART0_RX_Handler(void) __attribute__((weak, alias("Default_Handler")));
 
 typedef void (*kf_vector)(void);
 
-/* The 16 ARMv6-M/ARMv7-M core exceptions; the boards' peripheral IRQs stay unused (polling). */
+/* The 16 ARMv6-M/ARMv7-M core exceptions, then IRQ 0 (UART0 RX: the board HAL's idle wait
+ * wakes on it); the other peripheral IRQs stay unused (polling) and disabled. */
 __attribute__((section(".vectors"), used))
-const kf_vector kf_vector_table[16] = {
+const kf_vector kf_vector_table[17] = {
     (kf_vector)(uintptr_t)&__stack,
     Reset_Handler,
     NMI_Handler,
@@ -53,6 +55,7 @@ const kf_vector kf_vector_table[16] = {
     0,
     PendSV_Handler,
     SysTick_Handler,
+    UART0_RX_Handler,
 };
 
 #ifdef KF_NEWLIB_CRT0

@@ -1,0 +1,64 @@
+"""``kinefuse sil report``: the command users run for the full SIL/PIL comparison.
+
+Run end to end on a short case (host loops and the unit application over its pty, no QEMU, to
+stay quick; the PIL loops are covered by test_pil_firmware.py and test_qemu_bitexact.py): exit
+status, the JSON summary, the markdown table; a mismatch and a loop error must show as "NO" and
+make the command fail; bad arguments are one-line errors.
+"""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from kinefuse.hil_tests.harness import compare, firmware, report
+from kinefuse.host.cli import main
+
+
+@pytest.mark.skipif(firmware.firmware_missing() is not None, reason=str(firmware.firmware_missing()))
+def test_sil_report_end_to_end(tmp_path, capsys):
+    rc = main(["sil", "report", "--filters", "madgwick,flagship", "--scenarios", "slow_rotation",
+               "--seconds", "1.5", "--broad", "none", "--no-qemu", "--firmware", "--json",
+               "--out", str(tmp_path)])
+    out = json.loads(capsys.readouterr().out.strip().splitlines()[-1])
+    assert rc == 0 and out["all_bitexact"]
+    rows = out["bitexact"]
+    loops_seen = {(r["filter"], r["loop"]) for r in rows}
+    for name in ("madgwick", "flagship"):
+        # the generated C on the host and the unit application, both number systems
+        assert {(name, "host-f32"), (name, "host-q"), (name, "sil-f32"), (name, "sil-q")} <= loops_seen
+    assert all(r["samples"] == 150 and r["mismatch"] is None and r["error"] is None for r in rows)
+    md = (tmp_path / "sil_report.md").read_text()
+    assert "| flagship | q | sil-q vs q unit model | 1 | 150 | yes |" in md
+    full = json.loads((tmp_path / "sil_report.json").read_text())
+    err = {(e["filter"], e["system"]): e for e in full["errors"]}
+    # an honest error figure, not NaN or zero: the filters track the simulated rotation
+    assert 0.0 < err[("flagship", "f32")]["total"] < 5.0
+    assert (tmp_path / "sil_report.png").exists()
+
+
+def test_report_marks_mismatches_and_errors(tmp_path):
+    rep = report.Report(["case"], ["madgwick"])
+    ok = {"filter": "madgwick", "case": "case", "system": "q", "model": "q model", "loop": "host-q",
+          "samples": 10, "mismatch": None, "error": None}
+    rep.bitexact = [ok]
+    assert rep.all_bitexact
+    bad = dict(ok, loop="sil-q", mismatch=compare.Mismatch("q model", "sil-q", 7, 1, 10, ["q_raw"]).as_dict())
+    rep.bitexact = [ok, bad]
+    assert not rep.all_bitexact
+    md = report.write_markdown(rep, tmp_path, None).read_text()
+    assert "| NO | case sample 7 (q_raw)" in md and "| yes |" in md
+    rep.bitexact = [ok, dict(ok, loop="pil-m0-q", error="KinefuseError: HIL: 3 answers missing")]
+    assert not rep.all_bitexact
+    assert "| NO |" in report.write_markdown(rep, tmp_path, None).read_text()
+
+
+@pytest.mark.parametrize("argv,msg", [
+    (["--filters", "nosuch"], "unknown IMU filter"),
+    (["--seconds", "0"], "--seconds must be positive"),
+    (["--firmware", "--pil-samples", "-1"], "--pil-samples and --sil-samples must be >= 0"),
+])
+def test_sil_report_bad_arguments(tmp_path, capsys, argv, msg):
+    rc = main(["sil", "report", "--no-qemu", "--out", str(tmp_path)] + argv)
+    err = capsys.readouterr().err
+    assert rc == 2 and msg in err and "Traceback" not in err
