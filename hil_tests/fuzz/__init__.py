@@ -5,8 +5,8 @@ parameter in range while running and after a power cut at any storage write, res
 never invented); it links the real application sources (``firmware/app``, the generated
 filters) with a RAM HAL.
 
-* libFuzzer (clang, ``-fsanitize=fuzzer,address,undefined``), a bounded job, not part of the
-  test suite::
+* libFuzzer (clang, ``-fsanitize=fuzzer,address,undefined``), a bounded job (the test suite
+  runs it for 30 s when clang is installed, as CI does; longer runs by hand)::
 
       python -m kinefuse.hil_tests.fuzz --seconds 600 [--jobs 2] [--corpus DIR]
 
