@@ -371,6 +371,170 @@ def quat_kf(x, chk, q_pred: Quat, k_proc, z: Quat, R, do_update, p_max: float = 
     return q_new, pack4(P_new)
 
 
+# ----------------------------------------------------------------------------------------------
+# the same filter in square-root form (VAK): the state carries a lower Cholesky factor S̃ of P̃
+#
+# Why (fixed point): P̃ spans 8 s_ref (start) to ~1e-4 s_ref (steady state at BROAD's 286 Hz,
+# per-step process noise k ~ 1e-7 s_ref), and its steady state is the balance of two per-step
+# changes of size k.  Stored in one int32 format for |P̃| <= 16 (Q4.27... Q5.26, 1.5e-8) those
+# changes are a few LSB, and their products (Yᵀ Y ~ 7e-9) round to 0: P̃ froze 20-60 % away
+# from the reference, and with it the Kalman gain (the q deviation of up to 17°).  The factor
+# halves the dynamic range: |S̃| <= 4 (Q2.29, 1.9e-9), steady state ~0.02 with per-step
+# changes of ~1e3 LSB, and P̃ is never formed except for the innovation covariance, where
+# P̃ + R̃ ~ R̃ needs no small-value precision.
+
+S_MAX = P_MAX ** 0.5              # |S̃_ij| <= sqrt(P̃_ii) <= sqrt(P_MAX) = 4: Q2.29
+U_FLOOR = 2.0 ** -18              # λmin(I − GᵀG) >= 1/(1 + λmax(P̃)/R_FLOOR) >= 1/(1 + 64·2^12)
+W_FINE = 0.25                     # |Gᵀ y| carried by the fine correction path (see sr_update)
+Y_FINE = 8.0                      # |y_i| carried by the fine path (BROAD: max 3.6)
+S0_FLOOR = 2.0 ** -17             # P̃0 = f R̃ >= R_FLOOR / 22 > 2^-17 (f >= 8/176, tr R̃ <= 176)
+
+
+def unpack_tril(s):
+    """Lower-triangular 4×4 rows from the packed rows 00; 10 11; 20 21 22; 30 31 32 33
+    (structural zeros as the float literal 0.0)."""
+    out, k = [[0.0] * 4 for _ in range(4)], 0
+    for i in range(4):
+        for j in range(i + 1):
+            out[i][j] = s[k]
+            k += 1
+    return out
+
+
+def pack_tril(S):
+    return tuple(S[i][j] for i in range(4) for j in range(i + 1))
+
+
+def sr_predict(S, q: Quat, omega: Vec3, dt, u_g, s_max: float = S_MAX):
+    """S̃⁻ (lower triangular) with S̃⁻S̃⁻ᵀ = Φ P̃ Φᵀ + u_g² M(q) M(q)ᵀ (:func:`kf_predict`,
+    k = u_g²): Givens triangularisation of the rows of [Φ S̃ | u_g M(q)]ᵀ.
+    Φ S̃ = S̃ + Ω S̃ (Ω = Φ − I, entries ±h): the increment Ω S̃ is formed on its own so that the
+    sum S̃ + Ω S̃ needs no rounding (both in Q2.29 and finer).  Bounds: every row of Φ S̃ and of
+    the rotated pre-array has norm sqrt(P̃⁻_ii) <= S_MAX (P̃⁻ <= P_MAX, as the plain form
+    assumes); |u_g M_ij| <= u_g <= 4."""
+    from kinefuse.codegen.estimators.givens import givens_triangularise
+    hx, hy, hz = half_step(omega, dt)
+    Om = [[0.0, -hx, -hy, -hz],
+          [hx, 0.0, hz, -hy],
+          [hy, -hz, 0.0, hx],
+          [hz, hy, -hx, 0.0]]
+    FS = [[None] * 4 for _ in range(4)]
+    for i in range(4):
+        for j in range(4):
+            terms = [Om[i][k] * S[k][j] for k in range(j, 4) if k != i]
+            if not terms:
+                v = S[i][j]
+            elif _is_const_zero(S[i][j]):
+                v = _sum(terms)
+            else:
+                v = S[i][j] + _sum(terms)
+            FS[i][j] = assume(v, -s_max, s_max)
+    Mq = m_matrix(q)
+    rows = [[FS[i][j] for i in range(4)] for j in range(4)]           # columns of Φ S̃
+    rows += [[assume(u_g * Mq[i][c], -s_max, s_max) for i in range(4)] for c in range(3)]
+    Rt = givens_triangularise(rows, [s_max] * 4)
+    return [[Rt[j][i] if j <= i else 0.0 for j in range(4)] for i in range(4)]
+
+
+def sr_update(x: Quat, S, z: Quat, R, floor: float = R_FLOOR, s_max: float = S_MAX,
+              r_bound: float = 2.0 * R_HEAD_MAX, y_max: float = Y_MAX):
+    """The Kalman update of :func:`kf_identity_update` (H = I) on the factor:
+    P̃⁻ = S̃ S̃ᵀ;  P̃⁻ + R̃ = L Lᵀ;  G = L⁻¹ S̃;  y = L⁻¹ ν;
+    x⁺ = x + S̃ Gᵀ y  (= x + K ν: K = P̃⁻ (P̃⁻ + R̃)⁻¹ = S̃ Gᵀ L⁻¹);
+    S̃⁺ = S̃ U with U Uᵀ = I − GᵀG  (S̃ (I − GᵀG) S̃ᵀ = P̃⁻ − P̃⁻ (P̃⁻ + R̃)⁻¹ P̃⁻).
+    G and U are lower triangular (so is S̃⁺).  Bounds, all mathematical: GᵀG = S̃ᵀ(S̃S̃ᵀ + R̃)⁻¹S̃
+    <= I, so |G_ij| <= 1 and the entries of GᵀG, U are within [-1, 1]; λmin(I − GᵀG) >=
+    U_FLOOR; |S̃⁺_ij| <= sqrt(P̃⁺_ii) <= S_MAX.
+    Q formats of the correction: S̃ Gᵀ y is ~3e-5 in steady state, but its interval bound
+    (|S̃| <= 4, |y| <= 128) would put it in Q11.20.  It is split exactly into a fine part
+    S̃ w_f, w_f = clamp(Gᵀ y_c, ±W_FINE), y_c = clamp(y, ±Y_FINE) (products <= 1: Q0.31), and
+    the rest, which is exactly 0 unless |y_i| > Y_FINE or |(Gᵀ y_c)_j| > W_FINE (start-up),
+    and clamped where the final clamp at ±2 makes that exact.  Returns (x⁺ unnormalised, S̃⁺)."""
+    P = [[None] * 4 for _ in range(4)]
+    for i in range(4):
+        for j in range(i, 4):
+            v = assume(_sum(S[i][k] * S[j][k] for k in range(i + 1)), -s_max ** 2, s_max ** 2)
+            P[i][j] = P[j][i] = v
+    Sinn = [[P[i][j] + R[i][j] for j in range(4)] for i in range(4)]
+    L, inv = cholesky4(Sinn, floor, (s_max ** 2 + r_bound) ** 0.5)
+    G = [[0.0] * 4 for _ in range(4)]
+    for j in range(4):
+        for i in range(j, 4):
+            acc = S[i][j]
+            for k in range(j, i):
+                acc = acc - L[i][k] * G[k][j]
+            G[i][j] = assume(acc * inv[i], -1.0, 1.0)
+    nu = [z[i] - x[i] for i in range(4)]
+    y = forward_solve4(L, inv, nu, y_max)
+    # correction S̃ Gᵀ y, split for the fixed-point formats (docstring)
+    yc = [clamp(v, -Y_FINE, Y_FINE) for v in y]
+    yr = [v - c_ for v, c_ in zip(y, yc)]
+    v_ = [_sum(G[i][j] * yc[i] for i in range(j, 4)) for j in range(4)]
+    wf = [clamp(v, -W_FINE, W_FINE) for v in v_]
+    wm = [v - f for v, f in zip(v_, wf)]
+    wr = [_sum(G[i][j] * yr[i] for i in range(j, 4)) for j in range(4)]
+    fine_max = 4.0 * s_max * W_FINE
+    big = 3.0 + fine_max           # |x + S̃ w_f| <= 1 + fine_max: beyond ±big the clip at ±2 decides
+    xs = []
+    for i in range(4):
+        df = _sum(S[i][j] * wf[j] for j in range(i + 1))
+        dm = clamp(_sum(S[i][j] * wm[j] for j in range(i + 1)), -big, big)
+        dr = clamp(_sum(S[i][j] * wr[j] for j in range(i + 1)), -big, big)
+        xs.append(clamp((x[i] + df) + clamp(dm + dr, -big, big), -2.0, 2.0))
+    # S̃⁺ = S̃ U, U = chol(I − GᵀG), written with the small quantities on their own:
+    # e_j = 1 − U_jj², v_j = 1 − U_jj = e_j / (1 + U_jj) and S̃⁺_ij = (S̃_ij − S̃_ij v_j) + ...,
+    # so that neither 1 − e nor U_jj ~ 1 − 1e-4 carries the per-step decrement (binary32
+    # would keep 2-3 of its digits)
+    E = [[None] * 4 for _ in range(4)]
+    for i in range(4):
+        for j in range(i, 4):
+            gg = _sum(G[k][i] * G[k][j] for k in range(j, 4))
+            E[i][j] = E[j][i] = assume(gg, 0.0 if i == j else -1.0, 1.0)
+    U = [[0.0] * 4 for _ in range(4)]
+    v = [None] * 4
+    for j in range(4):
+        e = E[j][j]
+        for k in range(j):
+            e = e + U[j][k] * U[j][k]
+        e = assume(e, 0.0, 1.0 - U_FLOOR)      # λmin(I − GᵀG) >= U_FLOOR
+        ujj = assume(sqrt(fmax(1.0 - e, U_FLOOR)), U_FLOOR ** 0.5, 1.0)
+        v[j] = assume(e / (1.0 + ujj), 0.0, 1.0)
+        inv = assume(1.0 / ujj, 1.0, U_FLOOR ** -0.5)
+        for i in range(j + 1, 4):
+            acc = -E[i][j]
+            for k in range(j):
+                acc = acc - U[i][k] * U[j][k]
+            U[i][j] = assume(acc * inv, -1.0, 1.0)
+    Sn = [[0.0] * 4 for _ in range(4)]
+    for i in range(4):
+        for j in range(i + 1):
+            d = S[i][j] - S[i][j] * v[j]
+            if i > j:
+                d = d + _sum(S[i][k] * U[k][j] for k in range(j + 1, i + 1))
+            Sn[i][j] = assume(d, -s_max, s_max)
+    return Quat(*xs), Sn
+
+
+def sr_quat_kf(x, chk, q_pred: Quat, u_g, z: Quat, R, do_update):
+    """:func:`quat_kf` in square-root form: predict + (optional) update; returns
+    (q, S̃ packed lower triangular).  ``u_g`` = sqrt of the per-step process noise k."""
+    S = unpack_tril(x.S)
+    Sm = sr_predict(S, Quat(*x.q), chk.gyr, chk.dt, u_g)
+    xn, Sn = sr_update(q_pred, Sm, z, R)
+    q_up = xn.normalized()
+    q_new = vselect(do_update, q_up, q_pred)
+    S_new = [[select(do_update, Sn[i][j], Sm[i][j]) if j <= i else 0.0 for j in range(4)]
+             for i in range(4)]
+    return q_new, pack_tril(S_new)
+
+
+def initial_factor(R):
+    """S̃0: the lower Cholesky factor of :func:`initial_covariance` (R̃ scaled to trace <= 8).
+    P̃0 >= R_FLOOR/22 > S0_FLOOR, so the pivot floor never binds; |S̃0_ij| <= sqrt(8)."""
+    L, _ = cholesky4(unpack4(initial_covariance(R)), S0_FLOOR, P0_TRACE ** 0.5)
+    return pack_tril(L)
+
+
 def initial_covariance(R):
     """P̃ of an initialisation: the measurement covariance R̃ of that sample, scaled down (a PSD
     matrix stays PSD) so that its trace is at most P0_TRACE.  Keeps the covariance within the
