@@ -390,6 +390,17 @@ Y_FINE = 8.0                      # |y_i| carried by the fine path (BROAD: max 3
 S0_FLOOR = 2.0 ** -17             # P̃0 = f R̃ >= R_FLOOR / 22 > 2^-17 (f >= 8/176, tr R̃ <= 176)
 
 
+def sr_state_var(p_max: float = P_MAX):
+    """The state field S of a square-root quaternion filter (packed lower triangle, identity
+    at start), |S̃_ij| <= sqrt(p_max)."""
+    from kinefuse.codegen.estimator import Var
+    s_max = p_max ** 0.5
+    return Var("S", 10, -s_max, s_max, "sqrt(s_ref)",
+               "lower Cholesky factor of the state covariance (P = S Sᵀ), rows 00; 10 11; "
+               "20 21 22; 30 31 32 33, in units of sqrt(s_ref) (see the filter's docstring)",
+               init=(1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0))
+
+
 def unpack_tril(s):
     """Lower-triangular 4×4 rows from the packed rows 00; 10 11; 20 21 22; 30 31 32 33
     (structural zeros as the float literal 0.0)."""
@@ -515,12 +526,17 @@ def sr_update(x: Quat, S, z: Quat, R, floor: float = R_FLOOR, s_max: float = S_M
     return Quat(*xs), Sn
 
 
-def sr_quat_kf(x, chk, q_pred: Quat, u_g, z: Quat, R, do_update):
+def sr_quat_kf(x, chk, q_pred: Quat, u_g, z: Quat, R, do_update, p_max: float = P_MAX,
+               r_bound: float = 2.0 * R_HEAD_MAX):
     """:func:`quat_kf` in square-root form: predict + (optional) update; returns
-    (q, S̃ packed lower triangular).  ``u_g`` = sqrt of the per-step process noise k."""
+    (q, S̃ packed lower triangular).  ``u_g`` = sqrt of the per-step process noise k (<= 4);
+    ``p_max`` bounds P̃ = S̃ S̃ᵀ as in :func:`quat_kf` (|S̃_ij| <= sqrt(p_max): the state's
+    declared range, see :func:`sr_state_var`), ``r_bound`` the entries of R̃ (R̃ >= R_FLOOR I
+    is required, as for :func:`quat_kf`)."""
+    s_max = p_max ** 0.5
     S = unpack_tril(x.S)
-    Sm = sr_predict(S, Quat(*x.q), chk.gyr, chk.dt, u_g)
-    xn, Sn = sr_update(q_pred, Sm, z, R)
+    Sm = sr_predict(S, Quat(*x.q), chk.gyr, chk.dt, u_g, s_max)
+    xn, Sn = sr_update(q_pred, Sm, z, R, R_FLOOR, s_max, r_bound)
     q_up = xn.normalized()
     q_new = vselect(do_update, q_up, q_pred)
     S_new = [[select(do_update, Sn[i][j], Sm[i][j]) if j <= i else 0.0 for j in range(4)]
@@ -528,9 +544,12 @@ def sr_quat_kf(x, chk, q_pred: Quat, u_g, z: Quat, R, do_update):
     return q_new, pack_tril(S_new)
 
 
-def initial_factor(R):
+def initial_factor(R, r_trace: float = 176.0):
     """S̃0: the lower Cholesky factor of :func:`initial_covariance` (R̃ scaled to trace <= 8).
-    P̃0 >= R_FLOOR/22 > S0_FLOOR, so the pivot floor never binds; |S̃0_ij| <= sqrt(8)."""
+    ``r_trace`` bounds the trace of the caller's R̃ (VAK: 176; R̃ >= R_FLOOR I): then
+    P̃0 >= R_FLOOR P0_TRACE / r_trace > S0_FLOOR, so the pivot floor never binds (checked
+    here); |S̃0_ij| <= sqrt(8)."""
+    assert R_FLOOR * P0_TRACE / r_trace > S0_FLOOR, "the initial factor's pivot floor would bind"
     L, _ = cholesky4(unpack4(initial_covariance(R)), S0_FLOOR, P0_TRACE ** 0.5)
     return pack_tril(L)
 

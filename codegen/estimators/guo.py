@@ -20,6 +20,15 @@ State x = q (sensor → ENU), covariance P (4×4).  Per sample:
            var_mag I) on the unit vectors (Guo/Wu's code uses the σ values as variances:
            erratum "σ meaning"), plus var_acc along z (the norm direction) and a floor.
   update   H = I (seed's "fast" update), via a Cholesky factor of P⁻ + R.
+Square-root form (as VAK: :func:`algebraic.sr_quat_kf`): the state carries the lower Cholesky
+factor S of P, predicted by a Givens triangularisation of [Φ S | u_g Ξ(q)] and updated as S U
+with U Uᵀ = I − GᵀG; mathematically the same filter.  In fixed point the plain P (Q5.26,
+steady state ~1e-3 s_ref against per-step changes of ~1e-6, rounded products) froze at 3-5
+times the reference in the norm direction and settled 1-2 % above it in the rotation
+directions (0.8 % of that from the process noise, whose var_gyr/var_acc had 7 fractional
+bits: see step()); the q output deviated from the float64 reference by 0.21° RMS, 1.37° max
+on BROAD (trial 01: 0.22° / 0.36°; the process noise fixed alone 0.22° / 0.35°, the factor
+alone 0.030° / 0.059°, both 0.0012° / 0.0019°).
 Samples without a magnetometer reading skip the W_m projection (z then keeps the predicted
 heading) and give the heading direction a large variance.  Covariances are stored divided by
 s_ref = var_acc max(1, var_mag/(16 var_acc)) (gains are unchanged by a common scale; the scaled
@@ -32,26 +41,27 @@ var_mag 0.01 (only the ratios matter); the ``ahrs`` preset is that package's FKF
 """
 from __future__ import annotations
 
-from kinefuse.codegen.estimator import Estimator, Param, Var
-from kinefuse.codegen.estimators.algebraic import (MIN_FIELD_SIN2, P_MAX, P_STATE_DOC, R_FLOOR,
-                                                   R_HEAD_MAX, aqua,
-                                                   capped_gram, initial_covariance, m_matrix,
-                                                   predict_quaternion, quat_kf, tilt_quaternion)
+from kinefuse.codegen.estimator import Estimator, Param
+from kinefuse.codegen.estimators.algebraic import (MIN_FIELD_SIN2, P_MAX, R_FLOOR, R_HEAD_MAX,
+                                                   aqua, capped_gram, initial_factor, m_matrix,
+                                                   predict_quaternion, sr_quat_kf, sr_state_var,
+                                                   tilt_quaternion)
 from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISED,
                                                 MAG_NORM_MIN_SQ, Q_OUT, Q_STATE, REJECTED,
                                                 SampleCheck)
 from kinefuse.codegen.estimators.vac import HEADING_SET, canonical
 from kinefuse.codegen.linalg import Quat, vselect
-from kinefuse.codegen.scalar import (all_of, assume, clamp, fmax, inc_if, logical_and,
-                                     logical_not, logical_or, select, sqrt)
+from kinefuse.codegen.scalar import (all_of, assume, clamp, fmax, fmin, inc_if, logical_and,
+                                     logical_not, logical_or, select, sqrt, when)
 
 R_HEAD_GUO = R_HEAD_MAX      # cap of the magnetometer part of R̃ (trace), and the no-field
 P_MAX_GUO = P_MAX             # heading variance; |P̃_ij| bound
 ACC_CAP = 64.0                # cap of the accelerometer part of R̃ (trace)
 J_MAX = 6.5                   # |∂z/∂u| <= (1/m_N + 1)/2 with m_N >= sin 5°: bound for assume()
 
-P_VAR = Var("P", 10, -P_MAX_GUO, P_MAX_GUO, "s_ref", P_STATE_DOC,
-            init=(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 1.0))
+R_TRACE = ACC_CAP + 1.0 + R_HEAD_GUO + 4.0 * R_FLOOR    # tr R̃: Ra + inv_l z zᵀ + Rm + floor
+
+S_VAR = sr_state_var(P_MAX_GUO)
 
 
 def _pure(v) -> Quat:
@@ -115,7 +125,7 @@ class Guo(Estimator):
         Param("var_mag", 0.01, "", 1e-6, 10.0,
               "variance of each component of the unit magnetometer vector"),
     )
-    state = (Q_STATE, P_VAR, INITIALISED, HEADING_SET, REJECTED)
+    state = (Q_STATE, S_VAR, INITIALISED, HEADING_SET, REJECTED)
     outputs = (Q_OUT, REJECTED)
     presets = {
         # seed 001 §7.4: "σ_acc 0.001, σ_gyr 0.3, σ_mag 0.4", used as variances like the
@@ -134,11 +144,21 @@ class Guo(Estimator):
         m_d = a.dot(m)
         use_mag = all_of(chk.use_mag, m2 >= MAG_NORM_MIN_SQ, 1.0 - m_d * m_d >= MIN_FIELD_SIN2)
 
-        # noise in units of s_ref = var_acc λ, λ = max(1, var_mag/(16 var_acc))
-        rho = clamp(p.var_mag / p.var_acc, 0.0, 1e4)
-        inv_l = 1.0 / fmax(1.0, rho * (1.0 / 16.0))
-        u_g = clamp(chk.dt * sqrt(clamp(p.var_gyr / p.var_acc * inv_l, 0.0, 1e6)), 0.0, 4.0)
-        k_proc = u_g * u_g                                   # dt² var_gyr / s_ref
+        # noise in units of s_ref = var_acc λ, λ = max(1, var_mag/(16 var_acc)), from the
+        # standard deviations: a ratio of variances spans 1e-8..1e7, which left the fixed-point
+        # path 7 fractional bits (var_gyr/var_acc = 0.1 became 13/128, +1.6 % process noise)
+        sa = sqrt(p.var_acc)
+        r_m = clamp(sqrt(p.var_mag) / sa, 0.0, 100.0)          # sqrt(var_mag/var_acc)
+        rho = r_m * r_m
+        sl = fmax(1.0, 0.25 * r_m)                              # sqrt(λ)
+        inv_l = 1.0 / (sl * sl)
+        c_g = clamp(sqrt(p.var_gyr) / (sa * sl), 0.0, 1e3)      # sqrt(var_gyr / s_ref), 1/s
+        # u_g = min(dt c_g, 4): the per-step process noise k = u_g² = dt² var_gyr / s_ref (the
+        # square-root form uses u_g itself).  Written as min(dt, 4/c_g) c_g, so that the
+        # product's bound is the result's (<= 4, plus the rounding of 4/c_g) and not
+        # DT_MAX × 1e3: its fixed-point format then keeps 28 fractional bits
+        dt_g = fmin(chk.dt, 4.0 / fmax(c_g, 1.0))
+        u_g = clamp(assume(dt_g * c_g, 0.0, 4.0 + 2.0 ** -8), 0.0, 4.0)
 
         # first valid sample: algebraic quaternion; its measurement covariance gives P
         q_am, _, _, _ = aqua(a, m)
@@ -166,18 +186,21 @@ class Guo(Estimator):
         first_heading = logical_and(use_mag, logical_not(x.heading_set))
         do_update = logical_and(use_acc, logical_not(first_heading))
         zz = vselect(z.dot(q_pred) < 0.0, z.scale(-1.0), z)
-        q_kf, P_kf = quat_kf(x, chk, q_pred, k_proc, zz, R, do_update, P_MAX_GUO,
-                             2.0 * R_HEAD_GUO)
-        Rp = initial_covariance(R)
+        q_kf, S_kf = sr_quat_kf(x, chk, q_pred, u_g, zz, R, do_update, P_MAX_GUO,
+                                2.0 * R_HEAD_GUO)
         q_kf = vselect(first_heading, canonical(q_am), q_kf)
-        P_kf = tuple(select(first_heading, r_, v) for r_, v in zip(Rp, P_kf))
 
         run = logical_and(chk.ok, x.initialised)
+        # a new covariance (start, or the first heading: P = that sample's R, whose measurement
+        # is taken from q0 at the start) as its factor, only on the samples that need it
+        with when(logical_or(do_init, logical_and(run, first_heading))):
+            S0 = initial_factor(R, R_TRACE)
+        S_kf = tuple(select(first_heading, r_, v) for r_, v in zip(S0, S_kf))
         q_next = vselect(do_init, q0, vselect(run, q_kf, q))
-        P_next = tuple(select(do_init, r_, select(run, pk, px))
-                       for r_, pk, px in zip(Rp, P_kf, x.P))
+        S_next = tuple(select(do_init, r_, select(run, sk, sx))
+                       for r_, sk, sx in zip(S0, S_kf, x.S))
         heading_next = logical_or(x.heading_set, logical_and(logical_or(do_init, run), use_mag))
         rejected = inc_if(x.rejected, chk.bad)
-        nx = {"q": q_next, "P": P_next, "initialised": logical_or(x.initialised, do_init),
+        nx = {"q": q_next, "S": S_next, "initialised": logical_or(x.initialised, do_init),
               "heading_set": heading_next, "rejected": rejected}
         return nx, {"q": q_next, "rejected": rejected}

@@ -35,12 +35,12 @@ Valenti's full Jacobian).
 """
 from __future__ import annotations
 
-from kinefuse.codegen.estimator import Estimator, Param, Var
-from kinefuse.codegen.estimators.algebraic import (MIN_FIELD_SIN2, R_HEAD_MAX, S_MAX, T_MAX,
-                                                   T_MIN, align_sign, aqua, heading_sigma,
+from kinefuse.codegen.estimator import Estimator, Param
+from kinefuse.codegen.estimators.algebraic import (MIN_FIELD_SIN2, R_HEAD_MAX, T_MAX, T_MIN,
+                                                   align_sign, aqua, heading_sigma,
                                                    initial_factor, predict_quaternion,
-                                                   r_from_sigma, sr_quat_kf, tilt_correction,
-                                                   tilt_quaternion)
+                                                   r_from_sigma, sr_quat_kf, sr_state_var,
+                                                   tilt_correction, tilt_quaternion)
 from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISED,
                                                 MAG_NORM_MIN_SQ, Q_OUT, Q_STATE, REJECTED,
                                                 SampleCheck)
@@ -51,10 +51,7 @@ from kinefuse.codegen.scalar import (all_of, assume, clamp, fmax, inc_if, logica
 
 B_REF = 20.0      # uT: field strength for the covariance unit (weak end of the geomagnetic range)
 
-S_VAR = Var("S", 10, -S_MAX, S_MAX, "sqrt(s_ref)",
-            "lower Cholesky factor of the state covariance (P = S Sᵀ), rows 00; 10 11; 20 21 22; "
-            "30 31 32 33, in units of sqrt(s_ref) (see the filter's docstring)",
-            init=(1.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0))
+S_VAR = sr_state_var()
 
 
 class Vak(Estimator):
