@@ -25,9 +25,10 @@ pytestmark = pytest.mark.skipif(firmware.firmware_missing() is not None,
 # name -> (valid values, invalid values); ranges from firmware/app/kf_params.h
 FILTER_IDS = list(firmware.filter_ids().values()) if firmware.firmware_missing() is None else [3]
 WRITES = {
-    "KF_FILTER": (FILTER_IDS + [0], [99, 6, 1000]),
+    # invalid: ids no filter is wired to (6, listed here before, is eskf's), and out of range
+    "KF_FILTER": (FILTER_IDS + [0], [i for i in (1, 7, 13) if i not in FILTER_IDS] + [99, 1000]),
     "KF_RATE_HZ": ([50, 100, 200, 500, 1000], [0, 100000]),
-    "KF_HIL_MODE": ([0, 1], [2, 7]),
+    "KF_HIL_MODE": ([0, 1, 2, 3], [4, 7]),     # bits: 1 direct float32, 2 raw Q quaternion out
     "KF_ORI_RATE_HZ": ([0, 10, 50, 100], [100000]),
 }
 write = st.sampled_from(sorted(WRITES)).flatmap(
