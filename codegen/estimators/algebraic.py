@@ -357,22 +357,9 @@ def align_sign(z: Quat, ref: Quat) -> Quat:
     return Quat(*(select(flip, -c_, c_) for c_ in z))
 
 
-def quat_kf(x, chk, q_pred: Quat, k_proc, z: Quat, R, do_update, p_max: float = P_MAX,
-            r_bound: float = 2.0 * R_HEAD_MAX):
-    """Predict + (optional) update of the quaternion Kalman filter; returns (q, P̃ packed).
-    q_pred = Φ q (normalised); the update runs where ``do_update``.  ``p_max`` bounds |P̃_ij|
-    (the state's declared range), ``r_bound`` the entries of R̃."""
-    P = unpack4(x.P)
-    Pm = kf_predict(P, Quat(*x.q), chk.gyr, chk.dt, k_proc, p_max)
-    xn, Pn = kf_identity_update(q_pred, Pm, z, R, R_FLOOR, p_max + r_bound, p_max, Y_MAX)
-    q_up = xn.normalized()
-    q_new = vselect(do_update, q_up, q_pred)
-    P_new = [[select(do_update, Pn[i][j], Pm[i][j]) for j in range(4)] for i in range(4)]
-    return q_new, pack4(P_new)
-
-
 # ----------------------------------------------------------------------------------------------
-# the same filter in square-root form (VAK): the state carries a lower Cholesky factor S̃ of P̃
+# the filter in square-root form (VAK, GUO): the state carries a lower Cholesky factor S̃ of P̃
+# (kf_predict and kf_identity_update are its plain form, kept as the definition it is tested against)
 #
 # Why (fixed point): P̃ spans 8 s_ref (start) to ~1e-4 s_ref (steady state at BROAD's 286 Hz,
 # per-step process noise k ~ 1e-7 s_ref), and its steady state is the balance of two per-step
@@ -528,11 +515,11 @@ def sr_update(x: Quat, S, z: Quat, R, floor: float = R_FLOOR, s_max: float = S_M
 
 def sr_quat_kf(x, chk, q_pred: Quat, u_g, z: Quat, R, do_update, p_max: float = P_MAX,
                r_bound: float = 2.0 * R_HEAD_MAX):
-    """:func:`quat_kf` in square-root form: predict + (optional) update; returns
-    (q, S̃ packed lower triangular).  ``u_g`` = sqrt of the per-step process noise k (<= 4);
-    ``p_max`` bounds P̃ = S̃ S̃ᵀ as in :func:`quat_kf` (|S̃_ij| <= sqrt(p_max): the state's
-    declared range, see :func:`sr_state_var`), ``r_bound`` the entries of R̃ (R̃ >= R_FLOOR I
-    is required, as for :func:`quat_kf`)."""
+    """Predict + (optional) update of the quaternion Kalman filter in square-root form; returns
+    (q, S̃ packed lower triangular).  q_pred = Φ q (normalised); the update runs where
+    ``do_update``.  ``u_g`` = sqrt of the per-step process noise k (<= 4); ``p_max`` bounds
+    P̃ = S̃ S̃ᵀ (|S̃_ij| <= sqrt(p_max): the state's declared range, see :func:`sr_state_var`),
+    ``r_bound`` the entries of R̃ (R̃ >= R_FLOOR I is required)."""
     s_max = p_max ** 0.5
     S = unpack_tril(x.S)
     Sm = sr_predict(S, Quat(*x.q), chk.gyr, chk.dt, u_g, s_max)
@@ -575,10 +562,6 @@ def capped_gram(cols, scale, cap: float):
             v = assume(f * _sum(c_[i] * c_[j] for c_ in cols), -cap, cap)
             G[i][j] = G[j][i] = v
     return G
-
-
-P_STATE_DOC = ("state covariance, upper triangle row by row (00 01 02 03 11 12 13 22 23 33), "
-               "in units of s_ref (see the filter's docstring)")
 
 
 def clamp01(v):

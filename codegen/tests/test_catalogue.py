@@ -197,6 +197,30 @@ def test_kf_update_matches_the_textbook_kalman_update():
     assert np.allclose(np.array(Pn), (np.eye(4) - K) @ P, atol=1e-12)
 
 
+def test_square_root_form_equals_the_plain_kalman_filter():
+    """sr_predict / sr_update (VAK's and GUO's filter) carry a factor S of exactly the P that
+    kf_predict / kf_identity_update (the plain form) give, and the same updated state."""
+    for _ in range(5):
+        A = RNG.normal(size=(4, 4))
+        P = A @ A.T * 0.05 + 1e-3 * np.eye(4)
+        B = RNG.normal(size=(4, 4))
+        R = B @ B.T * 0.02 + 0.01 * np.eye(4)
+        q = Quat(*random_unit(4))
+        z = random_unit(4)
+        x = q + Quat(*(0.01 * RNG.normal(size=4)))
+        omega, dt, u_g = Vec3(*RNG.normal(size=3)), 0.01, 0.05
+        S = np.linalg.cholesky(P)
+        Sm = alg.sr_predict(S.tolist(), q, omega, dt, u_g)
+        Pm = np.array(alg.kf_predict(P.tolist(), q, omega, dt, u_g * u_g, 1e3))
+        assert np.allclose(np.array(Sm) @ np.array(Sm).T, Pm, atol=1e-12)
+        assert np.allclose(np.triu(np.array(Sm), 1), 0.0)
+        xs, Sn = alg.sr_update(Quat(*x), Sm, Quat(*z), R.tolist())
+        xp, Pn = alg.kf_identity_update(Quat(*x), Pm.tolist(), Quat(*z), R.tolist(), alg.R_FLOOR,
+                                        1e3, 1e3, alg.Y_MAX)
+        assert np.allclose(np.array(xs), np.array(xp), atol=1e-12)
+        assert np.allclose(np.array(Sn) @ np.array(Sn).T, np.array(Pn), atol=1e-12)
+
+
 # ------------------------------------------------------------------------------------------------
 # registry, presets
 
