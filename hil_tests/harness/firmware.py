@@ -80,6 +80,11 @@ class HilInput:
                    case.inputs["mag_valid"][:k] & np.all(np.isfinite(case.inputs["mag"][:k]), axis=1),
                    int(round(case.rate_hz)))
 
+    def inputs(self) -> dict[str, np.ndarray]:
+        """The per-sample inputs a mismatch report names."""
+        return {"time_us": self.time_us, "acc": self.acc, "gyr": self.gyr, "mag": self.mag,
+                "mag_valid": self.mag_valid}
+
 
 def loop_target(loop: str) -> tuple[str, str]:
     """("host" | "m4f" | "m0", "f32" | "q") of a firmware loop name."""
@@ -213,13 +218,9 @@ def expected(name: str, system: str, hil: HilInput) -> dict:
 
 def compared_outputs(system: str, unit_out: dict, from_model: bool) -> dict:
     """The outputs compared bit for bit (unit answers or unit model, same names)."""
-    if from_model:
-        out = {"q": unit_out["q"], "cov": unit_out["cov"], "counts": unit_out["counts"]}
-        if system == "q":
-            out["q_raw"] = unit_out["q_raw"]
-        return out
-    out = {"q": unit_out["q"], "cov": unit_out["cov"],
-           "counts": np.concatenate([unit_out["acc"], unit_out["gyr"], unit_out["mag"]], axis=1)}
+    counts = unit_out["counts"] if from_model else \
+        np.concatenate([unit_out["acc"], unit_out["gyr"], unit_out["mag"]], axis=1)
+    out = {"q": unit_out["q"], "cov": unit_out["cov"], "counts": counts}
     if system == "q":
         out["q_raw"] = unit_out["q_raw"]
     return out
@@ -241,10 +242,8 @@ def compare_unit(loop: str, name: str, case, n: int | None = None, runner: UnitR
     else:
         got = run_unit(loop, name, hil)
     ref = expected(name, system, hil)
-    inputs = {"time_us": hil.time_us, "acc": hil.acc, "gyr": hil.gyr, "mag": hil.mag,
-              "mag_valid": hil.mag_valid}
     m = compare(f"{system} unit model", compared_outputs(system, ref, True), loop,
-                compared_outputs(system, got, False), inputs)
+                compared_outputs(system, got, False), hil.inputs())
     return m, got, ref
 
 

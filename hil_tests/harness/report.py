@@ -150,9 +150,8 @@ def _firmware_rows(rep: Report, cases: list[Case], filters: list[str], qemu: boo
                         t0 = runner.seconds
                         got = fw.compared_outputs(system, runner.run(name, hil), False)
                         row["seconds"] = runner.seconds - t0
-                        inputs = {"time_us": hil.time_us, "acc": hil.acc, "gyr": hil.gyr,
-                                  "mag": hil.mag, "mag_valid": hil.mag_valid}
-                        m = compare.compare(f"{system} unit model", expected(name, system, case, hil), lp, got, inputs)
+                        m = compare.compare(f"{system} unit model", expected(name, system, case, hil), lp, got,
+                                            hil.inputs())
                         row["mismatch"] = m.as_dict() if m else None
                     except Exception as exc:    # reported in the table, not hidden
                         row["error"] = f"{type(exc).__name__}: {exc}"

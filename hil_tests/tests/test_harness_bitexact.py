@@ -19,17 +19,13 @@ CASES = [(n, s) for n in FILTERS for s in loops.systems(n)]
 needs_qemu = pytest.mark.skipif(qemu_unavailable() is not None, reason=str(qemu_unavailable()))
 
 
-def _concat(cases):
-    """One input series from several cases (each filter re-initialises from the first sample
-    only, so later cases continue from the previous state: jumps are part of the test)."""
-    return {k: np.concatenate([c.inputs[k] for c in cases]) for k in cases[0].inputs}
-
-
 @pytest.fixture(scope="module")
 def ci_inputs():
     sims = scenarios.ci_cases(seconds=3.0)
     broad = scenarios.broad_case(scenarios.default_broad_trial(), 2000, 2600)
-    return _concat(sims + [broad])
+    # one series: each filter initialises from the first sample only, so later cases continue
+    # from the previous state (the jumps are part of the test)
+    return scenarios.concat(sims + [broad]).inputs
 
 
 def test_ci_case_exercises_the_filters(ci_inputs):
