@@ -410,8 +410,9 @@ def m4f_instructions(name: str, trial: T.LegTrial, params: dict, n_table: int = 
     from kinefuse.codegen.generate import GENERATED_DIR as G
     inp = trial.inputs()
     f = lambda v: float(np.float32(v)).hex() + "f"   # noqa: E731
+    n_start = 3        # the filter starts in its third sample (leg.py): set up before counting
     recs = []
-    for i in range(1, n_table + 1):
+    for i in range(n_start, n_table + n_start):
         recs.append("{.gyr={%s}, .acc={%s}, .foot={%s}, .gyr_valid={1u,1u}, .acc_valid={1u,1u}, "
                     ".foot_valid=%du, .dt=%s}" % (
                         ", ".join(f(v) for v in inp["gyr"][i]),
@@ -423,13 +424,16 @@ def m4f_instructions(name: str, trial: T.LegTrial, params: dict, n_table: int = 
                f"static const kf_leg_input_f32 kf_in[{n_table}] = {{\n  " + ",\n  ".join(recs)
                + "\n};\n" + f"static {P}_state kf_s;\nstatic {P}_output kf_o;\n")
     sets = "".join(f"    p.{k_} = {f(v)};\n" for k_, v in params.items())
-    first = ("{.gyr={%s}, .acc={%s}, .foot={0.0f, 0.0f}, .gyr_valid={1u,1u}, .acc_valid={1u,1u}, "
-             ".foot_valid=0u, .dt=%s}" % (", ".join(f(v) for v in inp["gyr"][0]),
-                                         ", ".join(f(v) for v in inp["acc"][0]), f(inp["dt"][0])))
+    first = ", ".join(
+        "{.gyr={%s}, .acc={%s}, .foot={0.0f, 0.0f}, .gyr_valid={1u,1u}, .acc_valid={1u,1u}, "
+        ".foot_valid=0u, .dt=%s}" % (", ".join(f(v) for v in inp["gyr"][i]),
+                                     ", ".join(f(v) for v in inp["acc"][i]), f(inp["dt"][i]))
+        for i in range(n_start))
     setup = (f"{P}_params p; {P}_default_params(&p);\n{sets}"
              f"    (void){P}_init(&kf_s, &p);\n"
-             f"    {{ const kf_leg_input_f32 kf_first = {first};\n"
-             f"      {P}_update(&kf_s, &kf_first, &kf_o); }}")
+             f"    {{ const kf_leg_input_f32 kf_first[{n_start}] = {{{first}}};\n"
+             f"      for (unsigned j = 0; j < {n_start}u; j++) "
+             f"{P}_update(&kf_s, &kf_first[j], &kf_o); }}")
     call = f"{P}_update(&kf_s, &kf_in[kf_i % {n_table}u], &kf_o);"
     c = measure_call_cost([G / f"{P}.c"], setup, call, "m4f", k=k, prelude=prelude,
                           include_dirs=[G], size_opts=("-Os",))
@@ -491,7 +495,7 @@ def leg_study(progress=None, qemu: bool = True, duration: float = 10.0, seed: in
     fe = variants.VariantRunner(leg_variant(Variant("fe", "se", "ct")))
     out["forward_euler"] = leg_metrics(fe.run(trial.inputs(), prm), trial)
     acc_first = np.zeros((len(trial.t), 2), bool)
-    acc_first[0] = True              # the start needs the gravity direction once
+    acc_first[:3] = True             # the start (third sample) needs the gravity direction once
     gyro_only = cg.run("leg", "f32", trial.inputs(acc_valid=acc_first), prm)
     out["gyroscopes_only"] = leg_metrics(gyro_only, trial)
     step()

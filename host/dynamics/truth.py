@@ -239,6 +239,14 @@ class LegConfig:
     sigma_foot: float = 1.0     # N
     foot_force: bool = False    # apply an external ankle force (stance-like) and measure it
     seed: int = 0
+    # Where the recording starts.  By default it starts in motion: at t = 0 the leg is in
+    # terminal swing (hip flexed 0.48 rad, shank 0.26 rad) and decelerating fast (-20 / -39
+    # rad/s^2 at a 1 Hz stride, -40 / -77 at 1.4 Hz).  phase shifts the gait (fraction of a
+    # stride at t = 0); stand_s > 0 starts at rest instead, as a clinical protocol would: the
+    # leg hangs still and vertical for stand_s, then the gait's amplitude grows smoothly
+    # (quintic, so the angular accelerations are continuous) over one stride.
+    phase: float = 0.0
+    stand_s: float = 0.0
 
     @property
     def L1(self):
@@ -298,14 +306,27 @@ def _fourier(c, t, f):
     return v, vd, vdd
 
 
+def _onset(t, t0, T):
+    """Quintic smoothstep from 0 (t <= t0) to 1 (t >= t0 + T) and its two derivatives."""
+    x = np.clip((t - t0) / T, 0.0, 1.0)
+    e = x ** 3 * (10.0 - 15.0 * x + 6.0 * x * x)
+    ed = 30.0 * x * x * (1.0 - x) ** 2 / T
+    edd = 60.0 * x * (1.0 - x) * (1.0 - 2.0 * x) / (T * T)
+    return e, ed, edd
+
+
 def leg_motion(cfg: LegConfig, t):
     """z = [θ1, θ2] (thigh, shank absolute from the downward vertical), ż, z̈; knee flexion is
-    θ1 − θ2."""
-    h, hd, hdd = _fourier(_HIP, t, cfg.stride_hz)
-    k, kd, kdd = _fourier(_KNEE, t, cfg.stride_hz)
+    θ1 − θ2.  See LegConfig.phase and stand_s for where the trial starts."""
+    tg = t + cfg.phase / cfg.stride_hz
+    h, hd, hdd = _fourier(_HIP, tg, cfg.stride_hz)
+    k, kd, kdd = _fourier(_KNEE, tg, cfg.stride_hz)
     z = np.stack([h, h - k], 1)
     zd = np.stack([hd, hd - kd], 1)
     zdd = np.stack([hdd, hdd - kdd], 1)
+    if cfg.stand_s > 0:
+        e, ed, edd = (v[:, None] for v in _onset(t, cfg.stand_s, 1.0 / cfg.stride_hz))
+        z, zd, zdd = e * z, ed * z + e * zd, edd * z + 2.0 * ed * zd + e * zdd
     return z, zd, zdd
 
 
@@ -346,8 +367,10 @@ def leg_Bt(cfg: LegConfig, z, foot: bool):
 def leg_foot_force(cfg: LegConfig, t):
     """A stance-like external force at the ankle (N): during the first 60 % of each stride an
     upward push of up to 150 N and a small backward shear; zero otherwise."""
-    ph = (t * cfg.stride_hz) % 1.0
+    ph = (t * cfg.stride_hz + cfg.phase) % 1.0
     s = np.where(ph < 0.6, np.sin(np.pi * ph / 0.6) ** 2, 0.0)
+    if cfg.stand_s > 0:
+        s = s * _onset(t, cfg.stand_s, 1.0 / cfg.stride_hz)[0]
     return np.stack([-20.0 * s, 150.0 * s], 1)
 
 

@@ -28,6 +28,7 @@ GYR_MAX = 2000.0 * math.pi / 180.0      # rad/s
 ACC_MAX = 16.0 * 9.80665                # m/s^2
 FOOT_MAX = 5000.0                       # N
 DT_MAX = 0.1                            # s
+DT_MIN_START = 1e-4                     # s: smallest step the start's difference formula uses
 Z_LIM = 4.0 * math.pi                   # rad: estimates beyond these reset the filter
 ZD_LIM = GYR_MAX                        # rad/s
 TE_LIM = 1000.0                         # N*m or N
@@ -126,6 +127,13 @@ def _state_outputs(foot: bool):
         Var("P", tri_size(N), -P_LIM, P_LIM, "SI", "error covariance, upper triangle "
             "row by row (order z, zd, te)", init=diag_sym_init(p0)),
         Var("initialised", 1, 0, 1, "", "1 once started", BOOL, init=False),
+        Var("gyr_hist", 4, -GYR_MAX, GYR_MAX, "rad/s", "gyroscopes (thigh, shank) of the "
+            "previous sample, then of the one before (0 where not valid): the start's "
+            "angular accelerations"),
+        Var("dt_prev", 1, 0.0, DT_MAX, "s", "dt of the previous sample (0 when invalid)"),
+        Var("hist_ok", 2, 0, 1, "", "1 when both gyroscopes were valid in the previous "
+            "sample; 1 when they were in the one before and the previous dt was valid", BOOL,
+            init=False),
         Var("rejected", 1, 0, 2 ** 31 - 1, "samples", "sensor samples rejected (non-finite "
             "or out of range) and samples with an invalid dt", INT, init=0),
         Var("skipped", 1, 0, 2 ** 31 - 1, "samples", "samples in which a scalar update was "
@@ -158,9 +166,11 @@ class LegEKF(Estimator):
     tau_hip on the thigh from the pelvis, + flexing; tau_knee on the shank from the thigh, +
     extending the knee) as random walks.  Sensors: gyroscope and 2-axis accelerometer on each
     segment (positions a_i, b_i in the segment frames).  Runge-Kutta 4 for the mean,
-    second-order Phi, Taylor noise covariance, scalar Joseph updates.  Starts from the first
-    sample with both accelerometers (angles from the gravity direction, rates from the
-    gyroscopes, torques from the quasi-static balance); a non-finite or out-of-range estimate
+    second-order Phi, Taylor noise covariance, scalar Joseph updates.  Starts, in motion or
+    at rest, from the first sample with both accelerometers that has both gyroscopes in it and
+    in the two samples before (:meth:`_kinematic_start`: angles from the gravity direction once
+    the IMUs' own accelerations are removed, rates from the gyroscopes, angular accelerations
+    from their difference, torques by inverse dynamics); a non-finite or out-of-range estimate
     resets it (counted).
     """
 
@@ -194,6 +204,56 @@ class LegEKF(Estimator):
         if self.foot:
             q += [p.q_force, p.q_force]
         return q
+
+    @staticmethod
+    def _kinematic_start(gyr, gyr_hist, acc, dt, dt_prev, p):
+        """(z, ż, z̈) at the start from one sample of the accelerometers and three of the
+        gyroscopes: exact for a rigid leg with the hip fixed, up to sensor noise and the
+        error of the difference formula.
+
+        Why not the quasi-static start (angles from the accelerometers as if at rest): an
+        accelerometer measures gravity plus the IMU's own acceleration, which in gait is of
+        the order of g (at a 1.4 Hz stride the shank's angular acceleration reaches
+        80 rad/s²), so those angles were up to 2 rad off and the EKF, linearised there, took
+        seconds to recover.  Nor waiting for a quasi-static moment (gyroscopes small,
+        |f| ≈ g): continuous gait has none, and the restart after a sensor loss must work in
+        motion too.  Instead the start inverts the filter's own accelerometer model.  With
+        the hip fixed, an IMU's acceleration in its segment frame depends only on the
+        segment's ω and α (the shank's also on the knee's acceleration, known once the
+        thigh's angle is); ω comes from the gyroscope and α from its second-order backward
+        difference over the last three samples (error h²/3 times the third derivative of ω;
+        the two-point difference's error, h/2 times the second, left up to 0.18 rad in the
+        start angles at a 1.4 Hz stride, this one 0.05).  What remains of the specific force
+        is gravity in the segment frame, hence the angle.  At rest this is the quasi-static
+        start.  Noise: the difference amplifies gyroscope noise by about 2.55/h, σ_α ≈
+        1.3 rad/s² at σ_gyr = 0.005 rad/s and 100 Hz (≈ 0.03 rad thigh, 0.08 rad shank,
+        inside the default p0_angle); far above 100 Hz a longer window would be needed."""
+        # weights of ω_k, ω_k-1, ω_k-2 for steps h1 = dt, h2 = dt_prev: (2h1 + h2)/(h1(h1 + h2)),
+        # (h1 + h2)/(h1 h2), h1/(h2(h1 + h2)) (3/2h, 2/h, 1/2h for equal steps); steps below
+        # DT_MIN_START count as DT_MIN_START (also keeps the float64 reference, which
+        # computes this region in every sample, from dividing by zero)
+        r1 = 1.0 / fmax(dt, DT_MIN_START)
+        r2 = 1.0 / fmax(dt_prev, DT_MIN_START)
+        r12 = 1.0 / (fmax(dt, DT_MIN_START) + fmax(dt_prev, DT_MIN_START))
+        c0, c1, c2 = r1 + r12, r1 + r2, r2 - r12
+        w = [gyr[0], gyr[1]]
+        al = [c0 * gyr[i] - c1 * gyr_hist[i] + c2 * gyr_hist[2 + i] for i in range(2)]
+        # the IMU's acceleration from its segment's own rotation, in the segment frame
+        # (u along, v anterior): a (α v − ω² u) + b (−α u − ω² v)
+        own = [(-(p.a1 * (w[0] * w[0])) - p.b1 * al[0], p.a1 * al[0] - p.b1 * (w[0] * w[0])),
+               (-(p.a2 * (w[1] * w[1])) - p.b2 * al[1], p.a2 * al[1] - p.b2 * (w[1] * w[1]))]
+        # f − own = (W·u, W·v) with W = a_proximal − g_vec (world), u = (s, −c), v = (c, s):
+        # (s, c) ∝ (Wx m_u + Wy m_v, Wx m_v − Wy m_u).  Thigh: W = (0, g).
+        mu, mv = acc[0] - own[0][0], acc[1] - own[0][1]
+        th1 = atan2(mv, -mu)
+        s1, c1_ = sincos(th1)
+        # shank: W = knee acceleration − g_vec, knee acceleration = L1 (α1 v1 − ω1² u1)
+        w11 = w[0] * w[0]
+        Wx = p.L1 * (al[0] * c1_ - w11 * s1)
+        Wy = p.L1 * (al[0] * s1 + w11 * c1_) + p.g
+        mu, mv = acc[2] - own[1][0], acc[3] - own[1][1]
+        th2 = atan2(Wx * mu + Wy * mv, Wx * mv - Wy * mu)
+        return [th1, th2], w, al
 
     def h_fn(self, z, zd, te, zdd, p):
         """Predicted sensors: gyro thigh, gyro shank, acc thigh (along, anterior), acc shank
@@ -236,7 +296,13 @@ class LegEKF(Estimator):
             rejected = inc_if(rejected, b)
         rejected = inc_if(rejected, logical_and(x.initialised, logical_not(dt_ok)))
 
-        do_init = logical_and(logical_not(x.initialised), logical_and(a_ok[0], a_ok[1]))
+        # The start needs the angular accelerations, from the gyroscopes of this sample and
+        # the two before (see _kinematic_start): both gyroscopes valid in all three, and both
+        # dts valid.
+        g_both = logical_and(g_ok[0], g_ok[1])
+        wh = list(x.gyr_hist)
+        have_alpha = all_of(g_both, dt_ok, x.hist_ok[0], x.hist_ok[1])
+        do_init = all_of(logical_not(x.initialised), a_ok[0], a_ok[1], have_alpha)
         run = logical_and(x.initialised, dt_ok)
         # (conditional regions only save work when they do not run; results are selected)
         with when(run):
@@ -249,13 +315,12 @@ class LegEKF(Estimator):
             innov = [select(use[i], ys[i] - hv[i], 0.0) for i in range(len(ys))]
             xu, Pu, skipped_now = sequential_update(zn + zdn + te, Pp, innov, H, rvar, use)
         with when(do_init):
-            # start: angles from the gravity direction (f_along = -g cos th, f_ant = g sin th),
-            # rates from the gyroscopes, torques from the quasi-static balance
-            z0 = [atan2(acc[2 * i + 1], -acc[2 * i]) for i in range(2)]
-            zd0 = [select(g_ok[i], gyr[i], 0.0) for i in range(2)]
+            # start: angles from the gravity direction once the IMUs' own accelerations are
+            # removed, rates from the gyroscopes, torques by inverse dynamics
+            z0, zd0, zdd0 = self._kinematic_start(gyr, wh, acc, dt, x.dt_prev, p)
             te0 = [0.0, 0.0] + ([select(use[6], foot[0], 0.0), select(use[7], foot[1], 0.0)]
                                 if self.foot else [])
-            te0[:2] = static_efforts(model, z0, zd0, te0, (0, 1), p)
+            te0[:2] = static_efforts(model, z0, zd0, te0, (0, 1), p, zdd=zdd0)
         lims = [Z_LIM] * 2 + [ZD_LIM] * 2 + [TE_LIM] * ne
         xs, Pn, init_next, reset_now = start_run_or_hold(
             x.initialised, do_init, run, z0 + zd0 + te0, self._p0_diag(p), xu, Pu,
@@ -267,6 +332,10 @@ class LegEKF(Estimator):
         te_std = [sqrt(fmax(Pn[4 + e][4 + e], 0.0)) for e in range(ne)]
         imu_lost = logical_not(all_of(*(logical_or(g_ok[i], a_ok[i]) for i in range(2))))
         nx = {"z": zs, "zd": zds, "te": tes, "P": pack_sym(Pn), "initialised": init_next,
+              "gyr_hist": [select(g_both, gyr[0], 0.0), select(g_both, gyr[1], 0.0),
+                           wh[0], wh[1]],
+              "dt_prev": select(dt_ok, dt, 0.0),
+              "hist_ok": [g_both, logical_and(x.hist_ok[0], dt_ok)],
               "rejected": rejected, "skipped": skipped, "resets": resets}
         y = {"z": zs, "zd": zds, "te": tes, "te_std": te_std, "initialised": init_next,
              "imu_lost": imu_lost, "skipped_now": skipped_now, "reset_now": reset_now,

@@ -196,18 +196,18 @@ __all__ = ["kinematics", "jacobian_of", "mass_and_bias", "Dynamics", "residual",
            "residual_jacobian", "ldl", "ldl_solve", "zdd_of", "point_kinematics"]
 
 
-def static_efforts(model, z, zd, te_known, unknown, p, eps: float = 1e-9):
-    """Efforts `unknown` (indices, 1 or 2 of them) that balance the others at z̈ = 0:
-    least squares of B_uᵀ u = −(Q_g(z, ż) + Σ_known Bᵀ T_e) — a starting value for efforts
-    without a sensor (quasi-static: the inertial terms of the first sample are ignored).
-    te_known holds the known efforts (the unknown entries are ignored)."""
+def static_efforts(model, z, zd, te_known, unknown, p, eps: float = 1e-9, zdd=None):
+    """Efforts `unknown` (indices, 1 or 2 of them) that balance the others at z̈ = zdd (None:
+    z̈ = 0): least squares of B_uᵀ u = M z̈ − (Q_g(z, ż) + Σ_known Bᵀ T_e) — a starting value for
+    efforts without a sensor (inverse dynamics at the given z̈; quasi-static without it: the
+    inertial terms are ignored).  te_known holds the known efforts (unknown entries ignored)."""
     from kinefuse.codegen.scalar import fmax
     te = [ZERO if i in unknown else v for i, v in enumerate(te_known)]
     _, R, Rdz = kinematics(model.phi, list(z), list(zd), p)
-    _, Qg = mass_and_bias(R, Rdz, model.mbar(p), model.qbar(p))
+    M, Qg = mass_and_bias(R, Rdz, model.mbar(p), model.qbar(p))
     _, B = jacobian_of(model.conj, list(z), p)
     n = len(z)
-    r = [ssub(ZERO, sadd(Qg[i], ssum(smul(B[e][i], te[e]) for e in range(len(te)))))
+    r = [ssub(_inertial(M, zdd, i), sadd(Qg[i], ssum(smul(B[e][i], te[e]) for e in range(len(te)))))
          for i in range(n)]
     cols = [[B[e][i] for i in range(n)] for e in unknown]
     # normal equations (k x k, k <= 2)
@@ -221,3 +221,8 @@ def static_efforts(model, z, zd, te_known, unknown, p, eps: float = 1e-9):
         return [smul(ssub(smul(g[1][1], rhs[0]), smul(g[0][1], rhs[1])), inv),
                 smul(ssub(smul(g[0][0], rhs[1]), smul(g[1][0], rhs[0])), inv)]
     raise ValueError("static_efforts handles 1 or 2 unknown efforts")
+
+
+def _inertial(M, zdd, i):
+    """(M z̈)_i, or ZERO for the quasi-static balance (zdd None)."""
+    return ZERO if zdd is None else ssum(smul(M[i][j], zdd[j]) for j in range(len(zdd)))
