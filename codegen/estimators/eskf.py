@@ -308,7 +308,9 @@ class Eskf(Estimator):
         ahead = cos_h >= 0.0
         hq = vselect(ahead, Quat(1.0 + cos_h, 0.0, 0.0, sin_h),
                      Quat(sin_h, 0.0, 0.0, 1.0 - cos_h)).normalized(1e-12)
-        q_init = vselect(use_mag, hq * q_tilt, q_tilt)
+        # a product of unit quaternions is one: assumed so, the selection below keeps x.q in
+        # its own format (a wider one would round x.q every sample)
+        q_init = Quat(*(assume(c_, -1.0, 1.0) for c_ in vselect(use_mag, hq * q_tilt, q_tilt)))
 
         q = vselect(do_init, q_init, Quat(*x.q))
         bias = Vec3(*x.bias)
@@ -400,8 +402,12 @@ class Eskf(Estimator):
         P, dx = scalar_update(P, dx, h_mag, y_mag, r_mag, MAG_NOISE_MIN ** 2 / (2.0 * DT_MAX),
                                  accept)
         k_ref = fmin(dt / p.tau_mag_ref, 1.0)
-        ref_n = select(relearn, m_norm, select(accept, x.ref_n + (m_norm - x.ref_n) * k_ref,
-                                               x.ref_n))
+        # a convex combination of the reference and the reading: within [0, N_MAX], so ref_n
+        # keeps its format (interval arithmetic alone gives twice the range: one bit lost and
+        # rounded up every sample, a bias of ~2e-6 uT per sample that moved the norm test)
+        ref_n = select(relearn, m_norm,
+                       select(accept, assume(x.ref_n + (m_norm - x.ref_n) * k_ref, 0.0, N_MAX),
+                              x.ref_n))
         dist_t = select(relearn, 0.0, dist_t)
         disturbed = logical_and(disturbed, logical_not(relearn))
 
