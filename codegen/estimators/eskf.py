@@ -76,11 +76,18 @@ P_BLOCKS = {
 # smallest variance kept on the diagonal of each block (a few LSB of its format)
 P_FLOOR = {"p_tt": 1e-9, "p_bb": 1e-13, "p_aa": 1e-6}
 DIAG_BOUND = [P_TT] * 3 + [P_BB] * 3 + [P_AA] * 3
+# range of every entry (i, j): its block's bound
+ENTRY_BOUND = [[None] * 9 for _ in range(9)]
+for _rows, _cols, _sym, _bound in P_BLOCKS.values():
+    for _i in range(*_rows):
+        for _j in range(*_cols):
+            ENTRY_BOUND[_i][_j] = ENTRY_BOUND[_j][_i] = _bound
 
 ACC_NOISE_MIN = 0.01          # m/s^2: lower end of acc_noise (bounds the gains)
 S_MAX = 1.0e6                 # largest innovation variance (acc_noise^2 / dt at 100 us)
 NU_MAX = 1.0e3                # normalised innovations are clamped here (gated far below)
 MAG_NOISE_MIN = 0.5 * DEG     # rad: lower end of mag_noise
+ACC_GATE_MAX = 100.0          # upper end of acc_gate
 
 
 def _block_len(rows, cols, sym):
@@ -152,7 +159,7 @@ def _renorm(q: Quat) -> Quat:
     return Quat(*(assume(c * k, -1.0, 1.0) for c in q))
 
 
-def scalar_update(P, dx, h, y, r, r_min, use, gate=None):
+def scalar_update(P, dx, h, y, r, r_min, use, gate=None, nu_bound=NU_MAX):
     """One scalar Kalman update, Joseph form, in normalised variables.
 
     h: 9 entries (ZERO where structurally zero), y: the measurement residual at the prior
@@ -163,6 +170,11 @@ def scalar_update(P, dx, h, y, r, r_min, use, gate=None):
     P - g g^T - g g^T + rho g g^T with rho = S (1/sqrt(S))^2 (1 up to rounding).  Every
     quantity keeps the scale of sqrt(P): precise in fixed point whatever S is.
     Returns (P', dx').  When `use` is false (or the gate rejects) nothing changes.
+    nu_bound: the largest |nu| an applied update can have (the largest gate, or the bound of
+    the innovation over sqrt(r_min)).  The correction g nu is formed with nu clamped there and
+    is bounded by twice the error state's range (dx + g nu is clamped to it): both bounds leave
+    every value unchanged and give the products a format of their own scale (with NU_MAX the
+    bias corrections were rounded to 1.5e-8 rad/s, the dominant fixed-point error of the bias).
     """
     u = [ssum(smul(h[k], P[k][j]) for k in range(9)) for j in range(9)]     # u = h P
     s = assume(sadd(ssum(smul(h[k], u[k]) for k in range(9)), r), r_min, S_MAX)
@@ -173,7 +185,11 @@ def scalar_update(P, dx, h, y, r, r_min, use, gate=None):
     nu = clamp(innov * rs, -NU_MAX, NU_MAX)
     if gate is not None:   # innovation gate: |nu| > gate (standard deviations) rejects
         use = logical_and(use, nu * nu <= gate * gate)
-    dx_new = [select(use, clamp(dx[i] + g[i] * nu, -DX_BOUND[i], DX_BOUND[i]), dx[i])
+    nu_c = clamp(nu, -nu_bound, nu_bound)
+    dx_new = [select(use, clamp(assume(dx[i] + assume(g[i] * nu_c, -2.0 * DX_BOUND[i],
+                                                      2.0 * DX_BOUND[i]),
+                                       -DX_BOUND[i], DX_BOUND[i]), -DX_BOUND[i], DX_BOUND[i]),
+                     dx[i])
               for i in range(9)]
     rho = assume(assume(s * rs, math.sqrt(r_min), math.sqrt(S_MAX)) * rs, 0.5, 2.0)
     Pn = [[None] * 9 for _ in range(9)]
@@ -181,7 +197,11 @@ def scalar_update(P, dx, h, y, r, r_min, use, gate=None):
         for j in range(i, 9):
             b = 1.01 * math.sqrt(DIAG_BOUND[i] * DIAG_BOUND[j])
             t = assume(g[i] * g[j], -b, b)
-            v = P[i][j] - t - t + rho * t
+            # the updated entry stays within its block's range (clamp_p saturates it there
+            # anyway): assumed so, it is rounded once into the block's format (interval
+            # arithmetic gives it 1-2 bits more range, and each of the four updates per
+            # sample rounded P up by a quarter of that coarser LSB on average)
+            v = assume(P[i][j] - t - t + rho * t, -ENTRY_BOUND[i][j], ENTRY_BOUND[i][j])
             v = select(use, v, P[i][j])
             Pn[i][j] = v
             Pn[j][i] = v
@@ -222,7 +242,7 @@ class Eskf(Estimator):
               "linear acceleration: standard deviation of the Gauss-Markov process"),
         Param("tau_lin", 0.1, "s", 0.005, 10.0,
               "linear acceleration: correlation time of the Gauss-Markov process"),
-        Param("acc_gate", 3.0, "", 1.0, 100.0,
+        Param("acc_gate", 3.0, "", 1.0, ACC_GATE_MAX,
               "accelerometer innovations beyond this many standard deviations are rejected "
               "(taps, impacts)"),
         Param("mag_noise", 9.0 * DEG, "rad s^0.5", MAG_NOISE_MIN, 90.0 * DEG,
@@ -349,8 +369,14 @@ class Eskf(Estimator):
         P = quadform(F, P)
         # attitude process noise: rate noise plus the rate-proportional error (scale factor,
         # misalignment, timing) of the rotation performed, taken as white over 1 s
+        # Each term is capped at the attitude block's bound, which the sum P + q is clamped to
+        # anyway (P >= 0): the same values, but the sum keeps a format of P_tt's scale (with
+        # the rate term's range, 195 rad^2, it was Q8.23: every step rounded the attitude
+        # variance to 1.2e-7 rad^2, a tenth of its per-sample change, and the heading variance
+        # froze).
         w2 = fmin(w.norm_sq(), 4.0 * GYR_MAX * GYR_MAX)
-        q_att = (p.gyr_noise * p.gyr_noise + p.gyr_rate_err * p.gyr_rate_err * w2) * dt
+        q_att = (fmin(p.gyr_noise * p.gyr_noise * dt, P_TT)
+                 + fmin(p.gyr_rate_err * p.gyr_rate_err * w2 * dt, P_TT))
         q_b = p.bias_rw * p.bias_rw * dt
         q_lin = s_lin * (1.0 - c * c)
         for i, qv in enumerate([q_att] * 3 + [q_b] * 3 + [q_lin] * 3):
@@ -374,7 +400,7 @@ class Eskf(Estimator):
         use_acc = logical_and(acc_ok, run)
         for k in range(3):
             P, dx = scalar_update(P, dx, h_rows[k], y_acc[k], r_acc, r_acc_min, use_acc,
-                                     p.acc_gate)
+                                     p.acc_gate, ACC_GATE_MAX)
 
         # -- magnetometer: heading -----------------------------------------------------------------
         m_e = Vec3(*(assume(c_, -1.0, 1.0) for c_ in q.rotate(m_unit)))
@@ -399,8 +425,10 @@ class Eskf(Estimator):
                                                    dist_t >= p.mag_reject_time))
         accept = all_of(use_mag, run, logical_or(logical_not(disturbed), relearn))
         h_mag = [ZERO, ZERO, 1.0] + [ZERO] * 6
-        P, dx = scalar_update(P, dx, h_mag, y_mag, r_mag, MAG_NOISE_MIN ** 2 / (2.0 * DT_MAX),
-                                 accept)
+        r_mag_min = MAG_NOISE_MIN ** 2 / (2.0 * DT_MAX)
+        # |y_mag - dx_z| <= 1 + DX_BOUND[2]: the largest normalised innovation
+        P, dx = scalar_update(P, dx, h_mag, y_mag, r_mag, r_mag_min, accept,
+                                 nu_bound=(1.0 + DX_BOUND[2]) / math.sqrt(r_mag_min))
         k_ref = fmin(dt / p.tau_mag_ref, 1.0)
         # a convex combination of the reference and the reading: within [0, N_MAX], so ref_n
         # keeps its format (interval arithmetic alone gives twice the range: one bit lost and
