@@ -41,6 +41,9 @@ from .segments import SpecError, take
 from .timing import Timing, sample_count
 
 RIGS = {"body": body_rig, "gait": gait_rig, "hinge": hinge_rig}
+#: most samples one sensor stream may have (a simulation needs about 0.7 kB per sample: a larger
+#: rate x duration would run out of memory and be killed instead of failing with a message)
+MAX_SAMPLES = 10_000_000
 
 
 @dataclass
@@ -136,6 +139,12 @@ def _build(sc: Scenario) -> Built:
     duration = rig.duration if sc.duration_s is None else float(sc.duration_s)
     if not duration > 0:
         raise SpecError("duration_s: must be > 0")
+    for name, m in sensors.items():
+        rate = max(m.rate_hz, m.mag_rate)
+        if duration * rate > MAX_SAMPLES:
+            raise SpecError(f"{duration:g} s at {rate:g} Hz is {duration * rate:.3g} samples for "
+                            f"sensor {name}; at most {MAX_SAMPLES:,} (lower the rate or the "
+                            f"duration)")
     return Built(rig, sensors, Earth.from_dict(sc.earth), Timing.from_dict(sc.timing),
                  Disturbances.from_list(sc.disturbances, np.random.default_rng(ss_dist)), duration)
 

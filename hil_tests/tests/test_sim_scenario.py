@@ -215,3 +215,13 @@ def test_reference_filter_agrees_with_truth(name, unit, max_total):
                                                np.ascontiguousarray(r.mag))
     total, heading, incl = _broad_errors_deg(out["quat9D"], r.q_true, r.movement)
     assert total < max_total, (total, heading, incl)
+
+
+def test_cli_refuses_a_rate_that_would_exhaust_memory(tmp_path, capsys):
+    """--rate 1e9 used to allocate until the process was killed (exit 137, no message)."""
+    with pytest.raises(KinefuseError, match="samples for sensor imu; at most"):
+        _cli(["sim", "run", "rest", "--rate", "1e9", "--duration", "1",
+              "--out", str(tmp_path / "r.npz")], capsys)
+    with pytest.raises(KinefuseError, match="at most"):
+        _cli(["sim", "run", "rest", "--mag-rate", "1e8", "--out", str(tmp_path / "r.npz")], capsys)
+    assert not (tmp_path / "r.npz").exists()
