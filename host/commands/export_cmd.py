@@ -31,11 +31,28 @@ def run(args) -> int:
         total = sum(a.size for ds in df.streams.values() for a in ds.arrays.values())
         prog.update(task, description="writing CSV", total=max(1, total), completed=0)
         files = export_csv(df, args.out, messages, progress=lambda name, n: prog.advance(task, n))
+    warnings = _warnings(df)
+    for w in warnings:
+        con.print(f"[yellow]warning:[/] {w}")
     if args.json:
-        print_json({"file": str(df.path), "out": str(args.out), "files": files})
+        print_json({"file": str(df.path), "out": str(args.out), "files": files, "warnings": warnings})
     else:
         for f in files:
             con.print(f"{f['file']}: {f['rows']:,} rows")
         if not files:
             con.print("no messages to export")
     return 0
+
+
+def _warnings(df) -> list[str]:
+    """What the exported CSVs miss: a truncated file or damaged chunks (as decode and stats say)."""
+    rec = df.recording
+    out = []
+    if rec is None:
+        return out
+    if rec.truncated:
+        out.append(f"{df.path}: the recording is truncated (ends inside a chunk): exported up to the cut")
+    if rec.damaged_chunks:
+        out.append(f"{df.path}: {rec.damaged_chunks} damaged chunk(s), {rec.recovered_chunks} "
+                   f"recovered: frames in the damaged parts are missing from the CSVs")
+    return out

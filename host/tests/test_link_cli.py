@@ -155,3 +155,17 @@ def test_stats_on_a_tlog(run, tmp_path):
     assert u["messages"]["KF_RAW_SAMPLE"]["samples_lost"] == 1
     # host times count from the first tlog stamp, which is 1.5 ms after device time 0: offset 0
     assert abs(u["clock"]["drift_ppm"]) < 1 and u["clock"]["offset_s"] == pytest.approx(0.0, abs=1e-6)
+
+
+def test_export_of_a_truncated_recording_warns(run, tmp_path):
+    """export said nothing about a cut file (decode and stats did): the CSVs looked complete."""
+    out = tmp_path / "t.kfr"
+    assert run("record", "--port", "fake:rate=300", "--out", out, "--duration", "1.5")[0] == 0
+    data = out.read_bytes()
+    out.write_bytes(data[: len(data) * 2 // 3 + 7])
+    code, stdout, err = run("export", out, "--out", tmp_path / "csv", "--json")
+    assert code == 0
+    assert any("truncated" in w for w in json.loads(stdout)["warnings"])
+    assert "warning:" in err and "truncated" in err
+    code, stdout, err = run("export", out, "--out", tmp_path / "csv2")
+    assert code == 0 and "truncated" in stdout + err
