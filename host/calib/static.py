@@ -118,6 +118,7 @@ def require_windows(windows: list[StaticWindow], n_min: int, what: str,
     if len(windows) < n_min:
         raise KinefuseError(
             f"{what}: found {len(windows)} static window(s), need at least {n_min} "
-            f"(still ≥ {config.min_duration_s:g} s with gyro std ≤ {config.gyr_std_max:g} rad/s "
-            f"and acc std ≤ {config.acc_std_max:g} m/s²; adjust the thresholds if the "
-            f"recording is noisier)")
+            f"(still ≥ {config.min_duration_s:g} s with gyro std ≤ {config.gyr_std_max:g} rad/s, "
+            f"mean |gyro| ≤ {config.gyr_abs_max:g} rad/s and acc std ≤ {config.acc_std_max:g} "
+            f"m/s²; adjust the thresholds (--gyr-std-max, --gyr-abs-max, --acc-std-max, "
+            f"--min-duration) if the recording is noisier)")

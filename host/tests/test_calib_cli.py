@@ -153,3 +153,19 @@ def test_mag_cli(run, tmp_path):
     kinefuse_csv.write(str(tmp_path / "nomag.csv"), rec)
     code, out, err = run("calibrate", "mag", "--input", tmp_path / "nomag.csv")
     assert code == 2 and "no magnetometer" in err and err.count("\n") == 1
+
+
+def test_too_few_windows_names_the_mean_rate_threshold(run, tmp_path):
+    """A still unit whose gyroscope has a 0.5 rad/s bias fails the mean-|gyro| test only; the
+    error used to list the other thresholds and not that one (nor the flags to change)."""
+    t = np.arange(0, 10, 0.01)
+    rec = simulate.imu(t, np.broadcast_to(Q.identity(), (len(t), 4)), rng=np.random.default_rng(2),
+                       gyr_bias=[0.5, 0.0, 0.0])
+    kinefuse_csv.write(str(tmp_path / "biased.csv"), rec)
+    code, out, err = run("calibrate", "gyro", "--input", tmp_path / "biased.csv")
+    assert code == 2 and err.count("\n") == 1, err
+    assert "mean |gyro| ≤ 0.35 rad/s" in err and "--gyr-abs-max" in err, err
+    code, out, err = run("calibrate", "gyro", "--input", tmp_path / "biased.csv", "--gyr-abs-max", "0.6",
+                         "--json")
+    assert code == 0, err
+    assert abs(json.loads(out)["bias"][0] - 0.5) < 0.01
