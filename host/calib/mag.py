@@ -162,6 +162,9 @@ def gate_norm(m_cal, tol: float = 0.5) -> tuple[np.ndarray, np.ndarray]:
 
     Returns (gated copy, boolean mask of kept samples).
     """
+    if not (np.isfinite(tol) and tol > 0):
+        raise KinefuseError(f"the magnetometer gate must be a positive number of µT, got {tol:g} "
+                            f"(--gate, --mag-gate)")
     m = np.array(m_cal, dtype=float, copy=True)
     n = np.linalg.norm(m, axis=1)
     keep = np.abs(n - n.mean()) <= tol

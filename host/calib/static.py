@@ -33,6 +33,23 @@ class StaticConfig:
     def to_dict(self) -> dict:
         return asdict(self)
 
+    def check(self) -> "StaticConfig":
+        """Itself, after a one-line error for a threshold that is not a positive finite number
+        (``trim_s`` may be 0); the flag is named as ``calibrate`` and ``report`` spell it."""
+        import math
+        for name, v in self.to_dict().items():
+            ok = math.isfinite(v) and (v >= 0 if name == "trim_s" else v > 0)
+            if not ok:
+                flag = _FLAGS.get(name, name)
+                raise KinefuseError(f"static detection: {name} must be positive and finite, got "
+                                    f"{v:g} ({flag})")
+        return self
+
+
+_FLAGS = {"window_s": "--static-window", "gyr_std_max": "--gyr-std-max",
+          "gyr_abs_max": "--gyr-abs-max", "acc_std_max": "--acc-std-max",
+          "min_duration_s": "--min-duration"}
+
 
 @dataclass(frozen=True)
 class StaticWindow:

@@ -103,10 +103,7 @@ def _static_cfg(args):
     cfg = static.StaticConfig(window_s=args.static_window, gyr_std_max=args.gyr_std_max,
                               gyr_abs_max=args.gyr_abs_max, acc_std_max=args.acc_std_max,
                               min_duration_s=args.min_duration)
-    for name, v in cfg.to_dict().items():
-        if not v > 0 and name != "trim_s":
-            raise KinefuseError(f"static detection: {name} must be positive, got {v:g}")
-    return cfg
+    return cfg.check()
 
 
 def _reader(args):

@@ -169,3 +169,22 @@ def test_too_few_windows_names_the_mean_rate_threshold(run, tmp_path):
                          "--json")
     assert code == 0, err
     assert abs(json.loads(out)["bias"][0] - 0.5) < 0.01
+
+
+@pytest.mark.parametrize("argv, text", [
+    (["gyro", "--static-window", "0"], "window_s must be positive and finite, got 0 (--static-window)"),
+    (["gyro", "--static-window", "inf"], "(--static-window)"),         # was an internal error (exit 3)
+    (["gyro", "--min-duration", "nan"], "(--min-duration)"),           # was accepted: every run a window
+    (["gyro", "--gyr-std-max", "-1"], "(--gyr-std-max)"),
+    (["accel", "--acc-std-max", "0"], "acc_std_max must be positive"),
+    (["mag", "--gate", "-1"], "gate must be a positive number of µT, got -1"),
+    (["mag", "--gate", "nan"], "gate must be a positive number"),
+])
+def test_bad_static_and_gate_values_are_one_line_errors(run, tmp_path, argv, text):
+    """calibrate took --static-window 0/-1 and --min-duration nan silently (report refused them)."""
+    rng = np.random.default_rng(0)
+    rec = simulate.tumble(20.0, 50.0, rng=rng)
+    kinefuse_csv.write(str(tmp_path / "r.csv"), rec)
+    code, out, err = run("calibrate", argv[0], "--input", tmp_path / "r.csv", *argv[1:])
+    assert code == 2 and out == "" and err.count("\n") == 1, (code, out, err)
+    assert err.startswith("kinefuse: error:") and text in err, err
