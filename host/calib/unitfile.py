@@ -22,6 +22,7 @@ reports the first problem in one line naming the file.
 """
 from __future__ import annotations
 
+import contextlib
 import datetime as _dt
 import json
 import math
@@ -129,16 +130,25 @@ def load(path: str) -> dict:
         raise KinefuseError(f"{path}: calibration file not found") from None
     except json.JSONDecodeError as exc:
         raise KinefuseError(f"{path}: line {exc.lineno}: not valid JSON ({exc.msg})") from None
+    except UnicodeDecodeError:
+        raise KinefuseError(f"{path}: not a calibration file (binary, not UTF-8 JSON text)") from None
+    except OSError as exc:
+        raise KinefuseError(f"{path}: cannot read the calibration file ({exc.strerror or exc})") from None
     return validate(doc, path)
 
 
 def save(doc: dict, path: str) -> None:
     validate(doc, path)
     tmp = f"{path}.tmp{os.getpid()}"
-    with open(tmp, "w", encoding="utf-8") as f:
-        json.dump(doc, f, indent=2)
-        f.write("\n")
-    os.replace(tmp, path)
+    try:
+        with open(tmp, "w", encoding="utf-8") as f:
+            json.dump(doc, f, indent=2)
+            f.write("\n")
+        os.replace(tmp, path)
+    except OSError as exc:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise KinefuseError(f"cannot write {path}: {exc.strerror or exc}") from None
 
 
 def load_or_new(path: str, serial: str | None, sensor_ranges: dict | None) -> dict:

@@ -188,3 +188,24 @@ def test_bad_static_and_gate_values_are_one_line_errors(run, tmp_path, argv, tex
     code, out, err = run("calibrate", argv[0], "--input", tmp_path / "r.csv", *argv[1:])
     assert code == 2 and out == "" and err.count("\n") == 1, (code, out, err)
     assert err.startswith("kinefuse: error:") and text in err, err
+
+
+def test_unit_file_paths_that_cannot_be_read_or_written(run, tmp_path):
+    """--out in a missing folder, --out/--calib naming a folder, --calib naming a binary file:
+    each was an internal error (FileNotFoundError, IsADirectoryError, UnicodeDecodeError)."""
+    rec = simulate.tumble(20.0, 50.0, rng=np.random.default_rng(0))
+    kinefuse_csv.write(str(tmp_path / "r.csv"), rec)
+    (tmp_path / "folder").mkdir()
+    (tmp_path / "bin.json").write_bytes(b"\x89HDF\r\n\x1a\n" + bytes(range(256)))
+    cases = [
+        (["mag", "--input", tmp_path / "r.csv", "--out", tmp_path / "no" / "u.json", "--serial", "7"],
+         "cannot write"),
+        (["mag", "--input", tmp_path / "r.csv", "--out", tmp_path / "folder", "--serial", "7"],
+         "Is a directory"),
+        (["apply", "--calib", tmp_path / "bin.json", "--dry-run"], "not a calibration file"),
+        (["apply", "--calib", tmp_path / "folder", "--dry-run"], "cannot read"),
+    ]
+    for argv, text in cases:
+        code, out, err = run("calibrate", *argv)
+        assert code == 2 and err.count("\n") == 1 and text in err, (argv, code, err)
+    assert not list((tmp_path / "folder").iterdir()) and not (tmp_path / "no").exists()
