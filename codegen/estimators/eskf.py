@@ -40,6 +40,17 @@ Why: one format for all 45 entries would have to cover 25 (m/s^2)^2 and resolve 
 that noise tens of LSB above the resolution; the per-term bounds sqrt(P_ii P_jj) of the update
 give every product a format of its own scale.  A value beyond a range saturates (the heading
 variance without a magnetometer is reported at the 18 deg ceiling).
+Interval arithmetic sees neither a convex combination nor a clamp that follows, so where a value
+is bounded by what comes after it, the bound is stated (`assume`), never changing a float value:
+the reference field magnitude (a convex combination of itself and the reading: with twice its
+range, x.ref_n lost a bit and was rounded up every sample, +0.02 uT on trial 32, enough to move
+the norm test on borderline readings and the heading by 0.6 deg), the attitude process noise
+(each term capped at P_TT, which P + q is clamped to: otherwise P_tt + q was rounded to Q8.23
+every sample), each Joseph-form entry (within its block's range), and the state corrections
+g nu (nu clamped at the largest value an applied update can have, the largest gate or the
+innovation bound over sqrt(r_min), instead of NU_MAX; the product within twice the error
+state's range, which dx + g nu is clamped to: with NU_MAX the bias corrections were rounded to
+1.5e-8 rad/s per update, which left P_bb 2 % and P_tb 5 % off the reference).
 """
 from __future__ import annotations
 
