@@ -182,9 +182,20 @@ def _finish(args, kind, res, title, inputs) -> int:
     return 0
 
 
+def _check_cycle_args(args) -> None:
+    """One-line errors for cycle options that would silently change which cycles are reported."""
+    import math
+    if args.drop_edge_cycles < 0:
+        raise KinefuseError(f"--drop-edge-cycles {args.drop_edge_cycles}: must be 0 or more")
+    if not (math.isfinite(args.max_cycle_rmse) and args.max_cycle_rmse > 0):
+        raise KinefuseError(f"--max-cycle-rmse {args.max_cycle_rmse:g}: must be a positive number of "
+                            f"degrees")
+
+
 def run_knee(args) -> int:
     from kinefuse.host.calib import static, unitfile
     from kinefuse.host.kinematics import report
+    _check_cycle_args(args)
     if args.calib_functional is not None:
         if args.calib_lying is not None:
             raise KinefuseError("give --calib-lying (two-posture) or --calib-functional, not both")
@@ -220,6 +231,7 @@ def run_knee(args) -> int:
 def run_elbow(args) -> int:
     from kinefuse.host.calib import unitfile
     from kinefuse.host.kinematics import report
+    _check_cycle_args(args)
     read = _reader(args)
     units = None
     if args.unit_cal:

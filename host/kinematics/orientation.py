@@ -177,8 +177,10 @@ def resolve_filter(spec) -> Callable:
             if not callable(f):
                 raise KinefuseError(f"orientation filter {spec!r} is not callable")
             return f
-    raise KinefuseError(f"unknown orientation filter {spec!r}; use one of {', '.join(FILTERS)} "
-                        f"or 'module:function'")
+    from kinefuse.host import runner
+    raise KinefuseError(f"unknown orientation filter {spec!r}; use a kinefuse IMU filter "
+                        f"({', '.join(runner.imu_filter_names())}; name@q for fixed point), "
+                        f"{', '.join(FILTERS)} or 'module:function'")
 
 
 def yaw_alignment(q_GB_ref, q_GB_other) -> np.ndarray:

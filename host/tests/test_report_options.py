@@ -132,3 +132,18 @@ def test_reflection_refused_with_and_without_out(run, tmp_path):
         assert "a reflection" in err and "det = -0.99" in err, err
         errs.append(err)
     assert errs[0] == errs[1] and not (tmp_path / "u.json").exists()
+
+
+@pytest.mark.parametrize("extra, text", [
+    (["--drop-edge-cycles", "-1"], "--drop-edge-cycles -1: must be 0 or more"),   # reported 1 of 1 cycles
+    (["--max-cycle-rmse", "nan"], "--max-cycle-rmse nan: must be a positive"),    # kept 2 of 5 silently
+    (["--max-cycle-rmse", "0"], "--max-cycle-rmse 0: must be a positive"),
+    (["--filter", "flagsip"], "use a kinefuse IMU filter (madgwick"),            # listed only 'simple'
+])
+def test_bad_cycle_and_filter_options_are_refused(run, files, extra, text):
+    d, _ = files
+    out = d / f"bad{abs(hash(tuple(extra)))}"
+    code, stdout, err = run(*_knee(d, *extra, "--out", out))
+    assert code == 2 and stdout == "" and err.count("\n") == 1, (code, err)
+    assert err.startswith("kinefuse: error:") and text in err, err
+    assert not out.exists()
