@@ -280,6 +280,10 @@ def run(args) -> int:
     name = args.filter or runner.default_filter()
     if name not in runner.filter_names():
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
+    if args.repeat < 1:
+        raise KinefuseError(f"--repeat {args.repeat}: must be at least 1")
+    if args.model_samples < 1:
+        raise KinefuseError(f"--model-samples {args.model_samples}: must be at least 1")
     from kinefuse.host import angle_series
     angle = angle_series.is_angle_filter(name)
     if not angle and name not in runner.imu_filter_names():

@@ -135,3 +135,13 @@ def test_bench_bitexact_no_ref_compares_bits_only(short_trial):
     for system in ("f32", "q"):
         assert res[system]["differing"] == 0 and res[system]["samples"] > 5000
         assert res[system]["rms_deg"] is None and res[system]["max_deg"] is None
+
+
+@pytest.mark.parametrize("opt, text", [(["--repeat", "0"], "--repeat 0: must be at least 1"),
+                                       (["--model-samples", "0"], "--model-samples 0: must be"),
+                                       (["--model-samples", "-5"], "--model-samples -5: must be")])
+def test_bench_speed_refuses_non_positive_counts(short_trial, opt, text):
+    """--repeat 0 printed '-' for Fusion and VQF and exit 0; --model-samples 0 was an internal
+    error, -5 timed all but the last 5 samples."""
+    r = kf("bench", "speed", "--data", str(short_trial), "--filter", "madgwick", *opt)
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and text in r.stderr, r.stderr
