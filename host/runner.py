@@ -22,6 +22,7 @@ class FilterResult:
     q: np.ndarray                                   # (N, 4) w,x,y,z sensor -> earth (ENU)
     status: dict[str, np.ndarray] = dataclasses.field(default_factory=dict)
     outputs: dict[str, np.ndarray] = dataclasses.field(default_factory=dict)
+    units: dict[str, str] = dataclasses.field(default_factory=dict)   # output name -> unit
 
 
 def filter_names() -> list[str]:
@@ -90,7 +91,8 @@ def run_filter(name: str, impl: str, trial, params: dict[str, float] | None = No
     q = np.asarray(out["q"], dtype=np.float64)
     status = {k: np.asarray(v).reshape(len(q), -1).squeeze(axis=1)
               for k, v in out.items() if k != "q" and np.asarray(v).reshape(len(q), -1).shape[1] == 1}
-    return FilterResult(q=q, status=status, outputs=out)
+    units = {v.name: v.unit for v in est.outputs}
+    return FilterResult(q=q, status=status, outputs=out, units=units)
 
 
 def recording_inputs(rec) -> types.SimpleNamespace:
@@ -132,6 +134,19 @@ FRAME_TEXT = {"enu": "earth frame ENU (x East, y North, z Up)",
               "ned": "earth frame NED (x North, y East, z Down)"}
 
 
+#: status outputs that are sensor->earth quaternions or earth-frame covariances (xx, xy, xz, yy,
+#: yz, zz): written in the requested earth frame like q
+EARTH_QUATERNIONS = ("q6", "q9")
+EARTH_COVARIANCES = ("cov_att",)
+
+
+def _cov6_enu_to_ned(c: np.ndarray) -> np.ndarray:
+    """(xx, xy, xz, yy, yz, zz) of an ENU covariance as the NED one, S P Sᵀ with S the swap
+    x <-> y, z -> -z."""
+    xx, xy, xz, yy, yz, zz = (c[:, i] for i in range(6))
+    return np.column_stack([yy, xy, 0.0 - yz, xx, 0.0 - xz, zz])   # 0.0 - v: no -0 in the CSV
+
+
 def swap_enu_ned(q: np.ndarray) -> np.ndarray:
     """Sensor->ENU quaternions as sensor->NED, or NED as ENU (the swap is its own inverse)."""
     from kinefuse.host.kinematics.quat import mul
@@ -158,13 +173,27 @@ def write_estimates_csv(path, t, res: FilterResult, comment: str, status: bool =
     cols = [np.asarray(t, dtype=np.float64), q[:, 0], q[:, 1], q[:, 2], q[:, 3]]
     header = ["t", "w", "x", "y", "z"]
     if status:
+        described = []
         for k, v in res.outputs.items():
             if k == "q":
                 continue
-            v = np.asarray(v).reshape(n, -1)
+            v = np.asarray(v).reshape(n, -1).astype(float)
+            if k in EARTH_QUATERNIONS and v.shape[1] == 4:
+                v = to_earth_frame(v, frame)            # q6, q9: sensor->frame like q
+            elif k in EARTH_COVARIANCES and v.shape[1] == 6 and frame == "ned":
+                v = _cov6_enu_to_ned(v)
             for i in range(v.shape[1]):
-                cols.append(v[:, i].astype(float))
+                cols.append(v[:, i])
                 header.append(k if v.shape[1] == 1 else f"{k}_{i}")
+            unit = res.units.get(k, "")
+            described.append(f"{k} {unit}".strip() if unit else k)
+        if described:
+            f = frame.upper()
+            notes = ([f"{', '.join(k for k in EARTH_QUATERNIONS if k in res.outputs)} sensor->{f}"]
+                     if any(k in res.outputs for k in EARTH_QUATERNIONS) else [])
+            notes += [f"{k} in the {f} frame" for k in EARTH_COVARIANCES if k in res.outputs]
+            comment = (f"{comment}; status columns: {', '.join(described)}"
+                       + (f" ({'; '.join(notes)})" if notes else ""))
     try:
         with open(path, "w") as f:
             f.write(f"# {comment}\n")

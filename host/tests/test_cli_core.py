@@ -145,3 +145,40 @@ def test_bench_speed_refuses_non_positive_counts(short_trial, opt, text):
     error, -5 timed all but the last 5 samples."""
     r = kf("bench", "speed", "--data", str(short_trial), "--filter", "madgwick", *opt)
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and text in r.stderr, r.stderr
+
+
+def test_run_ned_status_columns_follow_the_frame(short_trial, tmp_path):
+    """--frame ned --status wrote q6/q9 (flagship) and cov_att (eskf) still in ENU under a
+    header saying NED, and the status columns' units were nowhere in the file."""
+    from kinefuse.host.kinematics import quat as Q
+    swap = np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])
+    cols = {}
+    for filt in ("flagship", "eskf"):
+        for frame in ("enu", "ned"):
+            out = tmp_path / f"{filt}-{frame}.csv"
+            r = kf("run", "--filter", filt, "--input", str(short_trial), "--out", str(out), "--frame",
+                   frame, "--status")
+            assert r.returncode == 0, r.stderr
+            comment, header = out.read_text().splitlines()[:2]
+            cols[filt, frame] = dict(zip(header.split(","), np.loadtxt(out, delimiter=",", skiprows=2).T))
+            cols[filt, frame]["#"] = comment
+    for frame in ("enu", "ned"):
+        c = cols["flagship", frame]
+        assert "bias rad/s" in c["#"] and "rejected samples" in c["#"]
+        assert f"q6, q9 sensor->{frame.upper()}" in c["#"]
+    for k in ("q6", "q9"):
+        q_enu = np.column_stack([cols["flagship", "enu"][f"{k}_{i}"] for i in range(4)])
+        q_ned = np.column_stack([cols["flagship", "ned"][f"{k}_{i}"] for i in range(4)])
+        assert np.allclose(swap @ Q.to_matrix(q_enu), Q.to_matrix(q_ned), atol=1e-6)
+    e, n = cols["eskf", "enu"], cols["eskf", "ned"]
+    assert "cov_att rad^2" in n["#"] and "cov_att in the NED frame" in n["#"]
+    idx = [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)]
+
+    def full(c):
+        P = np.zeros((len(c["t"]), 3, 3))
+        for m, (i, j) in enumerate(idx):
+            P[:, i, j] = P[:, j, i] = c[f"cov_att_{m}"]
+        return P
+    P_enu, P_ned = full(e), full(n)
+    assert np.abs(P_enu[:, 0, 2]).max() > 0                    # not a diagonal covariance throughout
+    np.testing.assert_allclose(swap @ P_enu @ swap.T, P_ned, rtol=0, atol=1e-12)
