@@ -209,6 +209,10 @@ def _read_npz(path: Path) -> dict:
     except (OSError, ValueError, zipfile.BadZipFile, EOFError) as exc:
         raise KinefuseError(f"{path}: not a readable .npz file ({_short(exc)})") from None
     missing = [k for k in _NPZ_KEYS if k not in raw]
+    if missing and {"q_true", "t_true", "meta"} <= set(raw):
+        raise KinefuseError(f"{path}: a simulator recording (kinefuse sim run --out .npz), not a trial "
+                            f"excerpt; write it as .mat (kinefuse sim run NAME --out {path.stem}.mat), "
+                            f"the BROAD layout the filters and benchmarks read")
     if missing:
         raise KinefuseError(f"{path}: not a kinefuse trial excerpt, missing {', '.join(missing)}")
     raw["name"] = str(raw["name"]) if "name" in raw else path.stem

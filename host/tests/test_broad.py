@@ -171,3 +171,15 @@ def test_window():
     assert np.array_equal(w.gyr, t.gyr[100:300]) and w.name == t.name
     with pytest.raises(KinefuseError):
         t.window(10, t.n + 1)
+
+
+def test_simulator_npz_names_the_mat_output(tmp_path):
+    """kinefuse run --input x.npz from `kinefuse sim run --out x.npz` said only 'missing quat_ref,
+    rate_hz'; the .mat output is the one the filters read."""
+    from kinefuse.hil_tests import sim
+    rec = sim.simulate("rest", seed=0, duration_s=1.0)
+    rec.save(str(tmp_path / "rest.npz"))
+    with pytest.raises(KinefuseError, match=r"a simulator recording .*--out rest\.mat"):
+        broad.load_trial(tmp_path / "rest.npz")
+    rec.save(str(tmp_path / "rest.mat"))
+    assert broad.load_trial(tmp_path / "rest.mat").n == len(rec)
