@@ -98,8 +98,9 @@ def run_filter(name: str, impl: str, trial, params: dict[str, float] | None = No
 def recording_inputs(rec) -> types.SimpleNamespace:
     """A reader :class:`~kinefuse.host.readers.Recording` as filter input (for :func:`run_filter`).
 
-    ``dt`` per sample from the recording's time stamps (the first sample gets the median step):
-    gaps stay gaps, so a step beyond the filters' limit (``DT_MAX`` = 1 s) makes the filter
+    ``dt`` per sample from the recording's time stamps (the first sample gets the median step;
+    a unit recording's steps come from the unit's own sample clock, ``device_time_s``): gaps
+    stay gaps, so a step beyond the filters' limit (``DT_MAX`` = 1 s) makes the filter
     reject that sample.  ``mag_valid`` is True on the samples carrying a new magnetometer
     reading (``rec.mag_t``; every sample when the file has one magnetometer value per sample),
     False throughout without a magnetometer (``mag`` is then zero).
@@ -108,6 +109,14 @@ def recording_inputs(rec) -> types.SimpleNamespace:
     t = np.asarray(rec.t, dtype=np.float64)
     n = len(t)
     d = np.diff(t)
+    dev = (getattr(rec, "channels", None) or {}).get("device_time_s")
+    if dev is not None and len(dev) == n:
+        # a unit recording: the steps of the unit's own sample clock, which its filter used.
+        # t maps that clock to the host's by a fitted line, which frames that waited in a
+        # buffer before the host read them can bend; across a reboot (the device clock
+        # restarts) the host-time step stays
+        dd = np.diff(np.asarray(dev, dtype=np.float64))
+        d = np.where(dd > 0, dd, d)
     first = float(np.median(d)) if d.size else 0.0
     dt = np.concatenate([[first], d]) if n else np.zeros(0)
     if rec.mag is None:

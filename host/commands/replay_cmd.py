@@ -187,6 +187,32 @@ def _compare(unit, q_replay: np.ndarray, rec) -> str:
     ang = ang[np.isfinite(ang)]
     if not ang.size:
         return f"unit {rec.metadata['unit']}: no finite orientation pair to compare"
-    return (f"unit {rec.metadata['unit']} on-board orientation vs replay{note}: {ang.size} of {total} "
+    line = (f"unit {rec.metadata['unit']} on-board orientation vs replay{note}: {ang.size} of {total} "
             f"KF_ORIENTATION messages matched; angle RMS {np.sqrt(np.mean(ang ** 2)):.2f} deg, "
             f"max {ang.max():.2f} deg, median {np.median(ang):.2f} deg")
+    gap = _first_lost(rec)
+    if gap is not None:
+        # the unit's filter used the samples the recording lost; the replay never saw them, so
+        # after the first loss the two need not agree: the figure before it is the comparison
+        before = np.degrees(angle_between(q_unit, q_replay[idx]))[idx < gap]
+        before = before[np.isfinite(before)]
+        t_gap = float(np.asarray(rec.t)[gap])
+        line += (f"; samples were lost just before t = {t_gap:.3f} s (the unit's filter used them, "
+                 f"the replay cannot): up to there, {before.size} message(s)")
+        if before.size:
+            line += (f", angle RMS {np.sqrt(np.mean(before ** 2)):.2f} deg, "
+                     f"max {before.max():.2f} deg")
+    return line
+
+
+def _first_lost(rec) -> int | None:
+    """Index of the first replayed sample that follows a lost one (a sample-counter gap)."""
+    from kinefuse.host.link.stats import counter_analysis
+    c = rec.channels.get("sample_counter")
+    if c is None or len(c) < 2:
+        return None
+    c = np.asarray(c, np.int64)
+    stride = counter_analysis(c)["stride"] or 1
+    d = np.diff(c)
+    after = np.flatnonzero(d > stride)
+    return int(after[0]) + 1 if after.size else None

@@ -82,6 +82,7 @@ def fit_clock(device_s: np.ndarray, host_s: np.ndarray, blocks: int = 40) -> dic
 
 DRIFT_PLAUSIBLE_PPM = 1000.0   # crystals: tens of ppm; RC oscillators: a few thousand at worst
 STALE_EXCESS_S = 0.05          # leading frames this much later than the live line: queued before
+STALE_WINDOW_S = 2.0           # ... than a frame sent within this much unit time after them
 JUMP_S = 0.02                  # a rise of the minimum delay by this much: a latency/offset jump
 
 
@@ -89,20 +90,28 @@ def leading_stale(device_s: np.ndarray, host_s: np.ndarray) -> int:
     """Number of leading frames that were queued before the recording started (the bytes a pty
     or serial buffer held, delivered in a burst: host time barely moves while device time does).
 
-    Fit on the last 80 % and count the leading run whose delay above that line exceeds
-    STALE_EXCESS_S (0 when the fit is not possible)."""
+    A frame is stale when a frame sent at most STALE_WINDOW_S (unit time) after it arrived with
+    a delay (host - device time) more than STALE_EXCESS_S smaller: it waited that much longer.
+    Over that window clock drift moves the delay by 2 ms at most (1000 ppm), so no fit is
+    needed, and a burst of any length is found (one of the window's length waits for the next
+    window's frames).  Returns the leading run; 0 when fewer than 10 frames would remain."""
     x = np.asarray(device_s, np.float64)
     y = np.asarray(host_s, np.float64)
     n = x.size
-    tail = fit_clock(x[n // 5:], y[n // 5:]) if n >= 50 else None
-    if tail is None:
+    if n < 20:
         return 0
-    excess = y - (tail["offset_s"] + tail["slope"] * x)
-    late = excess > STALE_EXCESS_S
+    step = float(np.median(np.diff(x)))
+    if not step > 0:
+        return 0
+    from scipy.ndimage import minimum_filter1d
+    w = int(min(n, max(2, round(STALE_WINDOW_S / step))))
+    delay = y - x
+    floor = minimum_filter1d(delay, size=w, origin=-(w // 2), mode="nearest")   # over [i, i + w)
+    late = delay - floor > STALE_EXCESS_S
     if not late[0]:
         return 0
     k = int(np.argmin(late)) if not late.all() else n
-    return k if k < n // 2 else 0       # a majority of "stale" frames is a bad fit, not a burst
+    return k if n - k >= 10 else 0
 
 
 def fit_clock_checked(device_s, host_s, blocks: int = 40) -> dict | None:

@@ -21,7 +21,8 @@ recording started (``metadata["start_unix_ns"]`` gives UTC of ``t = 0``).  Each 
 time (``time_boot_us``) is mapped with the device→host clock fit of ``kinefuse stats``
 (:func:`kinefuse.host.link.stats.fit_clock`: host = offset + slope × device on the lower
 envelope of the receive times, i.e. the unit's clock offset and drift are removed and link
-jitter is not), one fit per device-clock segment (a reboot starts a new one).  All units of one
+jitter is not; a leading burst of frames queued before the recording is left out of the fit and
+mapped by it), one fit per device-clock segment (a reboot starts a new one).  All units of one
 recording therefore share one time base: their samples are synchronised to within the
 difference of their minimum link latencies (about a millisecond over USB serial).  The fit
 parameters are in ``metadata["clock"]``; ``metadata["clock_id"]`` is equal for recordings on
@@ -174,7 +175,7 @@ def _unwrap(cnt: np.ndarray) -> np.ndarray:
 def read(path: str, *, unit=None, **_) -> Recording:
     """One unit of a ``.kfr`` recording (or raw MAVLink capture) as a :class:`Recording`."""
     from kinefuse.host.link.dialect import RAW_SCALE
-    from kinefuse.host.link.stats import counter_analysis, fit_clock
+    from kinefuse.host.link.stats import counter_analysis, fit_clock, leading_stale
     path = str(path)
     df = _decode(path)
     found = _units(df)
@@ -209,7 +210,10 @@ def read(path: str, *, unit=None, **_) -> Recording:
         if host is None:
             t_seg = dev_s
         else:
-            fit = fit_clock(dev_s, host[idx])
+            # frames queued before the recording (a pty or serial buffer's backlog) arrive in a
+            # burst that would bend the fit: fitted without them, mapped like the rest
+            stale = leading_stale(dev_s, host[idx])
+            fit = fit_clock(dev_s[stale:], host[idx][stale:])
             if fit is None:  # too few samples for the robust fit: offset only, on the lower envelope
                 fit = {"slope": 1.0, "offset_s": float(np.min(host[idx] - dev_s)), "drift_ppm": 0.0,
                        "points": int(idx.size)}

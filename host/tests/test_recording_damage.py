@@ -213,3 +213,17 @@ def test_kfr_reader_warning_counts_recovered_and_skipped_chunks(tmp_path):
     assert "2 damaged chunk(s): 1 recovered" in damage[0] and "1 skipped" in damage[0], damage
     assert "chunk(s) skipped" not in damage[0]                   # the old message claimed all skipped
     assert rec.metadata["samples_lost"] == 51 + 1                 # chunk 2 and one frame of chunk 5
+
+
+def test_a_stale_burst_longer_than_the_live_part_is_found_and_the_reader_maps_it(tmp_path):
+    """30 s queued before a 20 s recording (a unit that streamed into a pty nobody read): most
+    frames are stale, yet the burst is found, the fit is the live one, and the reader's host
+    times of the queued samples lie before the start, spaced like the unit's clock."""
+    from kinefuse.host.readers import read_recording
+    p = _clock_file(tmp_path / "stale_long.kfr", stale=6000)
+    (u,) = stats.compute(decode_file(p))["streams"][0]["units"]
+    c = u["clock"]
+    assert 6000 - 12 <= c["excluded_leading"] <= 6000 and abs(c["drift_ppm"] - 20) < 5
+    rec = read_recording(str(p), "kfr")
+    t = np.asarray(rec.t)
+    assert t[0] < -25.0 and np.allclose(np.diff(t[:6000]), 0.005, atol=1e-6)

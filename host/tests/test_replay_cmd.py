@@ -139,3 +139,21 @@ def test_bad_input_gives_one_line(run, tmp_path, argv, text):
 def test_kfr_errors(run, kfr_files, tmp_path):
     one, _ = kfr_files
     _one_line_error(*run("replay", one, "--out", tmp_path / "o.csv", "--unit", "7"), "unit 7 is not in this recording")
+
+
+def test_unit_recording_steps_come_from_the_unit_clock_and_host_steps_bridge_a_reboot():
+    """A unit recording's time steps are those of its sample clock (what its filter used), not
+    of the fitted host times (frames read from a backlog crowd together there); where the unit
+    clock restarts (a reboot) the host-time step is kept."""
+    from kinefuse.host import runner
+    from kinefuse.host.readers.recording import Recording
+    dev = np.array([0.000, 0.001, 0.002, 0.003, 0.004, 0.0001, 0.0011])   # reboot after 4
+    host = np.array([1.0000, 1.00003, 1.00006, 1.00009, 1.0040, 1.5000, 1.5010])
+    n = len(dev)
+    rec = Recording(t=host, acc=np.zeros((n, 3)), gyr=np.zeros((n, 3)), fmt="kfr",
+                    channels={"device_time_s": dev})
+    dt = runner.recording_inputs(rec).dt
+    assert np.allclose(dt[1:5], 0.001) and np.isclose(dt[5], 1.5000 - 1.0040) \
+        and np.isclose(dt[6], 0.001)
+    rec_no_clock = Recording(t=host, acc=np.zeros((n, 3)), gyr=np.zeros((n, 3)), fmt="csv")
+    assert np.allclose(runner.recording_inputs(rec_no_clock).dt[1:], np.diff(host))
