@@ -42,6 +42,8 @@ def detect_format(path: str) -> str:
     if path.lower().endswith(".kfr"):
         return kfr.FORMAT
     try:
+        if os.path.getsize(path) == 0:
+            raise ReaderError(path, "the file is empty (0 bytes): no samples to read")
         with open(path, "rb") as f:
             if kfr.sniff_bytes(f.read(16)):
                 return kfr.FORMAT

@@ -268,3 +268,6 @@ def test_unknown_format_and_missing_file(tmp_path):
     with pytest.raises(ReaderError) as e:
         read_recording(str(tmp_path / "nope.csv"))
     one_line(e, "nope.csv", "not found")
+    with pytest.raises(ReaderError) as e:          # was: "unknown recording format"
+        read_recording(write(tmp_path, "empty.csv", ""))
+    one_line(e, "empty.csv", "file is empty (0 bytes)")
