@@ -87,8 +87,10 @@ def parse_params(items: list[str] | None) -> tuple[tuple[str, float], ...]:
     return tuple(out.items())
 
 
-def resolve(name: str, impl: str, params: tuple = ()) -> list[Spec]:
-    """Specs for a ``--filter``/``--compare`` name ("all" = every registered kinefuse filter)."""
+def resolve(name: str, impl: str, params: tuple = (), *, impl_given: bool = False) -> list[Spec]:
+    """Specs for a ``--filter``/``--compare`` name ("all" = every registered kinefuse filter).
+    ``impl_given``: the user chose ``impl`` for this very filter, so a competitor (which runs its
+    own implementation) refuses any but ``ref`` instead of ignoring it."""
     name = name.strip()
     if impl not in IMPLS:
         raise KinefuseError(f"unknown implementation {impl!r} (choose from {', '.join(IMPLS)})")
@@ -99,6 +101,9 @@ def resolve(name: str, impl: str, params: tuple = ()) -> list[Spec]:
             raise KinefuseError("no kinefuse filters are registered yet")
         return [Spec("kinefuse", n, impl, params) for n in names]
     if competitors.is_competitor(name):
+        if impl_given and impl != "ref":
+            raise KinefuseError(f"--impl {impl}: {name} is a competitor and runs its own "
+                                f"implementation; --impl chooses between kinefuse's (ref, f32, q)")
         comp = competitors.require(name)
         unknown = sorted({k for k, _ in params} - set(comp.params))
         if unknown:
@@ -467,7 +472,7 @@ def run(args) -> int:
         raise KinefuseError("--jobs must be at least 1")
     params = parse_params(args.param)
     filter_arg = (args.filter or "").strip() or default_filter_name()
-    main = resolve(filter_arg, args.impl, params)
+    main = resolve(filter_arg, args.impl, params, impl_given=True)
     compare: list[Spec] = []
     for name in [n.strip() for n in (args.compare or "").split(",") if n.strip()]:
         for spec in resolve(name, args.impl):

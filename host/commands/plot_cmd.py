@@ -56,7 +56,7 @@ def run(args) -> int:
     name = (args.filter or "").strip() or accuracy.default_filter_name()
     if name == "all":
         raise KinefuseError("plot takes one filter, not 'all'")
-    spec = accuracy.resolve(name, args.impl, params)[0]
+    spec = accuracy.resolve(name, args.impl, params, impl_given=True)[0]
     trial = broad.load_trial(resolve_trial(args.input))
     window = None
     if args.start is not None or args.end is not None:

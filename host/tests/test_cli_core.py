@@ -182,3 +182,13 @@ def test_run_ned_status_columns_follow_the_frame(short_trial, tmp_path):
     P_enu, P_ned = full(e), full(n)
     assert np.abs(P_enu[:, 0, 2]).max() > 0                    # not a diagonal covariance throughout
     np.testing.assert_allclose(swap @ P_enu @ swap.T, P_ned, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("cmd", [["plot", "--input", "{trial}", "--out", "{out}"],
+                                 ["bench", "accuracy", "--data", "{trial}"]])
+def test_impl_for_a_competitor_is_refused_not_ignored(cmd, short_trial, tmp_path):
+    """--filter vqf --impl q ran VQF's own implementation and said nothing."""
+    args = [a.format(trial=short_trial, out=tmp_path / "p.png") for a in cmd]
+    r = kf(*args, "--filter", "vqf", "--impl", "q")
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 \
+        and "vqf is a competitor and runs its own implementation" in r.stderr, r.stderr
