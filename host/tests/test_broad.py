@@ -183,3 +183,13 @@ def test_simulator_npz_names_the_mat_output(tmp_path):
         broad.load_trial(tmp_path / "rest.npz")
     rec.save(str(tmp_path / "rest.mat"))
     assert broad.load_trial(tmp_path / "rest.mat").n == len(rec)
+
+
+def test_pickled_npz_is_refused_in_one_whole_line(tmp_path):
+    """numpy's allow_pickle message is a paragraph; cut at 120 characters it ended mid-word."""
+    np.savez(tmp_path / "p.npz", gyr=np.array([{"a": 1}], dtype=object))
+    with pytest.raises(KinefuseError) as e:
+        broad.load_trial(tmp_path / "p.npz")
+    msg = str(e.value)
+    assert "\n" not in msg and msg.endswith("(a trial excerpt has numeric arrays only)") \
+        and "pickled Python objects" in msg, msg
