@@ -23,8 +23,8 @@ Example::
     res = build(["main.c"], "m4f", include_dirs=["inc"])
     res.elf, res.bin, res.hex, res.size.flash, res.size.ram
 
-Builds are cached under ``~/.cache/kinefuse/build/<hash>`` (``KINEFUSE_CACHE_DIR`` or
-``XDG_CACHE_HOME`` move it); the hash covers sources, headers in the include directories,
+Builds are cached under ``~/.cache/kinefuse/build/<hash>`` (``KINEFUSE_CACHE``, as for the
+other kinefuse caches, or ``KINEFUSE_CACHE_DIR`` or ``XDG_CACHE_HOME`` move it); the hash covers sources, headers in the include directories,
 board files, flags and the compiler version.
 """
 from __future__ import annotations
@@ -185,8 +185,9 @@ def toolchain_missing() -> str | None:
 
 
 def cache_dir(*parts: str) -> Path:
-    """``~/.cache/kinefuse/<parts>`` (honours ``KINEFUSE_CACHE_DIR`` and ``XDG_CACHE_HOME``)."""
-    root = os.environ.get("KINEFUSE_CACHE_DIR")
+    """``~/.cache/kinefuse/<parts>``: under ``$KINEFUSE_CACHE`` when set, like every other
+    kinefuse cache (``KINEFUSE_CACHE_DIR``, the older name, and ``XDG_CACHE_HOME`` are honoured too)."""
+    root = os.environ.get("KINEFUSE_CACHE") or os.environ.get("KINEFUSE_CACHE_DIR")
     if not root:
         root = os.path.join(os.environ.get("XDG_CACHE_HOME") or os.path.expanduser("~/.cache"),
                             "kinefuse")

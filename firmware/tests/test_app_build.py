@@ -86,3 +86,15 @@ def test_m0_default_build_fits_a_256k_part():
     assert not any(s.endswith("_q_update") and s[:-9] not in fb.default_filters("m0") + ["calib_apply", "joint_angle"]
                    for s in syms), sorted(s for s in syms if s.endswith("_q_update"))
     assert "leg_f32_update" not in syms
+
+
+def test_firmware_builds_are_cached_under_kinefuse_cache(tmp_path, monkeypatch):
+    """KINEFUSE_CACHE moves every kinefuse cache; the firmware's ignored it (only
+    KINEFUSE_CACHE_DIR and XDG_CACHE_HOME) and wrote to ~/.cache/kinefuse."""
+    from kinefuse.firmware.targets import cache_dir
+    monkeypatch.delenv("KINEFUSE_CACHE_DIR", raising=False)
+    monkeypatch.setenv("KINEFUSE_CACHE", str(tmp_path / "kc"))
+    assert cache_dir("build") == tmp_path / "kc" / "build" and (tmp_path / "kc" / "build").is_dir()
+    monkeypatch.delenv("KINEFUSE_CACHE")
+    monkeypatch.setenv("KINEFUSE_CACHE_DIR", str(tmp_path / "old"))
+    assert cache_dir("build") == tmp_path / "old" / "build"
