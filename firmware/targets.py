@@ -24,8 +24,8 @@ Example::
     res.elf, res.bin, res.hex, res.size.flash, res.size.ram
 
 Builds are cached under ``~/.cache/kinefuse/build/<hash>`` (``KINEFUSE_CACHE``, as for the
-other kinefuse caches, or ``KINEFUSE_CACHE_DIR`` or ``XDG_CACHE_HOME`` move it); the hash covers sources, headers in the include directories,
-board files, flags and the compiler version.
+other kinefuse caches, or ``KINEFUSE_CACHE_DIR`` or ``XDG_CACHE_HOME`` move it); the hash covers
+sources, headers in the include directories, board files, flags and the compiler version.
 """
 from __future__ import annotations
 

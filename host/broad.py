@@ -206,12 +206,10 @@ def _read_npz(path: Path) -> dict:
     try:
         with np.load(path, allow_pickle=False) as z:
             raw = {k: z[k] for k in z.files}
-    except ValueError as exc:
-        if "allow_pickle" in str(exc):   # numpy's message is a paragraph: say it in one line
+    except (OSError, ValueError, zipfile.BadZipFile, EOFError) as exc:
+        if isinstance(exc, ValueError) and "allow_pickle" in str(exc):   # numpy says a paragraph
             raise KinefuseError(f"{path}: holds pickled Python objects, which kinefuse does not load "
                                 f"(a trial excerpt has numeric arrays only)") from None
-        raise KinefuseError(f"{path}: not a readable .npz file ({_short(exc)})") from None
-    except (OSError, zipfile.BadZipFile, EOFError) as exc:
         raise KinefuseError(f"{path}: not a readable .npz file ({_short(exc)})") from None
     missing = [k for k in _NPZ_KEYS if k not in raw]
     if missing and {"q_true", "t_true", "meta"} <= set(raw):

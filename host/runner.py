@@ -109,7 +109,7 @@ def recording_inputs(rec) -> types.SimpleNamespace:
     t = np.asarray(rec.t, dtype=np.float64)
     n = len(t)
     d = np.diff(t)
-    dev = (getattr(rec, "channels", None) or {}).get("device_time_s")
+    dev = rec.channels.get("device_time_s")
     if dev is not None and len(dev) == n:
         # a unit recording: the steps of the unit's own sample clock, which its filter used.
         # t maps that clock to the host's by a fitted line, which frames that waited in a

@@ -33,6 +33,14 @@ class StaticConfig:
     def to_dict(self) -> dict:
         return asdict(self)
 
+    @classmethod
+    def from_args(cls, args) -> "StaticConfig":
+        """From the ``--static-window`` ... ``--min-duration`` options calibrate and report share,
+        checked."""
+        return cls(window_s=args.static_window, gyr_std_max=args.gyr_std_max,
+                   gyr_abs_max=args.gyr_abs_max, acc_std_max=args.acc_std_max,
+                   min_duration_s=args.min_duration).check()
+
     def check(self) -> "StaticConfig":
         """Itself, after a one-line error for a threshold that is not a positive finite number
         (``trim_s`` may be 0); the flag is named as ``calibrate`` and ``report`` spell it."""

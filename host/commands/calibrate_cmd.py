@@ -104,9 +104,7 @@ def register(subparsers) -> None:
 
 # ----------------------------------------------------------------------------- helpers
 def _static_cfg(args) -> static.StaticConfig:
-    return static.StaticConfig(window_s=args.static_window, gyr_std_max=args.gyr_std_max,
-                               gyr_abs_max=args.gyr_abs_max, acc_std_max=args.acc_std_max,
-                               min_duration_s=args.min_duration).check()
+    return static.StaticConfig.from_args(args)
 
 
 def _numeric_csv(path: str, ncols: tuple, what: str) -> np.ndarray:

@@ -53,6 +53,7 @@ def _warnings(df) -> list[str]:
     if rec.truncated:
         out.append(f"{df.path}: the recording is truncated (ends inside a chunk): exported up to the cut")
     if rec.damaged_chunks:
-        out.append(f"{df.path}: {rec.damaged_chunks} damaged chunk(s), {rec.recovered_chunks} "
-                   f"recovered: frames in the damaged parts are missing from the CSVs")
+        from kinefuse.host.link.stats import damage_text
+        out.append(f"{df.path}: {damage_text(rec)}: frames in the damaged parts are missing from "
+                   f"the CSVs")
     return out

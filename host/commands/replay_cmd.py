@@ -183,8 +183,9 @@ def _unit_orientation(path: str, rec):
 def _compare(unit, q_replay: np.ndarray, rec) -> str:
     from kinefuse.host.kinematics.quat import angle_between
     idx, q_unit, note, total = unit
-    ang = np.degrees(angle_between(q_unit, q_replay[idx]))
-    ang = ang[np.isfinite(ang)]
+    ang_all = np.degrees(angle_between(q_unit, q_replay[idx]))
+    finite = np.isfinite(ang_all)
+    ang = ang_all[finite]
     if not ang.size:
         return f"unit {rec.metadata['unit']}: no finite orientation pair to compare"
     line = (f"unit {rec.metadata['unit']} on-board orientation vs replay{note}: {ang.size} of {total} "
@@ -194,8 +195,7 @@ def _compare(unit, q_replay: np.ndarray, rec) -> str:
     if gap is not None:
         # the unit's filter used the samples the recording lost; the replay never saw them, so
         # after the first loss the two need not agree: the figure before it is the comparison
-        before = np.degrees(angle_between(q_unit, q_replay[idx]))[idx < gap]
-        before = before[np.isfinite(before)]
+        before = ang_all[finite & (idx < gap)]
         t_gap = float(np.asarray(rec.t)[gap])
         line += (f"; samples were lost just before t = {t_gap:.3f} s (the unit's filter used them, "
                  f"the replay cannot): up to there, {before.size} message(s)")

@@ -100,10 +100,7 @@ def register(subparsers) -> None:
 def _static_cfg(args):
     """The same thresholds and flags as ``kinefuse calibrate``."""
     from kinefuse.host.calib import static
-    cfg = static.StaticConfig(window_s=args.static_window, gyr_std_max=args.gyr_std_max,
-                              gyr_abs_max=args.gyr_abs_max, acc_std_max=args.acc_std_max,
-                              min_duration_s=args.min_duration)
-    return cfg.check()
+    return static.StaticConfig.from_args(args)
 
 
 def _reader(args):
