@@ -90,8 +90,13 @@ def read(path: str, *, header_pred=None, max_preamble: int = 20, has_header: boo
         raise ReaderError(path, "file is empty")
     probe = [l for l in all_lines[: max_preamble + 20] if l.strip()]
     sep = sep or sniff_sep(probe[-min(len(probe), 10):])
-    rows_all = list(csv.reader(io.StringIO(text), delimiter=sep))
-    # csv.reader and splitlines agree on line count for files without quoted newlines
+    # newline=None: a line may end in \r\n, \n or a lone \r (Excel's "CSV (Macintosh)"), as
+    # for splitlines; csv.reader and splitlines agree on line count without quoted newlines
+    reader = csv.reader(io.StringIO(text, newline=None), delimiter=sep)
+    try:
+        rows_all = list(reader)
+    except csv.Error as exc:
+        raise ReaderError(path, f"not a readable table ({exc})", reader.line_num) from None
     preamble: list[str] = []
     start = 0
     header: list[str] = []

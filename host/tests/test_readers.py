@@ -271,3 +271,25 @@ def test_unknown_format_and_missing_file(tmp_path):
     with pytest.raises(ReaderError) as e:          # was: "unknown recording format"
         read_recording(write(tmp_path, "empty.csv", ""))
     one_line(e, "empty.csv", "file is empty (0 bytes)")
+
+
+def test_cr_line_endings_and_a_stray_cr(tmp_path):
+    """Excel's "CSV (Macintosh)" ends lines with a lone \\r, and a damaged file may hold one
+    inside a line: read (or a one-line error with the line), not csv.Error's internal error."""
+    t = np.arange(20) / 100.0
+    rec = Recording(t=t, acc=np.tile([0, 0, 9.81], (20, 1)), gyr=np.zeros((20, 3)))
+    p = str(tmp_path / "k.csv")
+    kinefuse_csv.write(p, rec)
+    text = open(p).read()
+    cr = tmp_path / "mac.csv"
+    cr.write_bytes(text.replace("\n", "\r").encode())
+    r = read_recording(str(cr))
+    np.testing.assert_allclose(r.t, t)
+    lines = text.splitlines()
+    k = next(i for i, ln in enumerate(lines) if ln.startswith("0.05"))
+    lines[k] = lines[k].replace(",0", ",\r0", 1)          # a stray \r inside row k
+    bad = tmp_path / "cr_in_row.csv"
+    bad.write_bytes("\n".join(lines).encode())
+    with pytest.raises(ReaderError) as e:
+        read_recording(str(bad))
+    one_line(e, "cr_in_row.csv", f"line {k + 2}: t_s goes backwards")   # its second half
