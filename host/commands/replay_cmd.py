@@ -15,6 +15,7 @@ the magnetometer is used on the samples that carry a new reading.
 """
 from __future__ import annotations
 
+import os
 import sys
 from pathlib import Path
 
@@ -59,6 +60,8 @@ def run(args) -> int:
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
     prm = runner.parse_params(args.param)
     path = str(args.rec)
+    if os.path.exists(args.out) and os.path.exists(path) and os.path.samefile(args.out, path):
+        raise KinefuseError(f"--out {args.out} is the recording itself: choose another output file")
     broad = Path(path).suffix.lower() in BROAD_SUFFIXES
     rec = None
     if broad:

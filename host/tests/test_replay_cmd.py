@@ -141,6 +141,17 @@ def test_kfr_errors(run, kfr_files, tmp_path):
     _one_line_error(*run("replay", one, "--out", tmp_path / "o.csv", "--unit", "7"), "unit 7 is not in this recording")
 
 
+def test_out_naming_the_recording_itself_is_refused(run, kfr_files, tmp_path):
+    """`replay walk.kfr --out walk.kfr` wrote the CSV over the recording (it was lost)."""
+    import shutil
+    rec = tmp_path / "walk.kfr"
+    shutil.copy(kfr_files[0], rec)
+    data = rec.read_bytes()
+    _one_line_error(*run("replay", rec, "--out", rec), "is the recording itself")
+    _one_line_error(*run("replay", rec, "--out", tmp_path / "." / "walk.kfr"), "is the recording itself")
+    assert rec.read_bytes() == data
+
+
 def test_unit_recording_steps_come_from_the_unit_clock_and_host_steps_bridge_a_reboot():
     """A unit recording's time steps are those of its sample clock (what its filter used), not
     of the fitted host times (frames read from a backlog crowd together there); where the unit
