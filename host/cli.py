@@ -80,7 +80,11 @@ def _load(module_name: str):
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = build_parser()
+    try:
+        parser = build_parser()   # imports every command: Ctrl-C may come in the first second
+    except KeyboardInterrupt:
+        print("kinefuse: interrupted", file=sys.stderr)
+        return 130
     args = parser.parse_args(argv)
     if not getattr(args, "func", None):
         parser.print_help()

@@ -169,3 +169,13 @@ def test_export_of_a_truncated_recording_warns(run, tmp_path):
     assert "warning:" in err and "truncated" in err
     code, stdout, err = run("export", out, "--out", tmp_path / "csv2")
     assert code == 0 and "truncated" in stdout + err
+
+
+def test_ctrl_c_while_the_commands_are_imported_is_one_line(monkeypatch, capsys):
+    """`kinefuse record ...` then Ctrl-C within its first second (the imports): a traceback."""
+    def interrupted(name):
+        raise KeyboardInterrupt
+    monkeypatch.setattr(cli, "_load", interrupted)
+    assert cli.main(["record", "--port", "fake:", "--out", "x.kfr"]) == 130
+    out, err = capsys.readouterr()
+    assert err == "kinefuse: interrupted\n" and out == ""
