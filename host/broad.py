@@ -17,7 +17,6 @@ import dataclasses
 import functools
 import json
 import os
-import zipfile
 from pathlib import Path
 
 import numpy as np
@@ -206,7 +205,7 @@ def _read_npz(path: Path) -> dict:
     try:
         with np.load(path, allow_pickle=False) as z:
             raw = {k: z[k] for k in z.files}
-    except (OSError, ValueError, zipfile.BadZipFile, EOFError) as exc:
+    except Exception as exc:  # BadZipFile, EOFError, zlib.error, tokenize.TokenError... for damage
         if isinstance(exc, ValueError) and "allow_pickle" in str(exc):   # numpy says a paragraph
             raise KinefuseError(f"{path}: holds pickled Python objects, which kinefuse does not load "
                                 f"(a trial excerpt has numeric arrays only)") from None

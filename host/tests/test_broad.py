@@ -131,6 +131,19 @@ def test_load_errors(tmp_path):
     assert "bad.npz" in _one_line(e)
 
 
+@pytest.mark.parametrize("at, junk", [(200, b"\xff" * 32), (120, b"\x00" * 8), (60, b"\x13" * 4)])
+def test_damaged_npz_is_one_line(tmp_path, at, junk):
+    """A damaged compressed .npz raised zlib.error or tokenize.TokenError: an internal error."""
+    rng = np.random.default_rng(0)
+    np.savez_compressed(tmp_path / "t.npz", gyr=rng.normal(size=(2000, 3)), acc=rng.normal(size=(2000, 3)))
+    d = bytearray((tmp_path / "t.npz").read_bytes())
+    d[at:at + len(junk)] = junk
+    (tmp_path / "d.npz").write_bytes(bytes(d))
+    with pytest.raises(KinefuseError) as e:
+        broad.load_trial(tmp_path / "d.npz")
+    assert "d.npz" in _one_line(e)
+
+
 def _mat(path, n=50, **override):
     d = {"imu_gyr": np.zeros((n, 3)), "imu_acc": np.tile([0, 0, 9.81], (n, 1)),
          "imu_mag": np.tile([0, 20, -40.0], (n, 1)), "opt_quat": np.tile([1.0, 0, 0, 0], (n, 1)),
