@@ -26,20 +26,30 @@ KF_MESSAGES = (52500, 52501, 52502, 52503, 52504)
 REQUESTED_FIELD = {MSG_RAW: "raw_rate_requested", MSG_ORI: "orientation_rate_requested"}
 
 
+STRIDE_WINDOW = 31   # steps around each one whose median is its expected step
+
+
 def counter_analysis(counter: np.ndarray, stride: int | None = None) -> dict:
-    """Loss from a uint32 counter (wrap-safe), with the stride taken as the most common step
-    unless given (a live view learns it once and then analyses short pieces)."""
+    """Loss from a uint32 counter (wrap-safe).  ``stride`` (reported) is the most common step;
+    unless given (a live view learns it once and then analyses short pieces) each step is
+    compared with the median of the STRIDE_WINDOW steps around it, so a stride that changes
+    within the recording (KF_ORIENTATION's after a KF_RATE_HZ change: 10 samples at 1 kHz, 5 at
+    500 Hz for 100 Hz) is not counted as loss."""
     c = np.asarray(counter, dtype=np.int64)
     if c.size < 2:
         return {"stride": stride, "samples_lost": 0, "loss_fraction": 0.0, "resets": 0,
                 "duplicates": 0}
     d = (c[1:] - c[:-1]) & 0xFFFFFFFF
     forward = (d > 0) & (d < 1 << 31)
-    if stride is None:
-        steps, counts = np.unique(d[forward], return_counts=True)
-        stride = int(steps[np.argmax(counts)]) if steps.size else 1
     gaps = d[forward]
-    lost = int(np.sum(np.maximum(0, np.round(gaps / stride).astype(np.int64) - 1)))
+    step = stride
+    if stride is None:
+        steps, counts = np.unique(gaps, return_counts=True)
+        stride = int(steps[np.argmax(counts)]) if steps.size else 1
+        if gaps.size:
+            from scipy.ndimage import median_filter
+            step = np.maximum(1, median_filter(gaps, size=STRIDE_WINDOW, mode="mirror"))
+    lost = int(np.sum(np.maximum(0, np.round(gaps / step).astype(np.int64) - 1)))
     expected = int(c.size + lost)
     return {"stride": stride, "samples_lost": lost, "loss_fraction": lost / expected if expected else 0.0,
             "resets": int(np.sum(d >= 1 << 31)), "duplicates": int(np.sum(d == 0))}

@@ -23,6 +23,18 @@ def test_decimated_stream_is_not_loss_and_resets_are_counted():
     assert r["resets"] == 1 and r["duplicates"] == 1
 
 
+def test_a_stride_change_is_not_loss():
+    """KF_ORIENTATION at 100 Hz counts samples: step 10 at 1 kHz, then 5 after `record --rate
+    500`; the 10-steps were counted as lost (37 of 377 in a SIL recording).  One real loss in
+    each part."""
+    c = np.concatenate([np.arange(0, 1000, 10), np.arange(1010, 2000, 10),    # 1000 missing
+                        np.arange(2000, 3505, 5), np.arange(3510, 5000, 5)])  # 3505 missing
+    r = stats.counter_analysis(c.astype(np.uint32))
+    assert r["samples_lost"] == 2 and r["stride"] == 5 and r["resets"] == 0
+    every_50th = np.delete(np.arange(2001), np.arange(49, 2000, 50))           # fake:drop=50
+    assert stats.counter_analysis(every_50th)["samples_lost"] == 40
+
+
 def test_clock_fit_is_robust_to_delay_spikes():
     rng = np.random.default_rng(0)
     device = np.arange(0, 60, 0.005)                          # 200 Hz for 60 s
