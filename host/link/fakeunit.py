@@ -363,6 +363,9 @@ class FakeConnection(Connection):
     (all optional; params=0: a unit that does not answer the parameter protocol): try the host
     tools without hardware.
     """
+    # option -> allowed range (a value outside made the unit's thread die: a silent, empty stream)
+    LIMITS = {"rate": (1, 100_000), "ori": (0, 10_000), "unit": (1, 254), "drift": (-100_000, 100_000),
+              "drop": (0, 2**31), "corrupt": (0, 1), "seed": (0, 2**32 - 1)}
 
     def __init__(self, options: str = ""):
         import socket as _socket
@@ -381,6 +384,9 @@ class FakeConnection(Connection):
                 kw[keys[k][0]] = keys[k][1](v)
             except ValueError:
                 raise KinefuseError(f"bad value for fake unit option {k}: {v!r}") from None
+            lo, hi = self.LIMITS.get(k, (None, None))
+            if lo is not None and not lo <= kw[keys[k][0]] <= hi:   # NaN too
+                raise KinefuseError(f"bad value for fake unit option {k}: {v!r} (expected {lo} .. {hi})")
         a, b = _socket.socketpair()
         self.url = f"fake:{options}"
         self._host = SocketConnection(a, self.url)

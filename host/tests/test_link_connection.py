@@ -131,6 +131,9 @@ def test_file_connection_reads_everything_then_closes(tmp_path):
     ("file:/nonexistent/capture.bin", "cannot open"),
     ("fake:rate=abc", "bad value"),
     ("fake:speed=3", "bad fake unit option"),
+    ("fake:rate=nan", "expected 1 .. 100000"),        # was an internal error (int(nan))
+    ("fake:unit=999", "expected 1 .. 254"),           # was a unit whose thread died: no data
+    ("fake:seed=-1", "bad value"),
 ])
 def test_bad_connection_strings_are_one_line_errors(url, message):
     with pytest.raises(KinefuseError, match=message) as exc:
