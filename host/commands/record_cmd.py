@@ -54,7 +54,7 @@ def run(args) -> int:
         raise KinefuseError(f"{out} exists (use --force to overwrite)")
     if out.parent and not out.parent.exists():
         raise KinefuseError(f"folder {out.parent} does not exist")
-    if args.duration is not None and args.duration <= 0:
+    if args.duration is not None and not args.duration > 0:   # NaN too (it recorded until Ctrl-C)
         raise KinefuseError("--duration must be positive")
     if args.rate is not None and not 0 < args.rate <= 100_000:
         raise KinefuseError("--rate must be in (0, 100000] Hz")

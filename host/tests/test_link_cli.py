@@ -38,6 +38,7 @@ def _one_line_error(code, out, err, text):
     (["record", "--port", "/dev/kinefuse-no-such-port", "--out", "{tmp}/r.kfr", "--duration", "1"],
      "cannot open serial port"),
     (["record", "--port", "fake:", "--out", "{tmp}/r.kfr", "--baud", "fast"], "bad baud rate"),
+    (["record", "--port", "fake:", "--out", "{tmp}/r.kfr", "--duration", "nan"], "--duration must be"),  # forever
     (["record", "--port", "fake:", "--out", "{tmp}/no/such/dir/r.kfr"], "does not exist"),
     (["record", "--port", "fake:", "--out", "{tmp}/junk.kfr"], "exists"),
     (["params", "--port", "tcp:127.0.0.1:1"], "cannot connect"),
