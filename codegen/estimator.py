@@ -49,7 +49,12 @@ class Var:
 
 @dataclasses.dataclass(frozen=True)
 class Param:
-    """A runtime parameter with physical meaning."""
+    """A runtime parameter with physical meaning.
+
+    ``choices``: a switch or a count rather than a continuous setting (e.g. ``mode`` 0 = 6D,
+    1 = 9D, read as ``p.mode > 0.5``): the only values allowed, whole numbers ``lo``, ``lo`` + 1,
+    ..., ``hi`` (the unit's parameter table accepts exactly these, ``firmware/apptables.py``).
+    ``labels``: optional names of the choices, same order (``--param mode=6d``)."""
     name: str
     default: float
     unit: str
@@ -57,9 +62,61 @@ class Param:
     hi: float
     doc: str
     type: str = REAL
+    choices: tuple[float, ...] = ()
+    labels: tuple[str, ...] = ()
+
+    def __post_init__(self):
+        if self.choices:
+            want = tuple(float(v) for v in range(int(self.lo), int(self.hi) + 1))
+            if tuple(float(c) for c in self.choices) != want or self.lo != int(self.lo):
+                raise ValueError(f"parameter {self.name}: choices must be the whole numbers "
+                                 f"lo..hi ({self.lo:g}..{self.hi:g}), got {self.choices}")
+            if self.default not in self.choices:
+                raise ValueError(f"parameter {self.name}: default {self.default!r} is not a choice")
+        if self.labels and len(self.labels) != len(self.choices):
+            raise ValueError(f"parameter {self.name}: {len(self.labels)} labels for "
+                             f"{len(self.choices)} choices")
+
+    @classmethod
+    def choice(cls, name: str, default: float, count: int, doc: str,
+               labels: tuple[str, ...] = ()) -> "Param":
+        """A switch (``count`` 2: 0 or 1) or a choice among 0 .. ``count`` - 1, unitless."""
+        return cls(name, default, "", 0.0, float(count - 1), doc,
+                   choices=tuple(float(i) for i in range(count)), labels=labels)
 
     def as_var(self) -> Var:
         return Var(self.name, 1, self.lo, self.hi, self.unit, self.doc, self.type, self.default)
+
+    def choices_text(self) -> str:
+        """'0 (6d), 1 (9d)' / '0, 1, 2'."""
+        names = self.labels or ("",) * len(self.choices)
+        return ", ".join(f"{c:g}" + (f" ({n})" if n else "") for c, n in zip(self.choices, names))
+
+    def value(self, v, owner: str = "") -> float:
+        """``v`` (a number, or one of ``labels``) checked against the declaration: finite, within
+        [lo, hi] and, for a switch, one of ``choices``.  ValueError (one line) otherwise."""
+        who = f"{owner}: parameter {self.name}" if owner else f"parameter {self.name}"
+        if isinstance(v, str):
+            text = v.strip()
+            low = [s.lower() for s in self.labels]
+            if text.lower() in low:
+                return float(self.choices[low.index(text.lower())])
+            try:
+                v = float(text)
+            except ValueError:
+                raise ValueError(f"{who}={v!r} is not a number" + (
+                    f" (choices: {self.choices_text()})" if self.choices else "")) from None
+        if not isinstance(v, (int, float, np.integer, np.floating)):   # bool: 0 or 1
+            raise ValueError(f"{who}={v!r} is not a number")
+        v = float(v)
+        if not math.isfinite(v):
+            raise ValueError(f"{who}={v!r} is not finite")
+        if self.choices:
+            if v not in self.choices:
+                raise ValueError(f"{who}={v:g} is not one of its choices {self.choices_text()}")
+        elif not self.lo <= v <= self.hi:
+            raise ValueError(f"{who}={v!r} outside [{self.lo:g}, {self.hi:g}] {self.unit}".rstrip())
+        return v
 
 
 @dataclasses.dataclass(frozen=True)
@@ -114,24 +171,24 @@ class Estimator:
     @classmethod
     def resolve_params(cls, overrides: dict[str, float] | None = None,
                        preset: str | None = None) -> dict[str, float]:
-        """Defaults, then a preset, then explicit overrides; every value range-checked."""
+        """Defaults, then a preset, then explicit overrides (an override wins over the preset);
+        every value checked by :meth:`Param.value` (a label such as ``"6d"`` becomes its number)."""
         values = cls.default_params()
         if preset is not None:
             if preset not in cls.presets:
                 raise ValueError(f"{cls.name} has no preset {preset!r} "
                                  f"(available: {', '.join(cls.presets) or 'none'})")
+            unknown = [k for k in cls.presets[preset] if k not in values]
+            if unknown:
+                raise ValueError(f"{cls.name}: preset {preset!r} sets unknown parameter "
+                                 f"{unknown[0]!r}")
             values.update(cls.presets[preset])
         for k, v in (overrides or {}).items():
             if k not in values:
                 raise ValueError(f"{cls.name} has no parameter {k!r} "
                                  f"(parameters: {', '.join(values) or 'none'})")
             values[k] = v
-        for p in cls.params:
-            v = values[p.name]
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and p.lo <= v <= p.hi):
-                raise ValueError(f"{cls.name}: parameter {p.name}={v!r} outside "
-                                 f"[{p.lo:g}, {p.hi:g}] {p.unit}")
-        return values
+        return {p.name: p.value(values[p.name], cls.name) for p in cls.params}
 
 
 def _ns(vars_: tuple[Var, ...], values: dict[str, tuple]) -> SimpleNamespace:

@@ -235,7 +235,7 @@ class Eskf(Estimator):
     title = "error-state Kalman filter (attitude, gyroscope bias, linear acceleration)"
     inputs = IMU
     params = (
-        Param("mode", 1.0, "", 0.0, 1.0, "0: 6D (magnetometer ignored), 1: 9D"),
+        Param.choice("mode", 1.0, 2, "0: 6D (magnetometer ignored), 1: 9D", labels=("6d", "9d")),
         Param("gyr_noise", 1.0 * DEG, "rad/s/Hz^0.5", 0.001 * DEG, 10.0 * DEG,
               "gyroscope rate noise density (includes scale-factor and misalignment errors)"),
         Param("gyr_rate_err", 0.0, "", 0.0, 0.2,

@@ -119,8 +119,8 @@ class Flagship(Estimator):
     title = "kinefuse flagship orientation filter"
     inputs = IMU
     params = (
-        Param("mode", 1.0, "", 0.0, 1.0, "0: 6D (magnetometer ignored), 1: 9D; q6 and q9 are "
-              "output in both"),
+        Param.choice("mode", 1.0, 2, "0: 6D (magnetometer ignored), 1: 9D; q6 and q9 are "
+                     "output in both", labels=("6d", "9d")),
         Param("tau_acc", 3.0, "s", 0.5, 20.0,
               "inclination time constant when rotating slowly without translation: DC group "
               "delay of the accelerometer low-pass filter in the almost-inertial frame"),

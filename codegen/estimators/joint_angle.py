@@ -79,10 +79,10 @@ class JointAngle(Estimator):
     title = "Joint angles from two sensor orientations (Grood & Suntay knee, X-Y'-Z'', Z-Y'-X'')"
     inputs = JOINT
     params = (
-        Param("sequence", 0.0, "", 0.0, 2.0,
-              "0: X-Z'-Y'' (Grood & Suntay knee), 1: X-Y'-Z'' (seed 002 elbow), 2: Z-Y'-X''"),
-        Param("mirror", 0.0, "", 0.0, 1.0,
-              "1: negate the 2nd and 3rd angles (left limb, ISB signs)"),
+        Param.choice("sequence", 0.0, 3,
+                     "0: X-Z'-Y'' (Grood & Suntay knee), 1: X-Y'-Z'' (seed 002 elbow), 2: Z-Y'-X''"),
+        Param.choice("mirror", 0.0, 2,
+                     "1: negate the 2nd and 3rd angles (left limb, ISB signs)"),
     ) + _offset_params("prox") + _offset_params("dist")
     state = (
         Var("q_joint", 4, -1.0, 1.0, "", "last joint quaternion", init=(1.0, 0.0, 0.0, 0.0)),

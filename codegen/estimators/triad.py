@@ -55,8 +55,8 @@ class Triad(Estimator):
     title = "TRIAD (two-vector attitude, memoryless)"
     inputs = IMU
     params = (
-        Param("primary", 0.0, "", 0.0, 1.0,
-              "observation matched exactly: 0 = gravity (accelerometer), 1 = magnetic field"),
+        Param.choice("primary", 0.0, 2,
+                     "observation matched exactly: 0 = gravity (accelerometer), 1 = magnetic field"),
         Param("dip_deg", 64.0, "deg", -90.0, 90.0,
               "reference field dip (inclination, positive downward; used when primary = 1)"),
         Param("min_angle_deg", 5.0, "deg", 0.5, 45.0,

@@ -74,7 +74,7 @@ class Vac(Estimator):
               "accelerometer correction gain α per accelerometer sample (LERP/SLERP fraction)"),
         Param("gain_mag", 0.0003, "", 0.0, 1.0,
               "magnetometer correction gain β per magnetometer reading"),
-        Param("adaptive", 0.0, "", 0.0, 1.0, "1: scale α by the adaptive factor; 0: constant α"),
+        Param.choice("adaptive", 0.0, 2, "1: scale α by the adaptive factor; 0: constant α"),
         Param("t1", 0.1, "", 0.0, 1.0,
               "relative |a| error below which the full α applies (Valenti: 0.1)"),
         Param("t2", 0.2, "", 0.0, 2.0,
