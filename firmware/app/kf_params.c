@@ -13,6 +13,8 @@
     {name, type, KF_PG_APP, 0u, 0u, flags, KF_U(def), KF_U(lo), KF_U(hi)}
 #define KF_PARAM_ROW(name, group, filter, index, def, lo, hi) \
     {name, KF_PT_REAL32, group, filter, index, 0u, KF_F(def), KF_F(lo), KF_F(hi)},
+#define KF_CHOICE_ROW(name, group, filter, index, def, lo, hi) \
+    {name, KF_PT_REAL32, group, filter, index, KF_PF_CHOICE, KF_F(def), KF_F(lo), KF_F(hi)},
 
 const kf_param_desc kf_param_table[KF_PARAM_COUNT] = {
     KF_APP_ROW("KF_UNIT_ID", KF_PT_UINT8, 1u, 1u, 254u, 0u),
@@ -47,7 +49,12 @@ int32_t kf_param_find(const char *name)
 int kf_param_in_range(const kf_param_desc *d, kf_pvalue v)
 {
     if (d->type == KF_PT_REAL32) {
-        return v.f >= d->lo.f && v.f <= d->hi.f;   /* false for NaN */
+        if (!(v.f >= d->lo.f && v.f <= d->hi.f)) {
+            return 0;                              /* also NaN */
+        }
+        /* a choice (a switch such as KF_FL_MODE, 0 = 6D / 1 = 9D): only the whole numbers
+         * lo..hi, never a value the filter would read one way or the other arbitrarily */
+        return (d->flags & KF_PF_CHOICE) == 0u || v.f == (float)(int32_t)v.f;
     }
     if (d->type == KF_PT_UINT8 && v.u > 0xFFu) {
         return 0;

@@ -35,6 +35,7 @@
 
 /* flags */
 #define KF_PF_READONLY 1u
+#define KF_PF_CHOICE   2u   /* REAL32 choice (Param.choices): only the whole numbers lo..hi */
 
 typedef union {
     float f;
