@@ -75,6 +75,9 @@ _VQF_BOOL = {"motionBiasEstEnabled", "restBiasEstEnabled", "magDistRejectionEnab
 
 
 def _vqf_kwargs(p: dict) -> dict:
+    for k in _VQF_BOOL:
+        if p[k] not in (0, 1):
+            raise KinefuseError(f"vqf: parameter {k}={p[k]!r} is a switch: 0 or 1")
     return {k: (bool(v) if k in _VQF_BOOL else float(v)) for k, v in p.items()}
 
 

@@ -38,22 +38,24 @@ def default_filter() -> str:
     return "flagship" if "flagship" in estimators.ESTIMATORS else "madgwick"
 
 
-def parse_params(items: list[str] | None) -> dict[str, float]:
-    """['beta=0.1', 'mode=9d'] -> {'beta': 0.1, 'mode': ...}; one-line errors."""
-    out: dict[str, float] = {}
-    for item in items or []:
-        if "=" not in item:
-            raise KinefuseError(f"--param expects name=value, got {item!r}")
-        k, v = item.split("=", 1)
-        k, v = k.strip(), v.strip()
-        if v.lower() in ("6d", "9d"):
-            out[k] = 0.0 if v.lower() == "6d" else 1.0
-            continue
-        try:
-            out[k] = float(v)
-        except ValueError:
-            raise KinefuseError(f"--param {k}: {v!r} is not a number") from None
-    return out
+def parse_params(items: list[str] | None) -> dict[str, float | str]:
+    """['beta=0.1', 'mode=9d'] -> {'beta': 0.1, 'mode': '9d'}; one-line errors for a malformed
+    item, a name given twice or a non-finite value.  A value that is not a number stays text: the
+    filter's declaration resolves a choice's label (``mode=6d``) and refuses anything else
+    (:func:`check_params`)."""
+    from kinefuse.host.paramargs import parse_assignments
+    return parse_assignments(items, "--param", form="name=value")
+
+
+def check_params(name: str, params: dict | None = None, preset: str | None = None) -> dict[str, float]:
+    """Filter ``name``'s full parameter set (defaults, then ``preset``, then ``params``; an
+    override wins over the preset), every value checked against its declaration (range, choices,
+    labels); KinefuseError (one line) otherwise."""
+    est = estimators.get(name)
+    try:
+        return est.resolve_params(params, preset)
+    except ValueError as exc:
+        raise KinefuseError(str(exc)) from None
 
 
 def imu_inputs(trial, mag_every: int = 1) -> dict[str, np.ndarray]:
@@ -83,10 +85,7 @@ def run_filter(name: str, impl: str, trial, params: dict[str, float] | None = No
     est = estimators.get(name)
     if est.inputs.name != "imu":
         raise KinefuseError(f"filter {name!r} takes {est.inputs.name} inputs, not IMU samples")
-    try:
-        prm = est.resolve_params(params, preset)
-    except ValueError as exc:
-        raise KinefuseError(str(exc)) from None
+    prm = check_params(name, params, preset)
     out = cg_runner.run(name, impl, imu_inputs(trial), prm)
     q = np.asarray(out["q"], dtype=np.float64)
     status = {k: np.asarray(v).reshape(len(q), -1).squeeze(axis=1)

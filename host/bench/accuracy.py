@@ -33,7 +33,7 @@ class Spec:
     kind: str                                 # "kinefuse" or "competitor"
     name: str
     impl: str = "ref"
-    params: tuple[tuple[str, float], ...] = ()
+    params: tuple[tuple[str, float | str], ...] = ()   # str: a choice label (mode=6d)
 
     @property
     def label(self) -> str:
@@ -63,28 +63,30 @@ def runner_filter_names() -> list[str]:
     return list(names())
 
 
-def parse_params(items: list[str] | None) -> tuple[tuple[str, float], ...]:
-    """``["k=v", ...]`` -> ((k, float(v)), ...); one-line error for anything else.
+def parse_params(items: list[str] | None) -> tuple[tuple[str, float | str], ...]:
+    """``["k=v", ...]`` -> ((k, v), ...); one-line error for a malformed item, a name given twice
+    or a non-finite value (:func:`kinefuse.host.paramargs.parse_assignments`).
 
-    ``6d``/``9d`` are accepted as values (0/1) as kinefuse filters do for their mode switch.
+    A value that is not a number stays text: a kinefuse filter resolves its choices' labels
+    (``mode=6d``) and checks every value in :func:`resolve`; a competitor takes numbers only.
     """
-    out: dict[str, float] = {}
-    for item in items or []:
-        key, sep, value = item.partition("=")
-        key, value = key.strip(), value.strip()
-        if not sep or not key:
-            raise KinefuseError(f"--param expects KEY=NUMBER, got {item!r}")
-        if value.lower() in ("6d", "9d"):
-            out[key] = 0.0 if value.lower() == "6d" else 1.0
-            continue
-        try:
-            num = float(value)
-        except ValueError:
-            raise KinefuseError(f"--param {key}: {value!r} is not a number") from None
-        if not math.isfinite(num):
-            raise KinefuseError(f"--param {key}: value must be finite, got {value!r}")
-        out[key] = num
-    return tuple(out.items())
+    from kinefuse.host.paramargs import parse_assignments
+    return tuple(parse_assignments(items, "--param", form="KEY=NUMBER").items())
+
+
+def _check_kinefuse_params(name: str, params: tuple) -> None:
+    """One-line error now (not in a worker later) for a value filter ``name`` refuses."""
+    check = getattr(load_runner(), "check_params", None)
+    if check is not None:
+        check(name, dict(params))
+    else:                       # a runner without declarations: numbers only
+        _numbers_only(params)
+
+
+def _numbers_only(params: tuple) -> None:
+    for k, v in params:
+        if isinstance(v, str):
+            raise KinefuseError(f"--param {k}: {v!r} is not a number")
 
 
 def resolve(name: str, impl: str, params: tuple = (), *, impl_given: bool = False) -> list[Spec]:
@@ -99,6 +101,8 @@ def resolve(name: str, impl: str, params: tuple = (), *, impl_given: bool = Fals
         names = runner_filter_names()
         if not names:
             raise KinefuseError("no kinefuse filters are registered yet")
+        for n in names:
+            _check_kinefuse_params(n, params)
         return [Spec("kinefuse", n, impl, params) for n in names]
     if competitors.is_competitor(name):
         if impl_given and impl != "ref":
@@ -109,9 +113,11 @@ def resolve(name: str, impl: str, params: tuple = (), *, impl_given: bool = Fals
         if unknown:
             raise KinefuseError(f"{name}: unknown parameter {', '.join(unknown)} "
                                 f"(known: {', '.join(comp.params) or 'none'})")
+        _numbers_only(params)
         return [Spec("competitor", name, "ref", params)]
     kinefuse_names = runner_filter_names()
     if name in kinefuse_names:
+        _check_kinefuse_params(name, params)
         return [Spec("kinefuse", name, impl, params)]
     known = kinefuse_names + competitors.competitor_names()
     raise KinefuseError(f"unknown filter {name!r} (known: {', '.join(known)}, all)")

@@ -77,6 +77,7 @@ def run(args) -> int:
         from kinefuse.host.errors import KinefuseError
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
     params = runner.parse_params(args.param)
+    runner.check_params(name, params)          # one-line error before any work starts
     from kinefuse.host import angle_series
     angle = angle_series.is_angle_filter(name)
     if not angle and name not in runner.imu_filter_names():

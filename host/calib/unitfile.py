@@ -36,6 +36,9 @@ from kinefuse.host.errors import KinefuseError
 FORMAT = "kinefuse-calibration"
 VERSION = 1
 UNITS = {"accel": "m/s^2", "gyro": "rad/s", "mag": "uT"}
+#: configured sensor ranges a unit file records (``calibrate --range NAME=VALUE``):
+#: accelerometer ±g, gyroscope ±°/s, magnetometer ±µT
+SENSOR_RANGES = ("acc_g", "gyr_dps", "mag_uT")
 MAX_COND = 100.0  # a calibration matrix that far from a scaled rotation is a broken fit
 
 

@@ -133,16 +133,23 @@ def _numeric_csv(path: str, ncols: tuple, what: str) -> np.ndarray:
 
 
 def _ranges(args) -> dict:
-    out = {}
-    for s in args.ranges:
-        k, sep, v = s.partition("=")
-        try:
-            out[k.strip()] = float(v)
-        except ValueError:
-            raise KinefuseError(f"--range {s!r}: expected NAME=NUMBER, e.g. gyr_dps=2000") from None
-        if not sep:
-            raise KinefuseError(f"--range {s!r}: expected NAME=NUMBER")
+    """``--range NAME=VALUE`` -> {name: value}: a known name (unitfile.SENSOR_RANGES), a
+    positive finite number, each name once; one-line errors otherwise."""
+    from kinefuse.host.calib.unitfile import SENSOR_RANGES
+    from kinefuse.host.paramargs import parse_assignments
+    out = parse_assignments(args.ranges, "--range", numbers_only=True)
+    for k, v in out.items():
+        if k not in SENSOR_RANGES:
+            raise KinefuseError(f"--range {k}: unknown sensor range (valid: {', '.join(SENSOR_RANGES)})")
+        if not v > 0:
+            raise KinefuseError(f"--range {k}={v:g}: a sensor range must be positive")
     return out
+
+
+def _check_ranges(args) -> None:
+    """--range before any work: valid names and values, and only with --out (where it is stored)."""
+    if _ranges(args) and not args.out:
+        raise KinefuseError("--range is stored in the unit calibration file: give --out")
 
 
 def _read(args):
@@ -183,6 +190,7 @@ def _save(args, sensor: str, M, b, **extra) -> None:
 # ----------------------------------------------------------------------------- accel
 def run_accel(args) -> int:
     from kinefuse.host.calib import accel
+    _check_ranges(args)
     targets = None
     n_samples = None
     if args.poses and args.input:
@@ -237,6 +245,7 @@ def run_accel(args) -> int:
 # ----------------------------------------------------------------------------- gyro
 def run_gyro(args) -> int:
     from kinefuse.host.calib import gyro
+    _check_ranges(args)
     rec = _read(args)
     rec.require("gyr", "acc")
     cfg = _static_cfg(args)
@@ -259,6 +268,7 @@ def run_gyro(args) -> int:
 # ----------------------------------------------------------------------------- mag
 def run_mag(args) -> int:
     from kinefuse.host.calib import mag
+    _check_ranges(args)
     rec = _read(args)
     samples = rec.mag_samples()
     if samples is None:

@@ -19,7 +19,8 @@ def describe() -> dict:
             "title": cls.title,
             "input": cls.inputs.name,
             "params": [{"name": p.name, "default": p.default, "unit": p.unit, "min": p.lo,
-                        "max": p.hi, "doc": p.doc} for p in cls.params],
+                        "max": p.hi, "doc": p.doc, "choices": list(p.choices),
+                        "labels": list(p.labels)} for p in cls.params],
             "presets": cls.presets,
             "outputs": [{"name": v.name, "size": v.size, "unit": v.unit, "doc": v.doc}
                         for v in cls.outputs],
@@ -43,8 +44,10 @@ def run(args) -> int:
         for col in ("parameter", "default", "unit", "range", "meaning"):
             t.add_column(col)
         for p in d["params"]:
-            t.add_row(p["name"], f"{p['default']:g}", p["unit"], f"[{p['min']:g}, {p['max']:g}]",
-                      p["doc"])
+            rng = (" | ".join(f"{c:g}" + (f" ({n})" if n else "") for c, n in
+                              zip(p["choices"], p["labels"] or [""] * len(p["choices"])))
+                   if p["choices"] else f"[{p['min']:g}, {p['max']:g}]")
+            t.add_row(p["name"], f"{p['default']:g}", p["unit"], rng, p["doc"])
         console.print(t)
         if d["presets"]:
             console.print("  presets: " + "; ".join(

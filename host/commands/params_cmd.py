@@ -10,6 +10,8 @@ one-line error with exit status 2.  Reading needs no key.
 """
 from __future__ import annotations
 
+import math
+
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.cli_util import console, print_json
 from kinefuse.host.link.signing import add_key_args, key_from_args
@@ -30,11 +32,18 @@ def register(subparsers) -> None:
 
 
 def _parse_set(items: list[str]) -> list[tuple[str, float | int]]:
-    out = []
+    """``NAME=VALUE`` items, all checked before anything is written: one-line errors for a
+    malformed item, a name given twice, a non-finite value and, for the parameters the unit's
+    generated table declares as choices (e.g. KF_FL_MODE: 0 = 6D, 1 = 9D), a value that is
+    not one of them (the unit refuses those too)."""
+    out: list[tuple[str, float | int]] = []
     for item in items:
         name, sep, value = item.partition("=")
-        if not sep or not name:
+        name, value = name.strip(), value.strip()
+        if not sep or not name or not value:
             raise KinefuseError(f"bad --set {item!r}: expected NAME=VALUE")
+        if any(n == name for n, _ in out):
+            raise KinefuseError(f"--set {name} given twice: give each parameter once")
         try:
             v = int(value, 0)
         except ValueError:
@@ -42,8 +51,23 @@ def _parse_set(items: list[str]) -> list[tuple[str, float | int]]:
                 v = float(value)
             except ValueError:
                 raise KinefuseError(f"bad value in --set {item!r}: not a number") from None
-        out.append((name.strip(), v))
+            if not math.isfinite(v):
+                raise KinefuseError(f"bad value in --set {item!r}: must be finite")
+        choices = _choices().get(name)
+        if choices and float(v) not in choices:
+            raise KinefuseError(f"--set {name}={value}: {name} is a choice: "
+                                f"{', '.join(f'{c:g}' for c in choices)}")
+        out.append((name, v))
     return out
+
+
+def _choices() -> dict[str, tuple]:
+    """MAVLink name -> allowed values of the generated parameters declared with choices."""
+    try:
+        from kinefuse.firmware.apptables import parameter_table
+        return {r["name"]: r["choices"] for r in parameter_table() if r.get("choices")}
+    except KinefuseError:       # generated models missing: the unit still checks
+        return {}
 
 
 def run(args) -> int:

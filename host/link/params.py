@@ -49,6 +49,8 @@ def encode_value(value, ptype: int) -> float:
     code = INT_CODES.get(ptype)
     if code is None:
         raise ParamError(f"parameter type {ptype} is not supported (8/16/32-bit integers, REAL32)")
+    if not math.isfinite(float(value)):
+        raise ParamError(f"{value!r} is not an integer ({TYPE_NAMES[ptype]} parameter)")
     iv = int(value)
     if float(value) != iv:
         raise ParamError(f"{value!r} is not an integer ({TYPE_NAMES[ptype]} parameter)")
