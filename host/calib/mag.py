@@ -13,7 +13,8 @@ Quality figures reported with every fit:
 * rotation coverage: eigenvalues of the scatter matrix E[u uᵀ] of the calibrated field
   directions u (1/3 each for a full sphere; → 0 when the directions stay in a plane) and the
   fraction of 32 equal-area direction cells visited.  Poor coverage → warnings; planar data →
-  refusal, because the offset along the plane normal is then not observable.
+  refusal, because the offset along the plane normal is then not observable; so is data that
+  hardly changes (the unit was not turned: only noise, whose directions look isotropic).
 
 Seed 001's gating is available as :func:`gate_norm`: samples whose calibrated norm leaves
 ±tol (0.5 µT in the seed) of the mean norm are replaced by the previous kept sample.
@@ -33,6 +34,10 @@ from kinefuse.host.errors import KinefuseError
 COVERAGE_MIN_EIG_WARN = 0.10
 COVERAGE_MIN_EIG_REFUSE = 0.01
 COVERAGE_CELLS_WARN = 0.5
+#: refusal of readings that do not move (µT, largest standard deviation of the raw readings):
+#: turning a unit through all orientations spreads them by about |B|/√3 per axis (≥ 12 µT
+#: anywhere on Earth, |B| ≥ 22 µT), a still unit only by its noise (≲ 1 µT)
+MOVEMENT_MIN_STD_UT = 2.0
 
 
 @dataclass
@@ -121,6 +126,12 @@ def calibrate(raw, *, model: str = "full", field_norm: float | None = None,
         raise KinefuseError(f"magnetometer calibration needs ≥ {min_samples} samples, got {len(x)}")
     if field_norm is not None and not field_norm > 0:
         raise KinefuseError("the local field norm must be positive (µT)")
+    spread = float(np.sqrt(max(np.linalg.eigvalsh(np.cov(x.T))[-1], 0.0)))
+    if spread < MOVEMENT_MIN_STD_UT:
+        raise KinefuseError(
+            f"magnetometer readings hardly change (largest standard deviation {spread:.2f} µT "
+            f"< {MOVEMENT_MIN_STD_UT:g} µT): the unit was not turned; record a figure-eight "
+            f"motion through all orientations")
     # coverage before fitting: directions about the data centroid (good enough to refuse planes)
     pre = coverage(x - x.mean(axis=0))
     if pre["min_eigenvalue"] < COVERAGE_MIN_EIG_REFUSE:

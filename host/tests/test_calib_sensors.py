@@ -125,6 +125,18 @@ def test_magnetometer_poor_coverage_warns_and_planar_refuses():
         mag.calibrate(planar.mag)
 
 
+@pytest.mark.parametrize("model", ["full", "hard"])
+def test_magnetometer_still_unit_refuses(model):
+    """A unit that was not turned: the readings are noise about one vector, whose directions
+    about their centroid look isotropic, so the plane test passed and a fit of noise was
+    written (full: offset hundreds of µT off; hard: a 0.3 µT sphere with full 'coverage')."""
+    t = np.arange(0, 30, 0.01)
+    still = simulate.imu(t, Q.elementary("Z", 0.3 + 0 * t), rng=np.random.default_rng(2),
+                         hard_iron=HARD)
+    with pytest.raises(KinefuseError, match="not turned"):
+        mag.calibrate(still.mag, model=model)
+
+
 def test_seed001_norm_gating_holds_previous_sample():
     m = np.array([[22.0, 0, 0], [23.5, 0, 0], [22.1, 0, 0], [21.9, 0, 0]])
     gated, keep = mag.gate_norm(m, 0.5)
