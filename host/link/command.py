@@ -3,8 +3,9 @@
     result = send_command(session, 1, MAV_CMD_KF_STREAM, 1.0)     # raises CommandError if refused
     acks = broadcast_command(session, MAV_CMD_KF_STREAM, 1.0)     # {sysid: result} of every unit
 
-MAV_RESULT_DENIED from a kinefuse unit almost always means it requires signed commands (a key
-is set on it): the error says so.
+MAV_RESULT_DENIED from a kinefuse unit means that it requires signed commands (a key is set on
+it) or that a value is out of range (e.g. a KF_RAW_SAMPLE rate above KF_RATE_HZ's 2000 Hz): the
+error names both when the command went unsigned, the range when it was signed.
 """
 from __future__ import annotations
 
@@ -25,7 +26,7 @@ RESULTS = {0: "ACCEPTED", 1: "TEMPORARILY_REJECTED", 2: "DENIED", 3: "UNSUPPORTE
            5: "IN_PROGRESS", 6: "CANCELLED"}
 RESULT_HINTS = {
     1: "not possible now (e.g. no orientation yet for a heading tare)",
-    2: "the unit requires signed commands: give its key with --key/--key-file",
+    2: "a value out of range, or the unit requires signed commands: give its key with --key/--key-file",
     3: "this unit does not support it",
     4: "the unit could not do it",
 }

@@ -43,6 +43,9 @@ def _one_line_error(code, out, err, text):
     (["record", "--port", "fake:", "--out", "{tmp}/junk.kfr"], "exists"),
     (["params", "--port", "tcp:127.0.0.1:1"], "cannot connect"),
     (["params", "--port", "fake:", "--set", "KF_RATE_HZ"], "expected NAME=VALUE"),
+    # KF_RATE_HZ <= 2000: DENIED for the value, not (only) for a missing signing key
+    (["record", "--port", "fake:", "--out", "{tmp}/r.kfr", "--duration", "1", "--start", "--rate", "5000"],
+     "a value out of range"),
 ])
 def test_bad_input_gives_one_line(run, tmp_path, argv, text):
     (tmp_path / "junk.kfr").write_bytes(b"\x00garbage" * 100)
