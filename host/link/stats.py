@@ -158,6 +158,23 @@ def fit_clock_checked(device_s, host_s, blocks: int = 40) -> dict | None:
     return fit
 
 
+CLOCK_JUMP_S = 1.0             # device time this much ahead of what the sample counter says: a jump
+
+
+def clock_jumps(t_us, counter) -> np.ndarray:
+    """Indices where the device clock jumps forward with the sample counter running on (a clock
+    set or stepped, not lost samples: those skip counter values too): the device time step
+    exceeds the counter step times the usual time per count by more than CLOCK_JUMP_S.  Like a
+    reboot, each starts a clock segment of its own (one fit across it is meaningless)."""
+    dt = np.diff(np.asarray(t_us, np.int64))
+    dc = np.diff(np.asarray(counter, np.int64)) & 0xFFFFFFFF
+    ok = (dt > 0) & (dc > 0) & (dc < 1 << 31)
+    if not ok.any():
+        return np.zeros(0, np.int64)
+    per_count = float(np.median(dt[ok] / dc[ok]))
+    return np.flatnonzero(ok & (dt > dc * per_count + CLOCK_JUMP_S * 1e6)) + 1
+
+
 def unit_clock_segments(ds, sysid: int, start_ns: int) -> list[dict]:
     """The unit's device -> host clock, one fit per device-clock segment (a reboot starts one):
     [{"host_from_ns", "offset_s", "slope", "drift_ppm", "points", "excluded_leading", "warnings"}]
@@ -173,7 +190,9 @@ def unit_clock_segments(ds, sysid: int, start_ns: int) -> list[dict]:
             continue
         dev = arr["time_boot_us"][rows].astype(np.int64)
         h = host_ns[rows].astype(np.int64)
-        cuts = [0] + [int(k) + 1 for k in np.flatnonzero(np.diff(dev) < 0)] + [dev.size]
+        cuts = sorted({0, dev.size, *(int(k) + 1 for k in np.flatnonzero(np.diff(dev) < 0)),
+                       *(int(k) for k in (clock_jumps(dev, arr["sample_counter"][rows])
+                                          if "sample_counter" in arr.dtype.names else ()))})
         out = []
         for a, b in zip(cuts[:-1], cuts[1:]):
             x, y = dev[a:b] / 1e6, (h[a:b] - start_ns) / 1e9
@@ -202,10 +221,13 @@ def host_time_from_fit(segments: list[dict], device_us, host_ns) -> np.ndarray:
     return off + slope * t
 
 
-def _last_segment(t_us: np.ndarray) -> slice:
-    """Rows after the last reset of the device clock (time going backwards)."""
-    back = np.flatnonzero(np.diff(t_us.astype(np.int64)) < 0)
-    return slice(int(back[-1]) + 1 if back.size else 0, None)
+def _last_segment(t_us: np.ndarray, counter=None) -> slice:
+    """Rows after the last reset of the device clock (time going backwards) or, with the
+    sample counter, its last forward jump (:func:`clock_jumps`)."""
+    cuts = list(np.flatnonzero(np.diff(t_us.astype(np.int64)) < 0) + 1)
+    if counter is not None:
+        cuts += list(clock_jumps(t_us, counter))
+    return slice(int(max(cuts)) if cuts else 0, None)
 
 
 def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dict) -> dict:
@@ -236,7 +258,8 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
         spec = d.get(mid)
         m: dict = {"count": int(a.size)}
         if "time_boot_us" in a.dtype.names and a.size >= 2:
-            seg = a[_last_segment(a["time_boot_us"])]
+            counter = a["sample_counter"] if "sample_counter" in a.dtype.names else None
+            seg = a[_last_segment(a["time_boot_us"], counter)]
             t = seg["time_boot_us"].astype(np.int64)
             span = (t[-1] - t[0]) / 1e6
             if span > 0:
@@ -260,7 +283,14 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
         arr = ds.arrays[clock_ref]
         rows = arr["_sysid"] == sysid
         t_us = arr["time_boot_us"][rows]
-        seg = _last_segment(t_us)
+        counter = arr["sample_counter"][rows] if "sample_counter" in arr.dtype.names else None
+        seg = _last_segment(t_us, counter)
+        jumps = clock_jumps(t_us, counter) if counter is not None else ()
+        if len(jumps):
+            by = (int(t_us[jumps[0]]) - int(t_us[jumps[0] - 1])) / 1e6
+            out.setdefault("warnings", []).append(
+                f"unit {sysid}: its clock jumped forward {len(jumps)} time(s) with the sample counter running on "
+                f"(first by {by:,.1f} s): rate and clock fit are those of the last clock segment")
         host = (ds.host_ns[clock_ref][rows][seg] - start_ns) / 1e9
         fit = fit_clock_checked(t_us[seg].astype(np.float64) / 1e6, host)
         if fit is not None:

@@ -175,7 +175,7 @@ def _unwrap(cnt: np.ndarray) -> np.ndarray:
 def read(path: str, *, unit=None, **_) -> Recording:
     """One unit of a ``.kfr`` recording (or raw MAVLink capture) as a :class:`Recording`."""
     from kinefuse.host.link.dialect import RAW_SCALE
-    from kinefuse.host.link.stats import counter_analysis, fit_clock, leading_stale
+    from kinefuse.host.link.stats import clock_jumps, counter_analysis, fit_clock, leading_stale
     path = str(path)
     df = _decode(path)
     found = _units(df)
@@ -192,7 +192,14 @@ def read(path: str, *, unit=None, **_) -> Recording:
     name = f"unit {u['label']}"
 
     # --- device-clock segments, repeats, host time
-    starts = _segments(dev, cnt) + [dev.size]
+    starts = _segments(dev, cnt)
+    jumps = clock_jumps(dev, cnt) if host is not None else ()
+    if len(jumps):   # one fit across a clock step is meaningless: each side gets its own
+        warnings.append(f"{path}: {name}: the device clock jumped forward {len(jumps)} time(s) with the sample "
+                        f"counter running on (first by {(dev[jumps[0]] - dev[jumps[0] - 1]) / 1e6:,.1f} s at "
+                        f"sample {int(jumps[0])}): each part mapped to the host clock by its own fit")
+        starts = sorted(set(starts) | {int(j) for j in jumps})
+    starts = starts + [dev.size]
     if host is None and len(starts) > 2:
         warnings.append(f"{path}: {name}: device clock restarted {len(starts) - 2} time(s) and this capture "
                         f"has no host times: only the last segment is read")

@@ -160,6 +160,30 @@ def test_reboot_and_slower_magnetometer(tmp_path):
     assert np.array_equal(r.mag, _counts(mag[k], 0.1) * 0.1)  # held from the last update
 
 
+def test_clock_jump_gets_its_own_fit(tmp_path):
+    """The unit's clock is set one hour forward after 2 s while its sample counter runs on: one
+    fit across the step mapped the samples to host times 17 s apart, 25 us steps, no warning.
+    Each side now gets its own fit (host time runs on), with a warning; stats and export too."""
+    from kinefuse.host.link import stats
+    from kinefuse.host.link.frames import decode_file
+    t, acc, gyr, mag = _motion(1000)
+    fa, _ = _frames(t[:400], acc[:400], gyr[:400], mag[:400], sysid=3, boot_s=40.0, drift_ppm=100)
+    fb, _ = _frames(t[400:], acc[400:], gyr[400:], mag[400:], sysid=3, boot_s=3640.0, drift_ppm=100,
+                    counter0=400)
+    p = tmp_path / "jump.kfr"
+    _write_kfr(p, [list(zip(t, fa + fb))])
+    r = read_recording(str(p))
+    assert len(r) == 1000 and r.metadata["device_clock_segments"] == 2
+    assert np.abs(r.t - (t + MIN_LATENCY)).max() < 3e-4
+    assert any("clock jumped forward 1 time(s)" in w and "first by 3,600." in w for w in r.warnings), r.warnings
+    (u,) = stats.compute(decode_file(p))["streams"][0]["units"]
+    assert abs(u["clock"]["drift_ppm"] - 100) < 50 and u["messages"]["KF_RAW_SAMPLE"]["rate_hz"] == pytest.approx(
+        200, rel=1e-3)
+    assert any("clock jumped forward" in w for w in u["warnings"])
+    segs = stats.unit_clock_segments(decode_file(p).streams[0], 3, T0_NS)
+    assert len(segs) == 2 and all(abs(sg["drift_ppm"] - 100) < 50 for sg in segs)   # 2 s, 3 s: jitter
+
+
 def _one_line(exc, *texts):
     msg = str(exc.value)
     assert "\n" not in msg, msg
