@@ -25,7 +25,8 @@ def register(sub) -> None:
                    help="implementation of a kinefuse filter (default: ref)")
     p.add_argument("--param", action="append", metavar="KEY=VALUE",
                    help="filter parameter override, repeatable")
-    p.add_argument("--out", metavar="PNG", help="output file (default: <trial>_<filter>.png)")
+    p.add_argument("--out", metavar="PNG", help="output file (default: <trial>_<filter>_<impl>.png, a competitor's "
+                        "<trial>_<name>.png)")
     p.add_argument("--start", type=float, metavar="S", help="plot from this time (s)")
     p.add_argument("--end", type=float, metavar="S", help="plot up to this time (s)")
     p.set_defaults(func=run)

@@ -75,6 +75,8 @@ def test_plot_file_and_name_lookup(kf, tmp_path, monkeypatch):
     code, out, err = kf("plot", "--input", "24", "--start", "40", "--end", "60")
     assert code == 0, err
     assert (tmp_path / "24_disturbed_tapping_A_perfect_ref.png").exists()
+    code, out, err = kf("plot", "--help")      # the default named in the help is the one written
+    assert "<trial>_<filter>_<impl>.png" in " ".join(out.split())
 
 
 @pytest.mark.parametrize("argv, message", [
