@@ -5,6 +5,8 @@
 """
 from __future__ import annotations
 
+from pathlib import Path
+
 from kinefuse.host.link.cli_util import console, print_json
 
 
@@ -25,13 +27,20 @@ def run(args) -> int:
     from kinefuse.host.link.frames import decode_file
     con = console(args.json)
     messages = [m.strip() for m in args.messages.split(",") if m.strip()] if args.messages else None
-    with Progress(console=con, transient=True) as prog:
+    with Progress(console=con, transient=True, disable=not con.is_terminal) as prog:   # piped: no blank line
         task = prog.add_task("decoding", total=None)
         df = decode_file(args.file, raw=args.raw)
+        out = Path(args.out)
+        before = set(out.glob("*.csv")) if out.is_dir() else set()
         total = sum(a.size for ds in df.streams.values() for a in ds.arrays.values())
         prog.update(task, description="writing CSV", total=max(1, total), completed=0)
         files = export_csv(df, args.out, messages, progress=lambda name, n: prog.advance(task, n))
     warnings = _warnings(df)
+    others = sorted(before - {Path(f["file"]) for f in files})
+    if others:   # an earlier export's files would pass for this recording's
+        warnings.append(f"{out} also holds {len(others)} CSV file(s) this export did not write "
+                        f"({', '.join(p.name for p in others[:3])}{', ...' if len(others) > 3 else ''}): "
+                        f"from an earlier export?")
     for w in warnings:
         con.print(f"[yellow]warning:[/] {w}")
     if args.json:

@@ -111,10 +111,6 @@ def _columns(spec: MessageSpec, arr: np.ndarray) -> list[tuple[str, np.ndarray, 
 def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, progress=None) -> list[dict]:
     """Write one CSV per message type into ``out_dir``; returns [{message, file, rows}]."""
     out_dir = Path(out_dir)
-    try:
-        out_dir.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise KinefuseError(f"cannot create {out_dir}: {exc.strerror or exc}") from None
     d = kinefuse_dialect()
     wanted = None
     if messages:
@@ -123,6 +119,10 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
             if m.upper() not in d:
                 raise KinefuseError(f"unknown message {m!r} (e.g. KF_RAW_SAMPLE, KF_ORIENTATION)")
             wanted.add(d[m].msgid)
+    try:   # after the checks: a refused export leaves no empty folder
+        out_dir.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise KinefuseError(f"cannot create {out_dir}: {exc.strerror or exc}") from None
     by_msg: dict[int, list] = {}
     for sid, ds in df.streams.items():
         for mid, arr in ds.arrays.items():
