@@ -48,6 +48,11 @@ def build(module_stem: str, headers: list[Path], sources: list[Path], extra_cdef
     blob = hashlib.sha256()
     for p in headers + sources:
         blob.update(p.name.encode() + b"\0" + p.read_bytes())
+    # the headers the sources may include (kf_fixed.h, the shared input types): a change there
+    # must rebuild too, not load a module compiled against the old text
+    for inc in include_dirs:
+        for h in sorted(Path(inc).glob("*.h")):
+            blob.update(h.name.encode() + b"\0" + h.read_bytes())
     blob.update(repr((flags, extra_cdef, extra_source, include_dirs, sys.version)).encode())
     name = f"_kf_{re.sub(r'[^a-zA-Z0-9_]', '_', module_stem)}_{blob.hexdigest()[:16]}"
     d = cache_dir()

@@ -174,6 +174,11 @@ class FixedPlan:
             elif op == "rnorm":
                 eps = n.attrs[0]
                 iv = (1.0 / math.sqrt(max(a[0][1], eps)), 1.0 / math.sqrt(max(a[0][0], eps)))
+                if "scaled" in n.attrs[1:]:
+                    clo, chi = a[-1]
+                    if clo < 0.0:
+                        self._err(n, f"rnorm scale range [{clo:g}, {chi:g}] may be negative")
+                    iv = (clo * iv[0], chi * iv[1])
             elif op == "min":
                 iv = (min(a[0][0], a[1][0]), min(a[0][1], a[1][1]))
             elif op == "max":
@@ -486,7 +491,8 @@ class FixedLowering:
             return [Assign(t, "dyn", Call("kf_rsqrt_dyn", (self.ref(a[0], names),
                                                            Int(self.fmt[a[0].id].frac))), comment)]
         if op == "rnorm":
-            comps = a[1:]
+            scaled = "scaled" in n.attrs[1:]
+            comps = a[1:-1] if scaled else a[1:]
             fc = min(self.fmt[x.id].frac for x in comps)
             stmts, vals = [], []
             for i, x in enumerate(comps):
@@ -500,8 +506,15 @@ class FixedLowering:
                     vals.append(Var(f"{t}_{i}"))
             vals += [Int(0)] * (4 - len(vals))
             m_eps, e_eps = dyn_const_rsqrt(n.attrs[0])
-            return stmts + [Assign(t, "dyn", Call("kf_rnorm_dyn", tuple(vals) + (
-                Int(fc), Int(m_eps), Int(e_eps))), comment)]
+            r = Call("kf_rnorm_dyn", tuple(vals) + (Int(fc), Int(m_eps), Int(e_eps)))
+            if not scaled:
+                return stmts + [Assign(t, "dyn", r, comment)]
+            c = a[-1]
+            if self.fmt[c.id].dyn:
+                raise NotImplementedError("rnorm scaled by an rsqrt value")
+            return stmts + [Assign(t + "_u", "dyn", r, comment),
+                            Assign(t, "dyn", Call("kf_dyn_scale", (
+                                Var(t + "_u"), self.ref(c, names), Int(self.fmt[c.id].frac))))]
         if op == "floor":
             fa = self.fmt[a[0].id].frac
             x = Wide(self.ref(a[0], names))

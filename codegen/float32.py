@@ -7,7 +7,9 @@ executes the same statements on numpy float32 values.  Only correctly rounded op
 
 Semantics worth knowing:
   min(a, b) = (a < b) ? a : b and max(a, b) = (a > b) ? a : b — the second operand wins when the
-  first is NaN; rsqrt(x) = 1.0f / sqrtf(x) (two rounded operations); assume() is the identity.
+  first is NaN; rsqrt(x) = 1.0f / sqrtf(x) (two rounded operations); rnorm with a scale c is
+  c / sqrtf(m), and split (on a dependency chain) sqrtf(m) * (c / m), three; assume() is the
+  identity.
 """
 from __future__ import annotations
 
@@ -71,9 +73,13 @@ class Float32Lowering:
                                         Bin("-", Var(t + "_i"), F32(1.0)), Var(t + "_i")))]
         if op == "rnorm":
             eps = F32(n.attrs[0])
-            return [Assign(t + "_m", kind, Sel(Bin("<", eps, a[0]), a[0], eps), n.loc),
-                    Assign(t + "_s", kind, Call("sqrtf", (Var(t + "_m"),))),
-                    Assign(t, kind, Bin("/", F32(1.0), Var(t + "_s")))]
+            c = a[-1] if "scaled" in n.attrs[1:] else F32(1.0)
+            m = [Assign(t + "_m", kind, Sel(Bin("<", eps, a[0]), a[0], eps), n.loc),
+                 Assign(t + "_s", kind, Call("sqrtf", (Var(t + "_m"),)))]
+            if "split" in n.attrs[1:]:   # sqrt(m) * (c/m): sqrtf and the division overlap
+                return m + [Assign(t + "_r", kind, Bin("/", c, Var(t + "_m"))),
+                            Assign(t, kind, Bin("*", Var(t + "_s"), Var(t + "_r")))]
+            return m + [Assign(t, kind, Bin("/", c, Var(t + "_s")))]
         if op == "min":
             return [Assign(t, kind, Sel(Bin("<", a[0], a[1]), a[0], a[1]), n.loc)]
         if op == "max":

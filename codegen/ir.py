@@ -67,7 +67,8 @@ OPS: dict[str, OpInfo] = {
     # 1 / sqrt(max(n2, eps)) where n2 = x0^2 + ... + xk^2 is the first argument and x0..xk
     # (1 to 4 of them) follow.  The float paths use n2; the fixed-point path uses the
     # components with block scaling, so tiny vectors keep full precision.
-    "rnorm": OpInfo(-1, None, REAL, False, "1 / sqrt(max(n2, eps)), n2 = sum of squares of x"),
+    "rnorm": OpInfo(-1, None, REAL, False, "1 / sqrt(max(n2, eps)), n2 = sum of squares of x "
+                    "(scaled: c / sqrt(...), c the last operand)"),
 }
 
 ARITH = ("add", "sub", "mul", "div")
@@ -159,8 +160,9 @@ class Graph:
         if info is None:
             raise ValueError(f"unknown operation {op!r}")
         if info.arity == -1:
-            if not 2 <= len(args) <= 5 or any(a.type != REAL for a in args):
-                raise ValueError(f"{op} takes n2 and 1 to 4 real components")
+            extra = 1 if "scaled" in attrs else 0     # rnorm's scale operand, last
+            if not 2 + extra <= len(args) <= 5 + extra or any(a.type != REAL for a in args):
+                raise ValueError(f"{op} takes n2, 1 to 4 real components and, scaled, a scale")
         elif len(args) != info.arity:
             raise ValueError(f"{op} takes {info.arity} arguments, got {len(args)}")
         rtype = _result_type(op, info, args, type)

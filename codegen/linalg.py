@@ -133,9 +133,9 @@ class Quat(tuple):
     def norm_sq(self):
         return self[0] * self[0] + self[1] * self[1] + self[2] * self[2] + self[3] * self[3]
 
-    def normalized(self, eps: float = 1e-6):
-        """Unit quaternion (components assumed within [-1, 1])."""
-        k, _ = rnorm(self, eps)
+    def normalized(self, eps: float = 1e-6, split: bool = False):
+        """Unit quaternion (components assumed within [-1, 1]); split: see scalar.rnorm."""
+        k, _ = rnorm(self, eps, split)
         return Quat(*(assume(c * k, -1.0, 1.0) for c in self))
 
     def rotate(self, v: Vec3) -> Vec3:

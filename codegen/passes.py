@@ -41,7 +41,8 @@ def eval_op(op: str, vals: list, attrs: tuple = ()):
         return scalar.floor(vals[0])
     if op == "rnorm":
         n2, eps = vals[0], attrs[0]
-        return scalar.rsqrt(n2 if n2 > eps else eps)
+        r = scalar.rsqrt(n2 if n2 > eps else eps)
+        return vals[-1] * r if "scaled" in attrs else r
     if op == "min":
         return vals[0] if vals[0] < vals[1] else vals[1]
     if op == "max":

@@ -143,10 +143,16 @@ def rsqrt(x):
     return math.inf if x == 0.0 else math.nan
 
 
-def rnorm(xs, eps: float):
+def rnorm(xs, eps: float, split: bool = False, scale=None):
     """(1 / sqrt(max(|x|^2, eps)), |x|^2) for a vector x of 1 to 4 components: the scale that
     normalises x, and its squared norm.  Prefer it to rsqrt(sum of squares): the fixed-point path
-    then keeps full precision for vectors of any length."""
+    then keeps full precision for vectors of any length.
+
+    scale: a value c >= 0 to return c / sqrt(max(|x|^2, eps)) instead (binary32 folds it into the
+    division; fixed point keeps the dynamic binary point: kf_dyn_scale).
+    split=True: for a norm on a filter's sample-to-sample dependency chain.  binary32 then
+    computes sqrt(m) * (c/m) instead of c/sqrt(m): the square root and the division run side by
+    side (one product more, ~1.5 instead of ~1 ulp); fixed point is unchanged."""
     xs = tuple(xs)
     sq = [c * c for c in xs]
     # pairwise: a quaternion's squared norm is two additions deep, not three (it lies on the
@@ -156,12 +162,17 @@ def rnorm(xs, eps: float):
         n2 = n2 + (sq[2] + sq[3])
     elif len(sq) == 3:
         n2 = n2 + sq[2]
-    s = _first_sym(n2, *xs)
+    s = _first_sym(n2, *xs, *(() if scale is None else (scale,)))
     if s is not None:
         g = s.g
         args = [s._lift(n2)] + [s._lift(c) for c in xs]
-        return Sym(g, g.add("rnorm", args, attrs=(float(eps),), loc=_loc())), n2
-    return rsqrt(n2 if n2 > eps else eps), n2
+        attrs = (float(eps),) + (("split",) if split else ())
+        if scale is not None:
+            args.append(s._lift(scale))
+            attrs += ("scaled",)
+        return Sym(g, g.add("rnorm", args, attrs=attrs, loc=_loc())), n2
+    r = rsqrt(n2 if n2 > eps else eps)
+    return (r if scale is None else scale * r), n2
 
 
 FLOOR_LIMIT = float(2 ** 30)

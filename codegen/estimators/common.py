@@ -150,8 +150,9 @@ def tilt_correction(q: Quat, acc_unit: Vec3, gain):
     """
     g = q.rotate(acc_unit)
     g = Vec3(assume(g.x, -1.0, 1.0), assume(g.y, -1.0, 1.0), assume(g.z, -1.0, 1.0))
-    full = Quat(1.0 + g.z, g.y, -g.x, 0.0).normalized(1e-12)
-    dq = Quat(1.0 - gain + gain * full.w, gain * full.x, gain * full.y, 0.0).normalized(1e-12)
+    full = Quat(1.0 + g.z, g.y, -g.x, 0.0).normalized(1e-12, split=True)
+    dq = Quat(1.0 - gain + gain * full.w, gain * full.x, gain * full.y, 0.0).normalized(1e-12,
+                                                                              split=True)
     return dq * q
 
 
@@ -165,12 +166,12 @@ def heading_correction(q: Quat, mag_unit: Vec3, gain):
     l = q.rotate(mag_unit)
     lx, ly = assume(l.x, -1.0, 1.0), assume(l.y, -1.0, 1.0)
     horiz = sqrt(fmax(lx * lx + ly * ly, 0.0))
-    full = Quat(horiz + ly, 0.0, 0.0, lx).normalized(1e-12)
-    dq = Quat(1.0 - gain + gain * full.w, 0.0, 0.0, gain * full.z).normalized(1e-12)
+    full = Quat(horiz + ly, 0.0, 0.0, lx).normalized(1e-12, split=True)
+    dq = Quat(1.0 - gain + gain * full.w, 0.0, 0.0, gain * full.z).normalized(1e-12, split=True)
     return dq * q
 
 
 def integrate_gyro(q: Quat, omega: Vec3, dt) -> Quat:
     """Strapdown step q + dt/2 q ⊗ (0, ω), normalised."""
     qdot = (q * Quat(0.0, omega.x, omega.y, omega.z)).scale(0.5)
-    return (q + qdot.scale(dt)).normalized()
+    return (q + qdot.scale(dt)).normalized(split=True)

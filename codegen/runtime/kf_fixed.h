@@ -184,6 +184,40 @@ static inline kf_dyn kf_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, in
     return r;
 }
 
+/* r * c * 2^-fc for c >= 0 as a dyn value, the mantissa rounded to nearest (ties up) back into
+ * [2^30, 2^31); c <= 0 gives the value 0 (m = 0, which kf_mul_dyn turns into 0). */
+static inline kf_dyn kf_dyn_scale(kf_dyn r, int32_t c, int32_t fc)
+{
+    kf_dyn out;
+    uint64_t p, m;
+    int32_t sh = 0;
+    if ((c <= 0) || (r.m <= 0)) {
+        out.m = 0;
+        out.e = 0;
+        return out;
+    }
+    p = (uint64_t)(uint32_t)r.m * (uint64_t)(uint32_t)c;     /* below 2^62 */
+    while ((p >> sh) >= ((uint64_t)1 << 31)) {
+        sh++;
+    }
+    if (sh > 0) {
+        m = (p + ((uint64_t)1 << (sh - 1))) >> sh;
+        if (m >= ((uint64_t)1 << 31)) {    /* rounded up to 2^31 */
+            m >>= 1;
+            sh++;
+        }
+    } else {
+        m = p;
+        while (m < ((uint64_t)1 << 30)) {
+            m <<= 1;
+            sh--;
+        }
+    }
+    out.m = (int32_t)m;
+    out.e = r.e + fc - sh;
+    return out;
+}
+
 /* a * r rescaled: raw result = a * r.m * 2^-(kbase + r.e), rounded, clamped to [lo, hi]. */
 static inline int32_t kf_mul_dyn(int32_t a, kf_dyn r, int32_t kbase, int32_t lo, int32_t hi)
 {

@@ -149,6 +149,35 @@ def kf_rsqrt_dyn_v(y, fy):
             np.array([o[1] for o in out], dtype=np.int64))
 
 
+def kf_dyn_scale(r, c, fc):
+    """kf_dyn_scale"""
+    m0, e0 = r
+    if c <= 0 or m0 <= 0:
+        return (0, 0)
+    p = m0 * c
+    sh = max(0, p.bit_length() - 31)
+    if sh > 0:
+        m = (p + (1 << (sh - 1))) >> sh
+        if m >= (1 << 31):
+            m >>= 1
+            sh += 1
+    else:
+        m = p
+        while m < (1 << 30):
+            m <<= 1
+            sh -= 1
+    return (m, e0 + fc - sh)
+
+
+def kf_dyn_scale_v(r, c, fc):
+    m, e, c = np.broadcast_arrays(np.asarray(r[0], dtype=np.int64), np.asarray(r[1], dtype=np.int64),
+                                  np.asarray(c, dtype=np.int64))
+    out = [kf_dyn_scale((mm, ee), cc, fc) for mm, ee, cc in
+           zip(m.ravel().tolist(), e.ravel().tolist(), c.ravel().tolist())]
+    return (np.array([o[0] for o in out], dtype=np.int64).reshape(m.shape),
+            np.array([o[1] for o in out], dtype=np.int64).reshape(m.shape))
+
+
 def kf_mul_dyn(a, r, kbase, lo, hi):
     """kf_mul_dyn"""
     p = a * r[0]

@@ -26,6 +26,8 @@ void w_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, int32_t f, int32_t 
                  int32_t *m, int32_t *e)
 { kf_dyn r = kf_rnorm_dyn(a, b, c, d, f, em, ee); *m = r.m; *e = r.e; }
 int32_t w_q_from_f32(float x, int32_t f, int32_t lo, int32_t hi) { return kf_q_from_f32(x, f, lo, hi); }
+void w_dyn_scale(int32_t m, int32_t e, int32_t cc, int32_t fc, int32_t *om, int32_t *oe)
+{ kf_dyn r; r.m = m; r.e = e; r = kf_dyn_scale(r, cc, fc); *om = r.m; *oe = r.e; }
 """
 CDEF = """
 int32_t w_sat(int64_t v, int32_t lo, int32_t hi);
@@ -37,6 +39,7 @@ int32_t w_mul_dyn(int32_t a, int32_t m, int32_t e, int32_t kb, int32_t lo, int32
 void w_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, int32_t f, int32_t em, int32_t ee,
                  int32_t *m, int32_t *e);
 int32_t w_q_from_f32(float x, int32_t f, int32_t lo, int32_t hi);
+void w_dyn_scale(int32_t m, int32_t e, int32_t cc, int32_t fc, int32_t *om, int32_t *oe);
 """
 
 
@@ -109,6 +112,22 @@ def test_mul_dyn(c, a, m, e, kb, lo, hi):
     assert c[1].w_mul_dyn(a, m, e, kb, lo, hi) == rt.kf_mul_dyn(a, (m, e), kb, lo, hi)
 
 
+@settings(max_examples=200, deadline=None)
+@given(m=st.integers(2 ** 30, 2 ** 31 - 1), e=st.integers(-40, 120),
+       cc=st.one_of(I32, st.integers(-2, 3), st.just(2 ** 31 - 1)), fc=st.integers(-10, 60))
+def test_dyn_scale(c, m, e, cc, fc):
+    ffi, lib = c
+    om, oe = ffi.new("int32_t *"), ffi.new("int32_t *")
+    lib.w_dyn_scale(m, e, cc, fc, om, oe)
+    assert (om[0], oe[0]) == rt.kf_dyn_scale((m, e), cc, fc)
+    if cc <= 0:
+        assert om[0] == 0
+        return
+    assert 2 ** 30 <= om[0] < 2 ** 31                  # normalised again
+    exact = m * 2.0 ** -e * cc * 2.0 ** -fc
+    assert abs(om[0] * 2.0 ** -oe[0] / exact - 1) <= 2.0 ** -31   # rounded to nearest
+
+
 @settings(max_examples=150, deadline=None)
 @given(v=st.lists(st.one_of(I32, st.integers(-3, 3)), min_size=4, max_size=4),
        f=st.integers(-20, 60))
@@ -150,3 +169,20 @@ def test_vector_dyn_product_broadcasts_a_per_run_scale():
     r = rt.kf_rsqrt_dyn(12345, 10)
     got = rt.kf_mul_dyn_v(a, r, 4, -(2 ** 31 - 1), 2 ** 31 - 1)
     assert got.tolist() == [rt.kf_mul_dyn(int(x), r, 4, -(2 ** 31 - 1), 2 ** 31 - 1) for x in a]
+
+
+def test_a_changed_included_header_rebuilds(tmp_path, monkeypatch):
+    # the cffi cache key covers the headers of the include directories, not only the sources
+    # given: a helper changed in kf_fixed.h must not be served from a module built before
+    monkeypatch.setenv("KINEFUSE_CACHE", str(tmp_path / "cache"))
+    inc = tmp_path / "inc"
+    inc.mkdir()
+    src = tmp_path / "w.c"
+    src.write_text('#include "k.h"\nint w(void) { return K; }\n')
+    answers = []
+    for k in (1, 2):
+        (inc / "k.h").write_text(f"#define K {k}\n")
+        _, lib = build("header_key_test", [], [src], extra_cdef="int w(void);",
+                       include_dirs=[inc])
+        answers.append(lib.w())
+    assert answers == [1, 2]

@@ -5,6 +5,7 @@ feedback, counters and saturation."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import HealthCheck, example, given, settings, strategies as st
 
 from kinefuse.codegen.estimator import Estimator, InputSpec, Param, Var
@@ -14,7 +15,7 @@ from kinefuse.codegen.scalar import (assume, clamp, fabs, floor, fmax, fmin, inc
                                      select, sqrt, when)
 from kinefuse.codegen.testing import build_adhoc
 
-N_OPS = 17
+N_OPS = 18
 instr = st.tuples(st.integers(0, N_OPS - 1), st.integers(0, 99), st.integers(0, 99),
                   st.integers(0, 99), st.floats(-8.0, 8.0, allow_nan=False).filter(lambda v: v != 0))
 programs = st.lists(instr, min_size=3, max_size=24)
@@ -60,6 +61,9 @@ def make_estimator(program, uid: int):
             return b * rsqrt(fmax(a * a, 0.01))
         if op == 15:        # a reciprocal square root (dynamic binary point) chosen by a select
             return select(a < b, rsqrt(fmax(fabs(a), 0.01)), d)
+        if op == 16:        # a scaled rnorm, split or not (scale c/(1+|d|) in [0, 8])
+            kk, _ = rnorm((a, b), 1e-6, split=i % 2 == 0, scale=abs(c) / (fabs(d) + 1.0))
+            return assume(a * kk, -8.0, 8.0)
         return a * c
 
     class Prog(Estimator):
@@ -99,6 +103,8 @@ _uid = iter(range(10 ** 9))
 @example(program=[(0, 0, 0, 0, 1.0), (0, 0, 0, 0, 1.0), (11, 0, 0, 0, 2.225073858507e-311)], seed=0)
 # the fixed-point select of a dynamic-point rsqrt did not compile (found in flagship's renorm)
 @example(program=[(15, 0, 1, 2, 1.0), (2, 6, 3, 0, 1.0)], seed=1)
+# scaled rnorm, split (i even) and not (i odd)
+@example(program=[(16, 0, 1, 2, 3.0), (16, 1, 6, 0, 5.0), (2, 6, 7, 0, 1.0)], seed=2)
 def test_random_program_c_equals_model(program, seed, tmp_path):
     est = make_estimator(program, next(_uid))
     runners = build_adhoc(est, tmp_path / est.name)
@@ -112,3 +118,34 @@ def test_random_program_c_equals_model(program, seed, tmp_path):
             assert bad.size == 0, (f"{system} output {key} differs at samples {bad[:5]}: "
                                    f"C {oc[key][bad[0]]} model {om[key][bad[0]]} "
                                    f"inputs {enc.inputs['x'][bad[0]]}")
+
+
+@pytest.mark.parametrize("split", [True, False], ids=["split", "unsplit"])
+def test_scaled_rnorm_is_c_over_the_norm(split, tmp_path):
+    # y = x0 * c / |(x0, x1)| with c = 3 / (|x2| + 1): the generated C of both number systems
+    # against the float64 value (C and model agreeing is the test above)
+    class Scaled(Estimator):
+        """scaled rnorm"""
+        name = f"scaled{next(_uid)}"
+        inputs = InputSpec(name, (Var("x", 3, -100.0, 100.0),))
+        params = ()
+        state = (Var("n", 1, 0, 2 ** 31 - 1, type=INT, init=0),)
+        outputs = (Var("y", 1, -3.0, 3.0),)
+
+        def step(self, x, u, p):
+            k, _ = rnorm((u.x[0], u.x[1]), 1e-6, split=split,
+                         scale=3.0 / (fabs(u.x[2]) + 1.0))
+            return {"n": x.n}, {"y": assume(u.x[0] * k, -3.0, 3.0)}
+
+    runners = build_adhoc(Scaled(), tmp_path / "scaled")
+    x = np.clip(np.random.default_rng(7).normal(0, 40, (300, 3)), -99.0, 99.0)
+    x[:5, :2] = [[0.0, 0.0], [1e-4, 0.0], [0.0, -3e-4], [99.0, 99.0], [-0.5, 1e-3]]
+    for system, tol in (("f32", 1e-6), ("q", 1e-6)):
+        c, _ = runners[system]
+        enc = c.encode({"x": x}, {})
+        xq = c.decode_values("input", "x", "real", enc.inputs["x"])   # as the filter sees them
+        a, b = xq[:, 0], xq[:, 1]
+        want = a * (3.0 / (np.abs(xq[:, 2]) + 1.0)) / np.sqrt(np.maximum(a * a + b * b, 1e-6))
+        got = c.decode_values("output", "y", "real", c.run_encoded(enc)["y"][:, 0])
+        err = np.abs(got - want)
+        assert np.max(err) < tol, (system, np.max(err), int(np.argmax(err)))
