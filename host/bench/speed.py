@@ -51,7 +51,8 @@ def register_bench(sub):
     p = sub.add_parser("speed", help="samples/s of the generated C, models, reference, Fusion, VQF")
     p.add_argument("--filter", default=None, help="filter name (default: the default filter)")
     p.add_argument("--data", help="trial file or folder (first trial used)")
-    p.add_argument("--repeat", type=int, default=5, help="repetitions of the fast paths (best taken)")
+    p.add_argument("--repeat", type=int, default=15,
+                   help="rounds of the C/C++ batch paths, timed in turns (best of each taken)")
     p.add_argument("--model-samples", type=int, default=5000,
                    help="samples used for the (slow) Python model and reference timings")
     p.add_argument("--instructions", action="store_true",
@@ -67,6 +68,19 @@ def _best(fn, repeat: int) -> float:
         t = time.perf_counter()
         fn()
         best = min(best, time.perf_counter() - t)
+    return best
+
+
+def _best_interleaved(calls: dict, repeat: int) -> dict[str, float]:
+    """Best time of each call, the calls taking turns for `repeat` rounds: a change of the
+    machine's load during the run then falls on all of them alike instead of on whichever was
+    being timed (timing each path's repetitions in a block moved the Fusion ratio by +-30 %)."""
+    best = {k: float("inf") for k in calls}
+    for _ in range(repeat):
+        for k, fn in calls.items():
+            t = time.perf_counter()
+            fn()
+            best[k] = min(best[k], time.perf_counter() - t)
     return best
 
 
@@ -310,11 +324,16 @@ def run(args) -> int:
         what = files[0].name
     eprint(f"bench speed: {name} on {what} ({n} samples)")
     sps: dict[str, float | None] = {}
+    batch = {}                            # the C/C++ batch paths, timed in turns below
     for system in ("f32", "q"):
         r = cg.runner(name, system)
         call, _ = r.prepare(r.encode(inputs, prm))   # records packed once, as Fusion's arrays
         call()
-        sps[f"{system}_c"] = n / _best(call, args.repeat)
+        batch[f"{system}_c"] = call
+    if not angle:                        # competitors, same trial, same run
+        batch.update(_competitors(sps, trial, n))
+    for k, t in _best_interleaved(batch, args.repeat).items():
+        sps[k] = n / t
     m = min(args.model_samples, n)
     small = {k: v[:m] for k, v in inputs.items()}
     for system in ("f32", "q"):
@@ -322,8 +341,8 @@ def run(args) -> int:
         enc = r.encode(small, prm)
         sps[f"{system}_model"] = m / _best(lambda: r.run_encoded(enc), 1)
     sps["ref"] = m / _best(lambda: cg.run(name, "ref", small, prm), 1)
-    if not angle:                        # competitors, same trial, same run
-        _competitors(sps, trial, n, args.repeat)
+    order = ("f32_c", "q_c", "f32_model", "q_model", "ref", "imufusion", "vqf")
+    sps = {k: sps[k] for k in order if k in sps}
     result = {"filter": name, "samples_per_s": sps}
     if args.instructions:
         eprint("  counting instructions under valgrind (a few seconds)...")
@@ -362,8 +381,10 @@ def run(args) -> int:
     return 0
 
 
-def _competitors(sps: dict, trial, n: int, repeat: int) -> None:
-    """x-io Fusion's C and VQF's C++ on the same trial (None when unavailable)."""
+def _competitors(sps: dict, trial, n: int) -> dict:
+    """x-io Fusion's C and VQF's C++ on the same trial: their batch calls, to be timed with ours
+    (an unavailable one is reported and set to None in sps)."""
+    calls = {}
     try:
         ffi, lib = fusion_runner()
         g, a, mg = fusion_inputs(trial)
@@ -372,18 +393,19 @@ def _competitors(sps: dict, trial, n: int, repeat: int) -> None:
         call = lambda: lib.kf_fusion_run(fp(g), fp(a), fp(mg), fp(q, True), n,  # noqa: E731
                                          float(trial.rate_hz))
         call()
-        sps["imufusion"] = n / _best(call, repeat)
+        calls["imufusion"] = call
     except Exception as exc:  # competitor sources unavailable (offline) -> report, do not fail
         eprint(f"  x-io Fusion not measured: {exc}")
         sps["imufusion"] = None
     try:
         import vqf
-        g = np.ascontiguousarray(trial.gyr, dtype=np.float64)
-        a = np.ascontiguousarray(trial.acc, dtype=np.float64)
-        mg = np.ascontiguousarray(trial.mag, dtype=np.float64)
-        call = lambda: vqf.VQF(float(trial.dt)).updateBatch(g, a, mg)  # noqa: E731
+        vg = np.ascontiguousarray(trial.gyr, dtype=np.float64)
+        va = np.ascontiguousarray(trial.acc, dtype=np.float64)
+        vm = np.ascontiguousarray(trial.mag, dtype=np.float64)
+        call = lambda: vqf.VQF(float(trial.dt)).updateBatch(vg, va, vm)  # noqa: E731
         call()
-        sps["vqf"] = n / _best(call, repeat)
+        calls["vqf"] = call
     except ImportError:
         eprint("  VQF not measured: `pip install vqf` (benchmark extra)")
         sps["vqf"] = None
+    return calls
