@@ -206,6 +206,7 @@ class Recording:
     trailing_bytes: int = 0  # bytes after the last complete chunk
     recovered_chunks: int = 0  # damaged RX chunks whose bytes were kept (frames checked by their CRCs)
     skipped_bytes: int = 0   # file bytes of damaged stretches that were skipped
+    header_damaged: bool = False  # its CRC failed but its JSON reads: used; counted in damaged_chunks
 
     @property
     def start_monotonic_ns(self) -> int:
@@ -222,6 +223,15 @@ class Recording:
         return {}
 
 
+class HeaderCrcError(KinefuseError):
+    """The header's CRC fails; ``header``: its JSON if that still reads (else None), ``start``:
+    the offset of the first chunk."""
+
+    def __init__(self, text: str, header: dict | None, start: int):
+        super().__init__(text)
+        self.header, self.start = header, start
+
+
 def read_header(f, path) -> tuple[dict, int]:
     head = f.read(FILE_HEAD.size)
     if len(head) < FILE_HEAD.size or head[:8] != MAGIC:
@@ -234,7 +244,12 @@ def read_header(f, path) -> tuple[dict, int]:
     if len(body) < n or len(crc) < 4:
         raise KinefuseError(f"{path}: recording header is truncated")
     if struct.unpack("<I", crc)[0] != _crc32(body):
-        raise KinefuseError(f"{path}: recording header is damaged (CRC mismatch)")
+        try:
+            header = json.loads(body)
+        except ValueError:
+            header = None
+        raise HeaderCrcError(f"{path}: recording header is damaged (CRC mismatch)",
+                             header if isinstance(header, dict) else None, FILE_HEAD.size + n + 4)
     try:
         header = json.loads(body)
     except ValueError:
@@ -418,7 +433,13 @@ def load(path, progress=None) -> Recording:
     except OSError as exc:
         raise KinefuseError(f"cannot read {path}: {exc.strerror or exc}") from None
     import io
-    header, start = read_header(io.BytesIO(raw), path)
+    header_damaged = False
+    try:
+        header, start = read_header(io.BytesIO(raw), path)
+    except HeaderCrcError as exc:   # a flipped bit in the header need not cost the recording
+        if exc.header is None:
+            raise
+        header, start, header_damaged = exc.header, exc.start, True
     streams: dict[int, dict] = {}
     stats: dict = {}
     n_chunks = 0
@@ -462,5 +483,6 @@ def load(path, progress=None) -> Recording:
             out[sid] = StreamData(sid)
     if progress is not None:
         progress(1.0)
-    return Recording(path, header, out, n_chunks, stats.get("damaged", 0), stats.get("truncated", False),
-                     stats.get("trailing", 0), stats.get("recovered", 0), stats.get("skipped_bytes", 0))
+    return Recording(path, header, out, n_chunks, stats.get("damaged", 0) + header_damaged,
+                     stats.get("truncated", False), stats.get("trailing", 0),
+                     stats.get("recovered", 0), stats.get("skipped_bytes", 0), header_damaged)

@@ -350,13 +350,19 @@ def compute(df: DecodedFile) -> dict:
 
 def damage_text(rec) -> str:
     """One line on the damaged chunks of a recording."""
-    skipped = rec.damaged_chunks - rec.recovered_chunks
+    header = bool(getattr(rec, "header_damaged", False))   # counted in damaged_chunks
+    chunks = rec.damaged_chunks - header
+    skipped = chunks - rec.recovered_chunks
     parts = []
     if rec.recovered_chunks:
         parts.append(f"{rec.recovered_chunks} recovered (their intact frames kept, checked by the MAVLink CRCs)")
     if skipped:
         parts.append(f"{skipped} skipped ({rec.skipped_bytes:,} bytes lost)")
-    return f"{rec.damaged_chunks} damaged chunk(s): " + ", ".join(parts)
+    text = f"{chunks} damaged chunk(s): " + ", ".join(parts) if chunks else ""
+    if header:
+        text = ("the file header is damaged (its CRC fails; its text still reads and is used: host times and "
+                "stream descriptions may be off)" + (f"; {text}" if text else ""))
+    return text
 
 
 KF_NAMES = ("KF_RAW_SAMPLE", "KF_ORIENTATION", "KF_JOINT_ANGLE", "KF_EFFORTS", "KF_UNIT_STATUS")

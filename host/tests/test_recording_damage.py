@@ -8,10 +8,12 @@ import io
 import json
 
 import numpy as np
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from kinefuse.host import cli
+from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link import recording, stats
 from kinefuse.host.link.batch import decode_all
 from kinefuse.host.link.codec import Encoder
@@ -227,3 +229,24 @@ def test_a_stale_burst_longer_than_the_live_part_is_found_and_the_reader_maps_it
     rec = read_recording(str(p), "kfr")
     t = np.asarray(rec.t)
     assert t[0] < -25.0 and np.allclose(np.diff(t[:6000]), 0.005, atol=1e-6)
+
+
+def test_a_flipped_bit_in_the_file_header_keeps_the_recording(tmp_path):
+    """One flipped bit in the header's JSON made the whole recording unreadable ('header is
+    damaged'); while the JSON still reads it is used, and every reader says so.  A header
+    whose JSON no longer reads is still a one-line error."""
+    p = _file(tmp_path / "h.kfr")
+    data = bytearray(p.read_bytes())
+    i = data.find(b'"connection": "test"') + len('"connection": "t')
+    data[i] ^= 0x01                                       # "test" -> "tdst"
+    p.write_bytes(bytes(data))
+    rec = load(p)
+    assert rec.header_damaged and rec.damaged_chunks == 1 and rec.recovered_chunks == 0
+    assert _counters(p).tolist() == list(range(1200))     # every frame
+    assert "file header is damaged" in stats.damage_text(rec)
+    r = stats.compute(decode_file(p))
+    assert any("file header is damaged" in w for w in r["warnings"])
+    data[recording.FILE_HEAD.size] ^= 0x20                # '{' -> '[': not JSON any more
+    p.write_bytes(bytes(data))
+    with pytest.raises(KinefuseError, match="header is damaged"):
+        load(p)
