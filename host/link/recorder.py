@@ -288,7 +288,10 @@ class Recorder:
                 self._look(st, final=True)
             except Exception:  # noqa: BLE001 - closing must go on
                 pass
-            self._flush_stream(st, force=True)
+            try:
+                self._flush_stream(st, force=True)
+            except KinefuseError:   # the disk is full...: writer.close() raises it once all is closed
+                pass
             st.session.close()
         self.writer.close()
 

@@ -105,6 +105,7 @@ class RecordingWriter:
         self._fsync_interval = fsync_interval
         self._last_sync = time.monotonic()
         self.bytes_written = 0
+        self.failed: KinefuseError | None = None   # the first write error (disk full...): raised again by close()
         body = json.dumps(header, sort_keys=True).encode()
         self._write(FILE_HEAD.pack(MAGIC, VERSION, len(body)) + body + struct.pack("<I", _crc32(body)))
         self.sync()
@@ -113,11 +114,22 @@ class RecordingWriter:
         self._f.write(b)
         self.bytes_written += len(b)
 
+    def _failed(self, exc: OSError) -> KinefuseError:
+        if self.failed is None:
+            self.failed = KinefuseError(f"cannot write {self.path}: {exc.strerror or exc} "
+                                        f"(the recording holds what was written before)")
+        return self.failed
+
     def chunk(self, ctype: int, stream: int, payload: bytes, t_ns: int | None = None) -> None:
         t = time.monotonic_ns() if t_ns is None else t_ns
         with self._lock:
-            self._write(CHUNK.pack(MARKER, ctype, stream, len(payload), t, _crc32(payload)) + payload)
-            self._f.flush()  # to the OS: survives a killed process
+            if self.failed is not None:
+                raise self.failed
+            try:
+                self._write(CHUNK.pack(MARKER, ctype, stream, len(payload), t, _crc32(payload)) + payload)
+                self._f.flush()  # to the OS: survives a killed process
+            except OSError as exc:
+                raise self._failed(exc) from None
             if time.monotonic() - self._last_sync >= self._fsync_interval:
                 self._sync_locked()
 
@@ -145,8 +157,11 @@ class RecordingWriter:
         self.chunk(META, stream, json.dumps(obj, sort_keys=True, default=str).encode(), t_ns)
 
     def _sync_locked(self) -> None:
-        self._f.flush()
-        os.fsync(self._f.fileno())
+        try:
+            self._f.flush()
+            os.fsync(self._f.fileno())
+        except OSError as exc:
+            raise self._failed(exc) from None
         self._last_sync = time.monotonic()
 
     def sync(self) -> None:
@@ -156,8 +171,16 @@ class RecordingWriter:
     def close(self) -> None:
         with self._lock:
             if not self._f.closed:
-                self._sync_locked()
-                self._f.close()
+                try:
+                    if self.failed is None:
+                        self._sync_locked()
+                finally:
+                    try:
+                        self._f.close()
+                    except OSError:   # its buffer could not be written: self.failed says so
+                        pass
+            if self.failed is not None:
+                raise self.failed
 
     def __enter__(self):
         return self

@@ -206,3 +206,42 @@ def test_export_into_a_folder_of_an_earlier_export_warns(run, tmp_path):
     (tmp_path / "junk.kfr").write_bytes(b"\x00garbage" * 100)
     code, stdout, err = run("export", tmp_path / "junk.kfr", "--out", tmp_path / "j")
     assert code == 2 and stdout == "", repr(stdout)
+
+
+class _FullAfter:
+    """A file that takes ``room`` bytes, then fails like a full disk (ENOSPC)."""
+
+    def __init__(self, f, room):
+        self._f, self.room = f, room
+
+    def write(self, b):
+        import errno
+        if len(b) > self.room:
+            self._f.write(b[:self.room])
+            self.room = 0
+            raise OSError(errno.ENOSPC, "No space left on device")
+        self.room -= len(b)
+        return self._f.write(b)
+
+    def __getattr__(self, name):
+        return getattr(self._f, name)
+
+
+def test_disk_full_while_recording_is_one_line_and_keeps_what_was_written(run, tmp_path):
+    """A full disk was an internal error (OSError) and left the sessions open."""
+    import os
+    from kinefuse.host.errors import KinefuseError
+    from kinefuse.host.link.recorder import Recorder
+    from kinefuse.host.link.recording import load
+    if os.path.exists("/dev/full"):
+        _one_line_error(*run("record", "--port", "fake:", "--out", "/dev/full", "--force", "--duration", "0.3"),
+                        "No space left on device")
+    out = tmp_path / "full.kfr"
+    rec = Recorder(out, ["fake:rate=500"])
+    head = rec.writer.bytes_written
+    rec.writer._f = _FullAfter(rec.writer._f, 20_000)
+    with pytest.raises(KinefuseError, match="cannot write .*No space left on device"):
+        rec.run(3.0)
+    assert out.stat().st_size == head + 20_000
+    r = load(out)                      # the part written before the disk filled up
+    assert len(r.streams[0].rx) > 10_000 and r.truncated
