@@ -212,19 +212,22 @@ def _write(path: Path, cols, rows: int, comments=(), block: int = 50_000) -> Non
         f = open(path, "w", newline="")
     except OSError as exc:
         raise KinefuseError(f"cannot write {path}: {exc.strerror or exc}") from None
-    with f:
-        for c in comments:
-            f.write("# " + c.replace("\n", " ") + "\n")
-        f.write(",".join(c[0] for c in cols) + "\n")
-        if any(c[2] == "%s" for c in cols):  # strings: csv module quotes what needs quoting
-            w = csv.writer(f, lineterminator="\n")
-            for r in range(rows):
-                w.writerow([c[1][r] if c[2] == "%s" else c[2] % c[1][r] for c in cols])
-            return
-        fmt = ",".join(c[2] for c in cols)
-        for a in range(0, rows, block):
-            b = min(rows, a + block)
-            table = np.empty((b - a, len(cols)), dtype=object)
-            for k, c in enumerate(cols):
-                table[:, k] = c[1][a:b].tolist()
-            f.write("\n".join(fmt % tuple(row) for row in table) + ("\n" if b > a else ""))
+    try:   # a full disk fails here, not at open
+        with f:
+            for c in comments:
+                f.write("# " + c.replace("\n", " ") + "\n")
+            f.write(",".join(c[0] for c in cols) + "\n")
+            if any(c[2] == "%s" for c in cols):  # strings: csv module quotes what needs quoting
+                w = csv.writer(f, lineterminator="\n")
+                for r in range(rows):
+                    w.writerow([c[1][r] if c[2] == "%s" else c[2] % c[1][r] for c in cols])
+                return
+            fmt = ",".join(c[2] for c in cols)
+            for a in range(0, rows, block):
+                b = min(rows, a + block)
+                table = np.empty((b - a, len(cols)), dtype=object)
+                for k, c in enumerate(cols):
+                    table[:, k] = c[1][a:b].tolist()
+                f.write("\n".join(fmt % tuple(row) for row in table) + ("\n" if b > a else ""))
+    except OSError as exc:
+        raise KinefuseError(f"cannot write {path}: {exc.strerror or exc}") from None

@@ -226,6 +226,12 @@ class _FullAfter:
     def __getattr__(self, name):
         return getattr(self._f, name)
 
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self._f.close()
+
 
 def test_disk_full_while_recording_is_one_line_and_keeps_what_was_written(run, tmp_path):
     """A full disk was an internal error (OSError) and left the sessions open."""
@@ -245,3 +251,14 @@ def test_disk_full_while_recording_is_one_line_and_keeps_what_was_written(run, t
     assert out.stat().st_size == head + 20_000
     r = load(out)                      # the part written before the disk filled up
     assert len(r.streams[0].rx) > 10_000 and r.truncated
+
+
+def test_disk_full_while_exporting_is_one_line(run, tmp_path, monkeypatch):
+    """It was an internal error (OSError from the CSV writes)."""
+    import builtins
+    from kinefuse.host.link import export
+    from kinefuse.host.link.recorder import Recorder
+    rec = tmp_path / "r.kfr"
+    Recorder(rec, ["fake:rate=200"]).run(0.4)
+    monkeypatch.setattr(export, "open", lambda *a, **k: _FullAfter(builtins.open(*a, **k), 300), raising=False)
+    _one_line_error(*run("export", rec, "--out", tmp_path / "csv"), "No space left on device")
