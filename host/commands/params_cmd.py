@@ -74,6 +74,8 @@ def run(args) -> int:
     from kinefuse.host.link.connection import open_connection, parse_baud
     from kinefuse.host.link.params import PERMISSION_DENIED, ParamClient, ParamError
     from kinefuse.host.link.session import Session
+    if not args.timeout > 0:   # NaN too: "parameter list incomplete: ? of None parameters missing"
+        raise KinefuseError("--timeout must be positive")
     sets = _parse_set(args.set)
     key = key_from_args(args)
     conn = open_connection(args.port, parse_baud(args.baud))

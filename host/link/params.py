@@ -45,7 +45,10 @@ def encode_value(value, ptype: int) -> float:
     """Value -> the float sent in param_value."""
     if ptype == REAL32:
         v = float(value)
-        return struct.unpack("<f", struct.pack("<f", v))[0]
+        try:
+            return struct.unpack("<f", struct.pack("<f", v))[0]
+        except OverflowError:   # beyond float32 (about 3.4e38)
+            raise ParamError(f"{value!r} is out of range for a REAL32 parameter") from None
     code = INT_CODES.get(ptype)
     if code is None:
         raise ParamError(f"parameter type {ptype} is not supported (8/16/32-bit integers, REAL32)")

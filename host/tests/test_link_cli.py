@@ -43,6 +43,8 @@ def _one_line_error(code, out, err, text):
     (["record", "--port", "fake:", "--out", "{tmp}/junk.kfr"], "exists"),
     (["params", "--port", "tcp:127.0.0.1:1"], "cannot connect"),
     (["params", "--port", "fake:", "--set", "KF_RATE_HZ"], "expected NAME=VALUE"),
+    (["params", "--port", "fake:", "--set", "KF_ACC_TAU_S=1e40"], "out of range for a REAL32"),  # OverflowError
+    (["params", "--port", "fake:", "--timeout", "nan"], "--timeout must be positive"),
     # KF_RATE_HZ <= 2000: DENIED for the value, not (only) for a missing signing key
     (["record", "--port", "fake:", "--out", "{tmp}/r.kfr", "--duration", "1", "--start", "--rate", "5000"],
      "a value out of range"),

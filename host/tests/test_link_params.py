@@ -96,6 +96,12 @@ def test_real32_round_trip(x):
     assert decode_value(encode_value(x, 9), 9) == x
 
 
+def test_real32_beyond_float32_is_a_param_error():
+    """`params --set KF_ACC_TAU_S=1e40` was an internal error (OverflowError from struct)."""
+    with pytest.raises(ParamError, match="out of range for a REAL32"):
+        encode_value(1e40, 9)
+
+
 def test_default_param_table_is_consistent():
     for name, (ptype, default, lo, hi) in DEFAULT_PARAMS.items():
         assert len(name) <= 16 and name.startswith("KF_")
