@@ -189,7 +189,7 @@ static inline kf_dyn kf_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, in
 static inline kf_dyn kf_dyn_scale(kf_dyn r, int32_t c, int32_t fc)
 {
     kf_dyn out;
-    uint64_t p, m;
+    uint64_t p, m, v;
     int32_t sh = 0;
     if ((c <= 0) || (r.m <= 0)) {
         out.m = 0;
@@ -197,9 +197,28 @@ static inline kf_dyn kf_dyn_scale(kf_dyn r, int32_t c, int32_t fc)
         return out;
     }
     p = (uint64_t)(uint32_t)r.m * (uint64_t)(uint32_t)c;     /* below 2^62 */
-    while ((p >> sh) >= ((uint64_t)1 << 31)) {
-        sh++;
+    v = p >> 31;          /* sh = its bit length, found in five steps (the M0 has no clz) */
+    if ((v >> 16) != 0u) {
+        v >>= 16;
+        sh += 16;
     }
+    if ((v >> 8) != 0u) {
+        v >>= 8;
+        sh += 8;
+    }
+    if ((v >> 4) != 0u) {
+        v >>= 4;
+        sh += 4;
+    }
+    if ((v >> 2) != 0u) {
+        v >>= 2;
+        sh += 2;
+    }
+    if ((v >> 1) != 0u) {
+        v >>= 1;
+        sh += 1;
+    }
+    sh += (int32_t)v;
     if (sh > 0) {
         m = (p + ((uint64_t)1 << (sh - 1))) >> sh;
         if (m >= ((uint64_t)1 << 31)) {    /* rounded up to 2^31 */

@@ -9,7 +9,7 @@
  * measurements, Joseph-form covariance update, covariance output.
  *
  * Outputs: q (sensor -> East-North-Up; heading from the magnetometer when mode = 1), bias
- * (rad/s), lin_acc (m/s^2, earth frame), cov_att (attitude error covariance in the earth
+ * (rad/s), lin_acc (m/s^2, sensor frame), cov_att (attitude error covariance in the earth
  * frame, rad^2: xx, xy, xz, yy, yz, zz), var_bias ((rad/s)^2, per axis), mag_disturbed,
  * rejected.
  */
