@@ -37,6 +37,7 @@ class Int:
 
 @dataclasses.dataclass(frozen=True)
 class Bin:
+    """Binary operation; Bin("*", Wide(a), b) of two int32 is rendered in C as kf_smull(a, b)."""
     op: str   # + - * / < <= == && ||
     a: "Expr"
     b: "Expr"
@@ -159,6 +160,8 @@ def render_c(e: Expr) -> str:
     if isinstance(e, Int):
         return c_int(e.value)
     if isinstance(e, Bin):
+        if e.op == "*" and isinstance(e.a, Wide):   # int32 x int32 -> int64 (kf_fixed.h)
+            return f"kf_smull({render_c(e.a.a)}, {render_c(e.b)})"
         return f"({render_c(e.a)} {e.op} {render_c(e.b)})"
     if isinstance(e, Un):
         return f"({e.op}{render_c(e.a)})"

@@ -27,6 +27,41 @@ typedef struct {
     int32_t e;
 } kf_dyn;
 
+/* 32 x 32 -> 64-bit products.  ARMv6-M / ARMv8-M Baseline (Cortex-M0/M0+/M23) have no long
+ * multiply and GCC calls the 64 x 64 __aeabi_lmul (about 45 instructions with the call); four
+ * 16 x 16 products and one 32-bit product give the same bits in about 20 (Hacker's Delight 8-2).
+ * KF_PORTABLE_LONG_MUL selects that path on any target (the host tests compare both). */
+#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_8M_BASE__) || defined(KF_PORTABLE_LONG_MUL)
+static inline uint64_t kf_umull(uint32_t a, uint32_t b)
+{
+    const uint32_t a0 = a & 0xFFFFu, a1 = a >> 16, b0 = b & 0xFFFFu, b1 = b >> 16;
+    const uint32_t t = a1 * b0 + ((a0 * b0) >> 16);    /* < 2^32 */
+    const uint32_t w = a0 * b1 + (t & 0xFFFFu);        /* < 2^32 */
+    const uint32_t hi = a1 * b1 + (t >> 16) + (w >> 16);
+    return ((uint64_t)hi << 32) | (uint64_t)(a * b);
+}
+
+static inline int64_t kf_smull(int32_t a, int32_t b)
+{
+    const uint32_t a0 = (uint32_t)a & 0xFFFFu, b0 = (uint32_t)b & 0xFFFFu;
+    const int32_t a1 = a >> 16, b1 = b >> 16;
+    const int32_t t = a1 * (int32_t)b0 + (int32_t)((a0 * b0) >> 16);   /* |t| < 2^31 */
+    const int32_t w = (int32_t)a0 * b1 + (t & 0xFFFF);                 /* |w| < 2^31 */
+    const int32_t hi = a1 * b1 + (t >> 16) + (w >> 16);
+    return (int64_t)(((uint64_t)(uint32_t)hi << 32) | (uint64_t)((uint32_t)a * (uint32_t)b));
+}
+#else
+static inline uint64_t kf_umull(uint32_t a, uint32_t b)
+{
+    return (uint64_t)a * b;
+}
+
+static inline int64_t kf_smull(int32_t a, int32_t b)
+{
+    return (int64_t)a * b;
+}
+#endif
+
 /* Clamp an int64 to [lo, hi]. */
 static inline int32_t kf_sat(int64_t v, int32_t lo, int32_t hi)
 {
@@ -67,24 +102,54 @@ static inline int32_t kf_div_rnd(int64_t n, int64_t d, int32_t lo, int32_t hi)
     return kf_sat(v, lo, hi);
 }
 
-/* floor(sqrt(n)) for 0 <= n < 2^63, and the remainder n - r^2 (bit-by-bit method). */
+/* `groups` digit-by-digit square-root steps, each taking the two top bits of *w into root *r and
+ * remainder *m (m <= 2r holds after each step).  32-bit while the root stays below 2^29, which
+ * keeps m * 4 + 3 below 2^32 (64-bit compares and subtractions cost 2-4 instructions each on a
+ * Cortex-M). */
+static inline void kf_isqrt_digits32(uint32_t *w, int32_t groups, uint32_t *r, uint32_t *m)
+{
+    uint32_t ww = *w, rr = *r, mm = *m;
+    for (; groups > 0; groups--) {
+        mm = (mm << 2) | (ww >> 30);
+        ww <<= 2;
+        rr <<= 1;
+        if (mm >= ((rr << 1) | 1u)) {
+            mm -= (rr << 1) | 1u;
+            rr |= 1u;
+        }
+    }
+    *w = ww;
+    *r = rr;
+    *m = mm;
+}
+
+/* floor(sqrt(n)) for any n < 2^64, and the remainder n - r^2 (digit by digit: 29 of the 32
+ * steps in 32-bit arithmetic, the last three in 64-bit). */
 static inline uint64_t kf_isqrt_floor(uint64_t n, uint64_t *rem)
 {
-    uint64_t r = 0, bit = (uint64_t)1 << 62;
-    while (bit > n) {
-        bit >>= 2;
+    uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n, r = 0, m = 0;
+    uint64_t r64, m64;
+    int32_t i;
+    if (hi == 0) {
+        kf_isqrt_digits32(&lo, 16, &r, &m);
+        *rem = m;
+        return r;
     }
-    while (bit != 0) {
-        if (n >= r + bit) {
-            n -= r + bit;
-            r = (r >> 1) + bit;
-        } else {
-            r >>= 1;
+    kf_isqrt_digits32(&hi, 16, &r, &m);     /* r < 2^16 */
+    kf_isqrt_digits32(&lo, 13, &r, &m);     /* r < 2^29; lo keeps its last 6 bits on top */
+    r64 = r;
+    m64 = m;
+    for (i = 0; i < 3; i++) {
+        m64 = (m64 << 2) | (lo >> 30);
+        lo <<= 2;
+        r64 <<= 1;
+        if (m64 >= ((r64 << 1) | 1u)) {
+            m64 -= (r64 << 1) | 1u;
+            r64 |= 1u;
         }
-        bit >>= 2;
     }
-    *rem = n;
-    return r;
+    *rem = m64;
+    return r64;
 }
 
 /* sqrt(n) rounded to nearest; 0 for n <= 0. */
@@ -176,7 +241,10 @@ static inline kf_dyn kf_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, in
         x2 <<= s;
         x3 <<= s;
     }
-    r = kf_rsqrt_dyn64(x0 * x0 + x1 * x1 + x2 * x2 + x3 * x3, 2 * (f + s));
+    /* each |x| <= 2^30 here */
+    r = kf_rsqrt_dyn64(kf_smull((int32_t)x0, (int32_t)x0) + kf_smull((int32_t)x1, (int32_t)x1)
+                       + kf_smull((int32_t)x2, (int32_t)x2) + kf_smull((int32_t)x3, (int32_t)x3),
+                       2 * (f + s));
     /* max(n2, eps) in the denominator is min(r, 1/sqrt(eps)): compare m * 2^-e values */
     if ((r.e < eps.e) || ((r.e == eps.e) && (r.m > eps.m))) {
         return eps;
@@ -196,7 +264,7 @@ static inline kf_dyn kf_dyn_scale(kf_dyn r, int32_t c, int32_t fc)
         out.e = 0;
         return out;
     }
-    p = (uint64_t)(uint32_t)r.m * (uint64_t)(uint32_t)c;     /* below 2^62 */
+    p = kf_umull((uint32_t)r.m, (uint32_t)c);     /* below 2^62 */
     v = p >> 31;          /* sh = its bit length, found in five steps (the M0 has no clz) */
     if ((v >> 16) != 0u) {
         v >>= 16;
@@ -240,7 +308,7 @@ static inline kf_dyn kf_dyn_scale(kf_dyn r, int32_t c, int32_t fc)
 /* a * r rescaled: raw result = a * r.m * 2^-(kbase + r.e), rounded, clamped to [lo, hi]. */
 static inline int32_t kf_mul_dyn(int32_t a, kf_dyn r, int32_t kbase, int32_t lo, int32_t hi)
 {
-    int64_t p = (int64_t)a * r.m;
+    int64_t p = kf_smull(a, r.m);
     int32_t k = kbase + r.e;
     if (k >= 63) {
         return kf_sat(0, lo, hi);     /* |p| < 2^62: the exact result rounds to 0 */

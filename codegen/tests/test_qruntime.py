@@ -28,6 +28,9 @@ void w_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, int32_t f, int32_t 
 int32_t w_q_from_f32(float x, int32_t f, int32_t lo, int32_t hi) { return kf_q_from_f32(x, f, lo, hi); }
 void w_dyn_scale(int32_t m, int32_t e, int32_t cc, int32_t fc, int32_t *om, int32_t *oe)
 { kf_dyn r; r.m = m; r.e = e; r = kf_dyn_scale(r, cc, fc); *om = r.m; *oe = r.e; }
+int64_t w_smull(int32_t a, int32_t b) { return kf_smull(a, b); }
+uint64_t w_umull(uint32_t a, uint32_t b) { return kf_umull(a, b); }
+uint64_t w_isqrt_floor(uint64_t n, uint64_t *rem) { return kf_isqrt_floor(n, rem); }
 """
 CDEF = """
 int32_t w_sat(int64_t v, int32_t lo, int32_t hi);
@@ -40,14 +43,42 @@ void w_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, int32_t f, int32_t 
                  int32_t *m, int32_t *e);
 int32_t w_q_from_f32(float x, int32_t f, int32_t lo, int32_t hi);
 void w_dyn_scale(int32_t m, int32_t e, int32_t cc, int32_t fc, int32_t *om, int32_t *oe);
+int64_t w_smull(int32_t a, int32_t b);
+uint64_t w_umull(uint32_t a, uint32_t b);
+uint64_t w_isqrt_floor(uint64_t n, uint64_t *rem);
 """
 
 
-@pytest.fixture(scope="module")
-def c():
-    ffi, lib = build("qruntime_test", [], [], extra_cdef=CDEF,
-                     extra_source='#include "kf_fixed.h"\n' + WRAP, include_dirs=[RUNTIME_DIR])
+# "native": the host's own 64-bit products; "portable": the 16 x 16 long multiplication the
+# Cortex-M0 build uses (it has no long multiply), so every helper is checked on both paths
+@pytest.fixture(scope="module", params=["native", "portable"])
+def c(request):
+    define = "#define KF_PORTABLE_LONG_MUL\n" if request.param == "portable" else ""
+    ffi, lib = build(f"qruntime_test_{request.param}", [], [], extra_cdef=CDEF,
+                     extra_source=define + '#include "kf_fixed.h"\n' + WRAP,
+                     include_dirs=[RUNTIME_DIR])
     return ffi, lib
+
+
+EDGES32 = [-(2 ** 31), -(2 ** 31) + 1, -65537, -65536, -65535, -32769, -32768, -1, 0, 1, 32767,
+           32768, 65535, 65536, 2 ** 31 - 1]
+
+
+@settings(max_examples=300, deadline=None)
+@given(a=st.one_of(st.integers(-(2 ** 31), 2 ** 31 - 1), st.sampled_from(EDGES32)),
+       b=st.one_of(st.integers(-(2 ** 31), 2 ** 31 - 1), st.sampled_from(EDGES32)))
+def test_long_products_are_exact(c, a, b):
+    assert c[1].w_smull(a, b) == a * b
+    ua, ub = a & 0xFFFFFFFF, b & 0xFFFFFFFF
+    assert c[1].w_umull(ua, ub) == ua * ub
+
+
+def test_long_products_at_every_edge_pair(c):
+    for a in EDGES32:
+        for b in EDGES32:
+            assert c[1].w_smull(a, b) == a * b, (a, b)
+            ua, ub = a & 0xFFFFFFFF, b & 0xFFFFFFFF
+            assert c[1].w_umull(ua, ub) == ua * ub, (a, b)
 
 
 def _bounds(a, b):
@@ -186,3 +217,29 @@ def test_a_changed_included_header_rebuilds(tmp_path, monkeypatch):
                        include_dirs=[inc])
         answers.append(lib.w())
     assert answers == [1, 2]
+
+
+def _squares_and_neighbours():
+    out = [0, 1, 2, 3, 2 ** 32 - 1, 2 ** 32, 2 ** 60, 2 ** 62 - 1, 2 ** 63 - 1, 2 ** 64 - 1]
+    for r in (1, 2, 65535, 65536, 2 ** 28 - 1, 2 ** 28, 2 ** 29 - 1, 2 ** 29, 2 ** 30, 2 ** 31 - 1,
+              2 ** 31, 2 ** 32 - 1):
+        out += [r * r - 1, r * r, r * r + 1, r * r + 2 * r, (r + 1) ** 2 - 1]
+    return [v for v in out if 0 <= v < 2 ** 64]
+
+
+@settings(max_examples=300, deadline=None)
+@given(n=st.one_of(st.integers(0, 2 ** 64 - 1), st.integers(0, 2 ** 32),
+                   st.integers(2 ** 60, 2 ** 62 - 1), st.sampled_from(_squares_and_neighbours())))
+def test_isqrt_floor_is_exact(c, n):
+    ffi, lib = c
+    rem = ffi.new("uint64_t *")
+    r = lib.w_isqrt_floor(n, rem)
+    assert r == math.isqrt(n) and rem[0] == n - r * r
+
+
+def test_isqrt_floor_at_squares_and_neighbours(c):
+    ffi, lib = c
+    rem = ffi.new("uint64_t *")
+    for n in _squares_and_neighbours():
+        r = lib.w_isqrt_floor(n, rem)
+        assert (r, rem[0]) == (math.isqrt(n), n - math.isqrt(n) ** 2), n

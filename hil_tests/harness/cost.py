@@ -218,16 +218,23 @@ def classify(mnemonic: str, taken: float) -> float:
     return 1.0
 
 
-def cycle_estimate(build, target: str, k: int = K_MIX) -> dict:
-    """Estimated cycles per update from a single-step trace of K and 0 calls."""
-    addrs, mnems, index = _disassembly(build.elf)
-    with_k = _trace_pcs(build.elf, target, k)
-    without = _trace_pcs(build.elf, target, 0)
+def _per_update_trace(elf: Path, target: str, k: int) -> Counter:
+    """Executed count of every instruction address over k updates (trace of k minus trace of 0)."""
+    with_k = _trace_pcs(elf, target, k)
+    without = _trace_pcs(elf, target, 0)
     per = Counter()
     for pc, c in with_k.items():
         d = c - without.get(pc, 0)
         if d:
             per[pc] = d
+    return per
+
+
+def cycle_estimate(build, target: str, k: int = K_MIX, per: Counter | None = None) -> dict:
+    """Estimated cycles per update from a single-step trace of K and 0 calls."""
+    addrs, mnems, index = _disassembly(build.elf)
+    if per is None:
+        per = _per_update_trace(build.elf, target, k)
     cycles = 0.0
     classes = Counter()
     unknown = 0
@@ -254,6 +261,104 @@ def cycle_estimate(build, target: str, k: int = K_MIX) -> dict:
             "est_us_at_64mhz": cpu / CLOCK_HZ * 1e6,
             "mix_per_update": {c: v / k for c, v in sorted(classes.items())},
             "cycle_model": "Cortex-M4 table estimate (not measured)"}
+
+
+# ---- profile: where the instructions of one update go ------------------------------------------
+
+_REF_COMMENT = re.compile(r"/\* ([\w.-]+\.py:\d+)")
+
+
+def _function_symbols(elf: Path) -> list[tuple[int, str]]:
+    from kinefuse.firmware.targets import tool
+    out = subprocess.run([tool("nm"), "-n", str(elf)], capture_output=True, text=True,
+                         check=True).stdout
+    syms = []
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) == 3 and parts[1] in "tTwW":
+            syms.append((int(parts[0], 16) & ~1, parts[2].split(".")[0]))   # foo.constprop.0 -> foo
+    return syms
+
+
+def _outer_lines(elf: Path, pcs: list[int]) -> list[tuple[str, int] | None]:
+    """(file, line) of the outermost caller of each address (through inlining), None if unknown."""
+    from kinefuse.firmware.targets import tool
+    out = subprocess.run([tool("addr2line"), "-i", "-a", "-e", str(elf)] + [hex(p) for p in pcs],
+                         capture_output=True, text=True, check=True).stdout.splitlines()
+    res: dict[int, tuple[str, int] | None] = {}
+    cur = None
+    for line in out:
+        if line.startswith("0x"):
+            cur = int(line, 16)
+            res[cur] = None
+            continue
+        path, _, num = line.rpartition(":")
+        num = num.split()[0] if num else ""
+        if cur is not None and path != "??" and num.isdigit():
+            res[cur] = (path, int(num))          # later lines are outer callers
+    return [res.get(p) for p in pcs]
+
+
+def profile(elf: Path, per: Counter, k: int, top: int = 12) -> dict:
+    """Instructions per update by function (after inlining: libgcc, libm and the runtime helpers
+    GCC kept out of line) and by reference-source line (the ``/* file.py:N */`` comment of the
+    generated C statement the instruction belongs to, through inlining)."""
+    syms = _function_symbols(elf)
+    starts = [a for a, _ in syms]
+    by_fn: Counter = Counter()
+    calls: Counter = Counter()
+    entry = {a: n for a, n in syms}
+    for pc, c in per.items():
+        j = bisect.bisect_right(starts, pc) - 1
+        name = syms[j][1] if j >= 0 else "?"
+        by_fn[name] += c
+        if pc in entry:
+            calls[entry[pc]] += c
+    pcs = sorted(per)
+    lines = _outer_lines(elf, pcs)
+    texts: dict[str, list[str]] = {}
+    by_ref: Counter = Counter()
+    for pc, loc in zip(pcs, lines):
+        j = bisect.bisect_right(starts, pc) - 1
+        key = f"in {syms[j][1] if j >= 0 else '?'} (out of line)"
+        if loc is not None and Path(loc[0]).parent.resolve() == GENERATED_DIR.resolve() \
+                and loc[0].endswith(".c"):
+            path, num = loc
+            if path not in texts:
+                try:
+                    texts[path] = Path(path).read_text().splitlines()
+                except OSError:
+                    texts[path] = []
+            src = texts[path]
+            m = _REF_COMMENT.search(src[num - 1]) if 0 < num <= len(src) else None
+            key = m.group(1) if m else f"{Path(path).name}: generated glue (no reference line)"
+        by_ref[key] += per[pc]
+    total = sum(per.values())
+    return {"functions": [{"name": n, "instructions_per_update": c / k,
+                           "calls_per_update": calls.get(n, 0) / k}
+                          for n, c in by_fn.most_common(top)],
+            "reference_lines": [{"where": w, "instructions_per_update": c / k}
+                                for w, c in by_ref.most_common(top)],
+            "traced_instructions_per_update": total / k, "traced_updates": k}
+
+
+def profile_filter(name: str, system: str, target: str, k: int = K_MIX, top: int = 12,
+                   mix: bool = True) -> dict:
+    """Build the -O2 cost program with line information (-g: the code is the same) and profile
+    k updates; with ``mix`` the cycle estimate comes from the same trace."""
+    from kinefuse.hil_tests.qemu.cost import cost_program
+
+    src = GENERATED_DIR / f"{name.replace('-', '_')}_{system}.c"
+    table_c, table_dir, _ctype, _n = _table_sources(name, system)
+    prelude, setup, call, finish, baseline = _snippets(name, system)
+    prog = cost_program([src, table_c], setup, call, target, prelude=prelude, finish=finish,
+                        baseline_code=baseline, include_dirs=[GENERATED_DIR, table_dir],
+                        extra_cflags=["-g"])
+    per = _per_update_trace(prog.elf, target, k)
+    out = {"profile": profile(prog.elf, per, k, top)}
+    if mix:
+        out.update(cycle_estimate(prog, target, k, per=per))
+    return out
 
 
 def _class(mn: str) -> str:

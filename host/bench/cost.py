@@ -13,6 +13,11 @@ of that which is the filter's own object file is given separately from newlib/li
 ``--json``: exactly one JSON object ``{"rows": [...], ...}``; each row has ``impl``
 (kinefuse|fusion|vqf), ``filter``, ``format`` (f32|q), ``target`` (m4f|m0),
 ``instructions_per_update``, ``flash_bytes``, ``ram_bytes`` and more.
+
+``--profile``: for our rows, the same single-step trace also attributes the instructions of an
+update to functions (what GCC kept out of line: libgcc's soft-float and 64-bit routines, libm,
+runtime helpers; with their calls per update) and to lines of the Python reference (each
+generated statement carries its ``file.py:N`` comment; inlined helpers count at their caller).
 """
 from __future__ import annotations
 
@@ -39,6 +44,10 @@ def register_bench(bench_subparsers) -> None:
     p.add_argument("--k", type=int, default=1000, help="counted updates (default 1000, at most 1000)")
     p.add_argument("--no-competitors", action="store_true", help="skip Fusion and VQF")
     p.add_argument("--no-mix", action="store_true", help="skip the instruction-mix cycle estimate")
+    p.add_argument("--profile", action="store_true",
+                   help="also show where each of our updates spends its instructions: by function "
+                        "(libgcc, libm, runtime helpers) and by line of the Python reference")
+    p.add_argument("--top", type=int, default=12, help="profile entries shown (default 12)")
     p.add_argument("--jobs", type=int, default=2, help="parallel measurements (default 2)")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
     p.set_defaults(func=run)
@@ -52,7 +61,8 @@ def _own_split(cost, stems: set[str]) -> dict:
             "size_by_origin": {k: v.as_dict() for k, v in origin.items()}}
 
 
-def measure_ours(name: str, system: str, target: str, k: int, mix: bool) -> dict:
+def measure_ours(name: str, system: str, target: str, k: int, mix: bool,
+                 profile: bool = False, top: int = 12) -> dict:
     from kinefuse.hil_tests.harness import cost as hc
     from kinefuse.hil_tests.qemu import cost as qc
 
@@ -69,7 +79,9 @@ def measure_ours(name: str, system: str, target: str, k: int, mix: bool) -> dict
     row["own_flash_bytes"] = sum(v.flash for kk, v in origin.items() if kk == stem)
     row["own_ram_bytes"] = sum(v.ram for kk, v in origin.items() if kk in (stem, "kf_cost_driver"))
     row["size_by_origin"] = {kk: v.as_dict() for kk, v in origin.items()}
-    if mix:
+    if profile:
+        row.update(hc.profile_filter(name, system, target, top=top, mix=mix))
+    elif mix:
         prog = qc.cost_program([GENERATED_DIR / f"{stem}.c", table_c], setup, call, target,
                                prelude=prelude, finish=finish, baseline_code=baseline,
                                include_dirs=[GENERATED_DIR, table_dir])
@@ -103,10 +115,11 @@ def measure_competitor(case: str, target: str, mix: bool) -> dict:
     return row
 
 
-def _job(kind: str, a: str, b: str, c: str, k: int, mix: bool) -> dict:
+def _job(kind: str, a: str, b: str, c: str, k: int, mix: bool, profile: bool = False,
+         top: int = 12) -> dict:
     try:
         if kind == "ours":
-            return measure_ours(a, b, c, k, mix)
+            return measure_ours(a, b, c, k, mix, profile, top)
         return measure_competitor(a, c, mix)
     except KinefuseError as exc:
         return {"impl": "kinefuse" if kind == "ours" else kind, "filter": a, "format": b, "target": c,
@@ -136,6 +149,8 @@ def run(args: argparse.Namespace) -> int:
         raise KinefuseError("--formats takes f32,q and --targets m4f,m0")
     if not 1 <= args.k <= 1000:
         raise KinefuseError("--k must be between 1 and 1000")
+    if args.top < 1:
+        raise KinefuseError("--top must be at least 1")
     jobs = [("ours", f, s, t) for f in filters for s in formats if s in loops.systems(f)
             for t in targets if t in TARGETS[s]]
     if not args.no_competitors and "f32" in formats:
@@ -145,7 +160,8 @@ def run(args: argparse.Namespace) -> int:
     rows = []
     with progress(not args.json) as bar, ProcessPoolExecutor(max(1, args.jobs)) as pool:
         task = bar.add_task("cost on M4F/M0", total=len(jobs))
-        futs = [pool.submit(_job, kind, a, b, c, args.k, not args.no_mix) for kind, a, b, c in jobs]
+        futs = [pool.submit(_job, kind, a, b, c, args.k, not args.no_mix, args.profile, args.top)
+                for kind, a, b, c in jobs]
         for fut in futs:
             rows.append(fut.result())
             bar.advance(task)
@@ -158,6 +174,8 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps(result))
     else:
         print_table(rows)
+        if args.profile:
+            print_profiles(rows)
     return 0 if all(not r.get("error") for r in rows) else 1
 
 
@@ -186,3 +204,28 @@ def print_table(rows: list[dict]) -> None:
                   str(r["flash_bytes"]), str(r.get("own_flash_bytes", "")), str(r["ram_bytes"]),
                   str(r.get("own_ram_bytes", "")), goal)
     Console().print(t)
+
+
+def print_profiles(rows: list[dict]) -> None:
+    from rich.console import Console
+    from rich.table import Table
+
+    con = Console()
+    for r in rows:
+        prof = r.get("profile")
+        if not prof:
+            continue
+        head = (f"{r['filter']} {r['format']} {r['target']}: {prof['traced_instructions_per_update']:,.0f} "
+                f"instructions per update ({prof['traced_updates']} updates traced)")
+        t = Table(title=head + ", by function")
+        for col in ("function", "instr/update", "calls/update"):
+            t.add_column(col, justify="left" if col == "function" else "right")
+        for f in prof["functions"]:
+            t.add_row(f["name"], f"{f['instructions_per_update']:,.1f}", f"{f['calls_per_update']:g}")
+        con.print(t)
+        t = Table(title=head + ", by line of the reference (inlined code counts at its caller)")
+        for col in ("reference line", "instr/update"):
+            t.add_column(col, justify="left" if col == "reference line" else "right")
+        for g in prof["reference_lines"]:
+            t.add_row(g["where"], f"{g['instructions_per_update']:,.1f}")
+        con.print(t)
