@@ -30,8 +30,13 @@ typedef struct {
 /* 32 x 32 -> 64-bit products.  ARMv6-M / ARMv8-M Baseline (Cortex-M0/M0+/M23) have no long
  * multiply and GCC calls the 64 x 64 __aeabi_lmul (about 45 instructions with the call); four
  * 16 x 16 products and one 32-bit product give the same bits in about 20 (Hacker's Delight 8-2).
- * KF_PORTABLE_LONG_MUL selects that path on any target (the host tests compare both). */
+ * KF_PORTABLE_LONG_MUL selects that path, and kf_rsqrt_dyn64's 32-bit division loop, on any
+ * target (the host tests compare both paths). */
 #if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_8M_BASE__) || defined(KF_PORTABLE_LONG_MUL)
+#define KF_NO_LONG_MUL 1   /* these cores have no CLZ and (v6-M) no divider either */
+#endif
+
+#ifdef KF_NO_LONG_MUL
 static inline uint64_t kf_umull(uint32_t a, uint32_t b)
 {
     const uint32_t a0 = a & 0xFFFFu, a1 = a >> 16, b0 = b & 0xFFFFu, b1 = b >> 16;
@@ -61,6 +66,43 @@ static inline int64_t kf_smull(int32_t a, int32_t b)
     return (int64_t)a * b;
 }
 #endif
+
+/* Number of significant bits of v (0 for 0): CLZ where the core has it, else five steps (the
+ * M0 has no CLZ; GCC's __clzsi2 call costs more). */
+static inline int32_t kf_bitlen32(uint32_t v)
+{
+#if defined(__GNUC__) && !defined(KF_NO_LONG_MUL)
+    return (v == 0u) ? 0 : 32 - __builtin_clz(v);
+#else
+    int32_t n = 0;
+    if ((v >> 16) != 0u) {
+        v >>= 16;
+        n += 16;
+    }
+    if ((v >> 8) != 0u) {
+        v >>= 8;
+        n += 8;
+    }
+    if ((v >> 4) != 0u) {
+        v >>= 4;
+        n += 4;
+    }
+    if ((v >> 2) != 0u) {
+        v >>= 2;
+        n += 2;
+    }
+    if ((v >> 1) != 0u) {
+        v >>= 1;
+        n += 1;
+    }
+    return n + (int32_t)v;
+#endif
+}
+
+static inline int32_t kf_bitlen64(uint64_t v)
+{
+    return ((v >> 32) != 0u) ? 32 + kf_bitlen32((uint32_t)(v >> 32)) : kf_bitlen32((uint32_t)v);
+}
 
 /* Clamp an int64 to [lo, hi]. */
 static inline int32_t kf_sat(int64_t v, int32_t lo, int32_t hi)
@@ -182,12 +224,32 @@ static inline kf_dyn kf_rsqrt_dyn64(int64_t y, int32_t fy)
             s = 1;
         }
     }
-    while (n < ((uint64_t)1 << 60)) {   /* normalise n to [2^60, 2^62) */
-        n <<= 2;
-        s += 2;
+    if (n < ((uint64_t)1 << 60)) {      /* normalise n to [2^60, 2^62) by an even shift */
+        const int32_t k = (62 - kf_bitlen64(n)) & ~1;
+        n <<= k;
+        s += k;
     }
     r = kf_isqrt_floor(n, &rem);        /* r in [2^30, 2^31) */
+#ifdef KF_NO_LONG_MUL
+    {   /* 2^61 / r rounded: (2^61 + r/2) / r by 32 restoring steps in 32 bits (r < 2^31, and
+         * the partial remainder starts at 2^29 < r), far cheaper than libgcc's 64-bit division */
+        uint32_t part = (uint32_t)1 << 29, low = (uint32_t)(r >> 1), quo = 0;
+        const uint32_t d = (uint32_t)r;
+        int32_t i;
+        for (i = 0; i < 32; i++) {
+            part = (part << 1) | (low >> 31);
+            low <<= 1;
+            quo <<= 1;
+            if (part >= d) {
+                part -= d;
+                quo |= 1u;
+            }
+        }
+        m = quo;
+    }
+#else
     m = (((uint64_t)1 << 61) + (r >> 1)) / r;   /* 2^61 / r rounded, in (2^30, 2^31] */
+#endif
     out.e = 61 - (fy + s) / 2;
     if (m >= ((uint64_t)1 << 31)) {
         m >>= 1;
@@ -211,40 +273,37 @@ static inline kf_dyn kf_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, in
                                   int32_t eps_m, int32_t eps_e)
 {
     kf_dyn r, eps;
-    int64_t x0 = a, x1 = b, x2 = c, x3 = d, big;
+    /* |raw| <= 2^31 - 1: magnitudes fit uint32 (values as the int64 form computed them) */
+    uint32_t x0 = (a < 0) ? 0u - (uint32_t)a : (uint32_t)a;
+    uint32_t x1 = (b < 0) ? 0u - (uint32_t)b : (uint32_t)b;
+    uint32_t x2 = (c < 0) ? 0u - (uint32_t)c : (uint32_t)c;
+    uint32_t x3 = (d < 0) ? 0u - (uint32_t)d : (uint32_t)d;
+    uint32_t big;
     int32_t s = 0;
     eps.m = eps_m;
     eps.e = eps_e;
-    x0 = (x0 < 0) ? -x0 : x0;
-    x1 = (x1 < 0) ? -x1 : x1;
-    x2 = (x2 < 0) ? -x2 : x2;
-    x3 = (x3 < 0) ? -x3 : x3;
     big = (x0 > x1) ? x0 : x1;
     big = (big > x2) ? big : x2;
     big = (big > x3) ? big : x3;
-    if (big == 0) {
+    if (big == 0u) {
         return eps;
     }
-    if (big >= ((int64_t)1 << 30)) {   /* halve (rounded) so four squares fit below 2^62 */
-        x0 = (x0 + 1) >> 1;
-        x1 = (x1 + 1) >> 1;
-        x2 = (x2 + 1) >> 1;
-        x3 = (x3 + 1) >> 1;
+    if (big >= ((uint32_t)1 << 30)) {   /* halve (rounded) so four squares fit below 2^62 */
+        x0 = (x0 + 1u) >> 1;
+        x1 = (x1 + 1u) >> 1;
+        x2 = (x2 + 1u) >> 1;
+        x3 = (x3 + 1u) >> 1;
         s = -1;
-    } else {
-        while (big < ((int64_t)1 << 29)) {
-            big <<= 1;
-            s += 1;
-        }
+    } else {                           /* shift so the largest is in [2^29, 2^30) */
+        s = 30 - kf_bitlen32(big);
         x0 <<= s;
         x1 <<= s;
         x2 <<= s;
         x3 <<= s;
     }
-    /* each |x| <= 2^30 here */
-    r = kf_rsqrt_dyn64(kf_smull((int32_t)x0, (int32_t)x0) + kf_smull((int32_t)x1, (int32_t)x1)
-                       + kf_smull((int32_t)x2, (int32_t)x2) + kf_smull((int32_t)x3, (int32_t)x3),
-                       2 * (f + s));
+    /* each x <= 2^30 here */
+    r = kf_rsqrt_dyn64((int64_t)(kf_umull(x0, x0) + kf_umull(x1, x1) + kf_umull(x2, x2)
+                                 + kf_umull(x3, x3)), 2 * (f + s));
     /* max(n2, eps) in the denominator is min(r, 1/sqrt(eps)): compare m * 2^-e values */
     if ((r.e < eps.e) || ((r.e == eps.e) && (r.m > eps.m))) {
         return eps;
@@ -257,36 +316,15 @@ static inline kf_dyn kf_rnorm_dyn(int32_t a, int32_t b, int32_t c, int32_t d, in
 static inline kf_dyn kf_dyn_scale(kf_dyn r, int32_t c, int32_t fc)
 {
     kf_dyn out;
-    uint64_t p, m, v;
-    int32_t sh = 0;
+    uint64_t p, m;
+    int32_t sh;
     if ((c <= 0) || (r.m <= 0)) {
         out.m = 0;
         out.e = 0;
         return out;
     }
     p = kf_umull((uint32_t)r.m, (uint32_t)c);     /* below 2^62 */
-    v = p >> 31;          /* sh = its bit length, found in five steps (the M0 has no clz) */
-    if ((v >> 16) != 0u) {
-        v >>= 16;
-        sh += 16;
-    }
-    if ((v >> 8) != 0u) {
-        v >>= 8;
-        sh += 8;
-    }
-    if ((v >> 4) != 0u) {
-        v >>= 4;
-        sh += 4;
-    }
-    if ((v >> 2) != 0u) {
-        v >>= 2;
-        sh += 2;
-    }
-    if ((v >> 1) != 0u) {
-        v >>= 1;
-        sh += 1;
-    }
-    sh += (int32_t)v;
+    sh = kf_bitlen32((uint32_t)(p >> 31));   /* p >> 31 < 2^31 */
     if (sh > 0) {
         m = (p + ((uint64_t)1 << (sh - 1))) >> sh;
         if (m >= ((uint64_t)1 << 31)) {    /* rounded up to 2^31 */

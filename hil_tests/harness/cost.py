@@ -112,10 +112,13 @@ def _table_sources(name: str, system: str) -> tuple[Path, Path, str, int]:
 def _snippets(name: str, system: str):
     P = f"{name.replace('-', '_')}_{system}"
     tag, arr = _table_names(name, system)
+    # RAM counted: the state (which keeps its own copy of the parameters) and the output; the
+    # parameters handed to init are a local, as x-io Fusion's settings are in its measurement
     prelude = (f'#include "{P}.h"\n#include "{tag}.h"\n'
-               f"static {P}_state kf_st;\nstatic {P}_params kf_p;\nstatic {P}_output kf_out;\n"
+               f"static {P}_state kf_st;\nstatic {P}_output kf_out;\n"
                "static volatile uintptr_t kf_keep_sink;\n")
-    setup = (f"{P}_default_params(&kf_p);\nif ({P}_init(&kf_st, &kf_p) != 0) {{ return 5; }}\n"
+    setup = (f"{P}_params kf_p;\n{P}_default_params(&kf_p);\n"
+             f"if ({P}_init(&kf_st, &kf_p) != 0) {{ return 5; }}\n"
              f"for (uint32_t w = 0u; w < KF_WARMUP; ++w) {{ {P}_update(&kf_st, &{arr}[w], &kf_out); }}")
     call = f"{P}_update(&kf_st, &{arr}[KF_WARMUP + kf_i], &kf_out);"
     finish = "kf_keep_sink = (uintptr_t)&kf_out;"
@@ -334,11 +337,17 @@ def profile(elf: Path, per: Counter, k: int, top: int = 12) -> dict:
             key = m.group(1) if m else f"{Path(path).name}: generated glue (no reference line)"
         by_ref[key] += per[pc]
     total = sum(per.values())
-    return {"functions": [{"name": n, "instructions_per_update": c / k,
-                           "calls_per_update": calls.get(n, 0) / k}
-                          for n, c in by_fn.most_common(top)],
-            "reference_lines": [{"where": w, "instructions_per_update": c / k}
-                                for w, c in by_ref.most_common(top)],
+    fns = [{"name": n, "instructions_per_update": c / k, "calls_per_update": calls.get(n, 0) / k}
+           for n, c in by_fn.most_common(top)]
+    if len(by_fn) > top:   # the rest in one entry, so every list adds up to the total
+        rest = sum(c for _, c in by_fn.most_common()[top:])
+        fns.append({"name": f"({len(by_fn) - top} other functions)",
+                    "instructions_per_update": rest / k, "calls_per_update": None})
+    refs = [{"where": w, "instructions_per_update": c / k} for w, c in by_ref.most_common(top)]
+    if len(by_ref) > top:
+        rest = sum(c for _, c in by_ref.most_common()[top:])
+        refs.append({"where": f"({len(by_ref) - top} other lines)", "instructions_per_update": rest / k})
+    return {"functions": fns, "reference_lines": refs,
             "traced_instructions_per_update": total / k, "traced_updates": k}
 
 

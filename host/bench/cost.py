@@ -221,7 +221,9 @@ def print_profiles(rows: list[dict]) -> None:
         for col in ("function", "instr/update", "calls/update"):
             t.add_column(col, justify="left" if col == "function" else "right")
         for f in prof["functions"]:
-            t.add_row(f["name"], f"{f['instructions_per_update']:,.1f}", f"{f['calls_per_update']:g}")
+            calls = f["calls_per_update"]
+            t.add_row(f["name"], f"{f['instructions_per_update']:,.1f}",
+                      "" if calls is None else f"{calls:g}")
         con.print(t)
         t = Table(title=head + ", by line of the reference (inlined code counts at its caller)")
         for col in ("reference line", "instr/update"):

@@ -33,8 +33,21 @@ def register(sub):
     p.set_defaults(func=run)
 
 
+def _refuse_overwriting_the_input(args) -> None:
+    from pathlib import Path
+    inp, out = Path(args.input), Path(args.out)
+    try:
+        same = out.exists() and inp.exists() and out.samefile(inp)
+    except OSError:
+        same = False
+    if same or (not out.exists() and out.resolve() == inp.resolve()):
+        raise KinefuseError(f"--out {args.out} is the input recording; give another file name "
+                            f"(the recording would be overwritten by the estimates)")
+
+
 def run(args) -> int:
     from kinefuse.host.broad import load_trial
+    _refuse_overwriting_the_input(args)
     name = args.filter or runner.default_filter()
     if name not in runner.filter_names():
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")

@@ -133,6 +133,20 @@ def test_missing_angle_predicts_and_bad_samples_are_rejected(run, tmp_path):
     assert x[-1, 2] == pytest.approx(30.0, abs=1.0)          # the ramp's rate, deg/s
 
 
+def test_out_naming_the_input_is_refused_and_the_input_kept(run, files, tmp_path, monkeypatch):
+    import shutil
+    src = tmp_path / "plain.csv"
+    shutil.copy(files[4], src)
+    before = src.read_bytes()
+    for out in (src, tmp_path / "." / "plain.csv"):
+        code, out_txt, err = run("run", "--filter", "angle-kf", "--input", src, "--out", out)
+        _one_line_error(code, out_txt, err, "is the input recording")
+    monkeypatch.chdir(tmp_path)        # a relative name for the same file
+    code, out_txt, err = run("run", "--filter", "angle-kf", "--input", "plain.csv", "--out", src)
+    _one_line_error(code, out_txt, err, "is the input recording")
+    assert src.read_bytes() == before
+
+
 def test_wrong_input_kinds_give_one_line(run, files, tmp_path):
     _, _, _, s004, plain = files
     out = tmp_path / "o.csv"
@@ -226,3 +240,28 @@ def test_bench_cost_covers_the_smoothers(bench):
     # a 2-state Kalman step is some tens to hundreds of instructions, not a handful nor 10^4
     assert 40 < row["instructions_per_update"] < 2000, row
     assert row["own_flash_bytes"] > 100
+
+
+@pytest.mark.parametrize("fmt,target", [("f32", "m4f"), ("q", "m0")])
+def test_bench_cost_profile_accounts_for_every_instruction(bench, fmt, target):
+    import json
+    from kinefuse.hil_tests.qemu import qemu_unavailable
+    if qemu_unavailable():
+        pytest.skip(qemu_unavailable())
+    code, out, err = bench("cost", "--filters", "angle-ekf", "--formats", fmt, "--targets", target,
+                           "--no-competitors", "--k", "20", "--profile", "--top", "50", "--json")
+    assert code == 0, err
+    (row,) = json.loads(out)["rows"]
+    prof = row["profile"]
+    total = prof["traced_instructions_per_update"]
+    # the trace and the counting plugin see the same program: the same count within the driver
+    # loop's few instructions
+    assert abs(total - row["instructions_per_update"]) < 10, (total, row["instructions_per_update"])
+    fns, lines = prof["functions"], prof["reference_lines"]
+    assert fns[0]["name"] == f"angle_ekf_{fmt}_update" and fns[0]["calls_per_update"] == 1
+    assert sum(f["instructions_per_update"] for f in fns) == pytest.approx(total)
+    assert sum(g["instructions_per_update"] for g in lines) == pytest.approx(total)
+    ref = [g for g in lines if g["where"].startswith("angle_kf.py:")]
+    assert ref and sum(g["instructions_per_update"] for g in ref) > 0.3 * total, lines
+    if target == "m0":   # no FPU and no long multiply: runtime or libgcc routines do part of it
+        assert any(f["name"].startswith(("kf_", "__")) for f in fns), fns
