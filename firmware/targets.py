@@ -11,7 +11,8 @@ target      QEMU machine    compiler flags                                      
 ==========  ==============  ======================================================  =========
 
 Every build uses the bit-exactness flags of ``shared/notes/bit-exact.md``
-(``-std=c99 -ffp-contract=off -fno-fast-math``; C++ gets ``-std=c++14`` with the same float
+(``-std=c99 -ffp-contract=off -fno-fast-math``, plus ``-fno-math-errno`` as on the host; C++
+gets ``-std=c++14`` with the same float
 flags plus ``-fno-exceptions -fno-rtti``), ``-ffunction-sections -fdata-sections`` and
 ``--gc-sections`` so that sizes measure what is actually reachable, and the full newlib
 (``--specs=nosys.specs``, not newlib-nano: nano's ``memcpy`` is a byte loop that would distort
@@ -50,8 +51,11 @@ HAL_INCLUDE_DIR = FIRMWARE_DIR / "app"
 _BOARD_RUNTIME = ("startup_mps2.c", "semihost.c")
 _BOARD_HAL = ("kf_hal_mps2.c", "uart_cmsdk.c")
 
-C_FLAGS: tuple[str, ...] = ("-std=c99", "-ffp-contract=off", "-fno-fast-math")
-CXX_FLAGS: tuple[str, ...] = ("-std=c++14", "-ffp-contract=off", "-fno-fast-math",
+# -fno-math-errno: nothing reads errno after a math call, and with it GCC emits VSQRT alone instead
+# of VSQRT + a call to libm's sqrtf for negative operands (which pulled in newlib's 1 kB reentrancy
+# struct for errno); results are the same bits
+C_FLAGS: tuple[str, ...] = ("-std=c99", "-ffp-contract=off", "-fno-fast-math", "-fno-math-errno")
+CXX_FLAGS: tuple[str, ...] = ("-std=c++14", "-ffp-contract=off", "-fno-fast-math", "-fno-math-errno",
                               "-fno-exceptions", "-fno-rtti", "-fno-threadsafe-statics")
 COMMON_FLAGS: tuple[str, ...] = ("-ffunction-sections", "-fdata-sections", "-Wall", "-Wextra", "-g")
 CXX_SUFFIXES = (".cpp", ".cc", ".cxx", ".C")
@@ -270,7 +274,8 @@ def build(sources: Iterable[str | os.PathLike],
     link_flags += list(extra_ldflags)
 
     gcc, gxx = tool("gcc"), tool("g++")
-    key_material = _hash_inputs(srcs, incs, [base, list(extra_cflags), link_flags, [name]],
+    key_material = _hash_inputs(srcs, incs, [base, list(C_FLAGS), list(CXX_FLAGS), list(extra_cflags),
+                                             link_flags, [name]],
                                 _compiler_version(gcc), ld_script)
     if out_dir is None:
         final_dir = cache_dir("build", key_material[:20])

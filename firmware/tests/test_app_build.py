@@ -98,3 +98,18 @@ def test_firmware_builds_are_cached_under_kinefuse_cache(tmp_path, monkeypatch):
     monkeypatch.delenv("KINEFUSE_CACHE")
     monkeypatch.setenv("KINEFUSE_CACHE_DIR", str(tmp_path / "old"))
     assert cache_dir("build") == tmp_path / "old" / "build"
+
+
+def test_a_change_of_the_standard_flags_rebuilds(tmp_path, monkeypatch):
+    """The cache key covered the architecture, -O and -D/-I flags but not the C/C++ flags: adding
+    -fno-math-errno to them returned the builds made without it."""
+    from kinefuse.firmware import targets
+    if targets.toolchain_missing():
+        pytest.skip(targets.toolchain_missing())
+    monkeypatch.setenv("KINEFUSE_CACHE", str(tmp_path / "kc"))
+    src = tmp_path / "f.c"
+    src.write_text("int main(void) { return 0; }\n")
+    first = targets.build([src], "m4f", hal=False)
+    assert targets.build([src], "m4f", hal=False).elf == first.elf            # cached
+    monkeypatch.setattr(targets, "C_FLAGS", targets.C_FLAGS + ("-fno-strict-aliasing",))
+    assert targets.build([src], "m4f", hal=False).elf != first.elf
