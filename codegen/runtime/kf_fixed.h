@@ -30,8 +30,8 @@ typedef struct {
 /* 32 x 32 -> 64-bit products.  ARMv6-M / ARMv8-M Baseline (Cortex-M0/M0+/M23) have no long
  * multiply and GCC calls the 64 x 64 __aeabi_lmul (about 45 instructions with the call); four
  * 16 x 16 products and one 32-bit product give the same bits in about 20 (Hacker's Delight 8-2).
- * KF_PORTABLE_LONG_MUL selects that path, and kf_rsqrt_dyn64's 32-bit division loop, on any
- * target (the host tests compare both paths). */
+ * KF_PORTABLE_LONG_MUL selects that path, kf_rsqrt_dyn64's 32-bit division loop and the
+ * digit-by-digit square root on any target (the host tests compare both paths). */
 #if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_8M_BASE__) || defined(KF_PORTABLE_LONG_MUL)
 #define KF_NO_LONG_MUL 1   /* these cores have no CLZ and (v6-M) no divider either */
 #endif
@@ -165,10 +165,41 @@ static inline void kf_isqrt_digits32(uint32_t *w, int32_t groups, uint32_t *r, u
     *m = mm;
 }
 
-/* floor(sqrt(n)) for any n < 2^64, and the remainder n - r^2 (digit by digit: 29 of the 32
- * steps in 32-bit arithmetic, the last three in 64-bit). */
+/* Where a hardware float square root exists (and 64-bit products are cheap), kf_isqrt_floor
+ * starts from it; elsewhere (the M0, an M3/M4 without FPU) it goes digit by digit.  Either way
+ * the result is the exact floor: the float value is only a first guess. */
+#if !defined(KF_NO_LONG_MUL) && !defined(KF_PORTABLE_ISQRT) && \
+    (defined(__ARM_FP) || defined(__x86_64__) || defined(__i386__) || defined(__aarch64__))
+#define KF_ISQRT_BY_FLOAT 1
+#endif
+
+/* floor(sqrt(n)) for any n < 2^64, and the remainder n - r^2. */
 static inline uint64_t kf_isqrt_floor(uint64_t n, uint64_t *rem)
 {
+#ifdef KF_ISQRT_BY_FLOAT
+    /* float guess (relative error below 2^-22), one Newton step (the guess is then within a few
+     * units, from above), then exact settling with 64-bit products (r < 2^32: no overflow) */
+    const float x = (float)(uint32_t)(n >> 32) * 4294967296.0f + (float)(uint32_t)n;
+    const float g = __builtin_sqrtf(x);
+    uint64_t r;
+    if (n < 2u) {
+        *rem = 0u;
+        return n;
+    }
+    r = (g >= 4294967040.0f) ? 0xFFFFFFFFu : (uint64_t)(uint32_t)g;   /* r >= 1 */
+    r = (r + n / r) >> 1;
+    if (r > 0xFFFFFFFFu) {
+        r = 0xFFFFFFFFu;
+    }
+    while (r * r > n) {
+        r--;
+    }
+    while ((r < 0xFFFFFFFFu) && ((r + 1u) * (r + 1u) <= n)) {
+        r++;
+    }
+    *rem = n - r * r;
+    return r;
+#else
     uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n, r = 0, m = 0;
     uint64_t r64, m64;
     int32_t i;
@@ -192,6 +223,7 @@ static inline uint64_t kf_isqrt_floor(uint64_t n, uint64_t *rem)
     }
     *rem = m64;
     return r64;
+#endif
 }
 
 /* sqrt(n) rounded to nearest; 0 for n <= 0. */

@@ -49,11 +49,14 @@ uint64_t w_isqrt_floor(uint64_t n, uint64_t *rem);
 """
 
 
-# "native": the host's own 64-bit products; "portable": the 16 x 16 long multiplication the
-# Cortex-M0 build uses (it has no long multiply), so every helper is checked on both paths
-@pytest.fixture(scope="module", params=["native", "portable"])
+# "native": the host's own 64-bit products and a float first guess for square roots (as on the
+# M4F); "portable": the 16 x 16 long multiplication, 32-bit division loop and digit-by-digit
+# square root of the Cortex-M0 build; "no-fpu": native products, digit-by-digit square root (an
+# M3 or M4 without FPU).  Every helper is checked on every path.
+@pytest.fixture(scope="module", params=["native", "portable", "no-fpu"])
 def c(request):
-    define = "#define KF_PORTABLE_LONG_MUL\n" if request.param == "portable" else ""
+    define = {"native": "", "portable": "#define KF_PORTABLE_LONG_MUL\n",
+              "no-fpu": "#define KF_PORTABLE_ISQRT\n"}[request.param]
     ffi, lib = build(f"qruntime_test_{request.param}", [], [], extra_cdef=CDEF,
                      extra_source=define + '#include "kf_fixed.h"\n' + WRAP,
                      include_dirs=[RUNTIME_DIR])
