@@ -89,13 +89,16 @@ def _payload_len(rx: bytes, offsets) -> np.ndarray:
 
 def decode_tlog(path: Path, msgids=None) -> DecodedFile:
     """A MAVProxy/QGroundControl telemetry log: each frame preceded by its 8-byte big-endian
-    UNIX time in us.  The time stamps are skipped as garbage by the decoder (``bytes_skipped``
-    counts them); MAVLink 1 frames are not decoded."""
+    UNIX time in us.  The stamps of the decoded frames are not counted in ``bytes_skipped``
+    (which so counts only bytes that are neither: MAVLink 1 frames, which are not decoded, and
+    damage)."""
     try:
         data = path.read_bytes()
     except OSError as exc:
         raise KinefuseError(f"cannot read {path}: {exc.strerror or exc}") from None
     ds = decode_stream(StreamData(0, data), {"id": 0, "connection": f"tlog:{path}"}, msgids)
+    # the decoder skipped each frame's 8-byte stamp as bytes outside any frame
+    ds.counters.bytes_skipped = max(0, ds.counters.bytes_skipped - 8 * ds.counters.frames_ok)
     b = np.frombuffer(data, np.uint8)
     first = None
     for mid, arr in ds.arrays.items():

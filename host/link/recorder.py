@@ -120,6 +120,7 @@ class Recorder:
                            or time.monotonic_ns() - st.first_pending_ns >= self.chunk_interval_ns):
             self.writer.rx(st.id, st.pending)
             st.pending, st.pending_bytes = [], 0
+        self.writer.sync_due()
 
     # ------------------------------------------------------------------------------ live view
     def _look(self, st: StreamState, final: bool = False) -> None:

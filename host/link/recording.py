@@ -105,6 +105,7 @@ class RecordingWriter:
         self._fsync_interval = fsync_interval
         self._last_sync = time.monotonic()
         self.bytes_written = 0
+        self._synced_bytes = 0
         self.failed: KinefuseError | None = None   # the first write error (disk full...): raised again by close()
         body = json.dumps(header, sort_keys=True).encode()
         self._write(FILE_HEAD.pack(MAGIC, VERSION, len(body)) + body + struct.pack("<I", _crc32(body)))
@@ -163,10 +164,20 @@ class RecordingWriter:
         except OSError as exc:
             raise self._failed(exc) from None
         self._last_sync = time.monotonic()
+        self._synced_bytes = self.bytes_written
 
     def sync(self) -> None:
         with self._lock:
             self._sync_locked()
+
+    def sync_due(self) -> None:
+        """fsync if bytes were written since the last fsync and the interval has passed.  Called
+        every loop turn: chunk() alone synced only when a later chunk came, so the last data
+        before a stream went quiet stayed unsynced for as long as it stayed quiet."""
+        with self._lock:
+            if (self.failed is None and self.bytes_written != self._synced_bytes
+                    and time.monotonic() - self._last_sync >= self._fsync_interval):
+                self._sync_locked()
 
     def close(self) -> None:
         with self._lock:

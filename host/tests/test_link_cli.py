@@ -157,10 +157,18 @@ def test_stats_on_a_tlog(run, tmp_path):
                    for k in range(1000) if k != 500)
     (tmp_path / "x.tlog").write_bytes(log)
     code, stdout, _ = run("stats", tmp_path / "x.tlog", "--json")
-    u = json.loads(stdout)["streams"][0]["units"][0]
+    stream = json.loads(stdout)["streams"][0]
+    # the 8-byte stamps are the tlog's format, not skipped bytes (999 of them were reported)
+    assert stream["frames_ok"] == 999 and stream["bytes_skipped"] == 0
+    u = stream["units"][0]
     assert u["messages"]["KF_RAW_SAMPLE"]["samples_lost"] == 1
     # host times count from the first tlog stamp, which is 1.5 ms after device time 0: offset 0
     assert abs(u["clock"]["drift_ppm"]) < 1 and u["clock"]["offset_s"] == pytest.approx(0.0, abs=1e-6)
+    cut = (8 + 46) * 10 + 8                   # five junk bytes between the 11th stamp and its frame
+    (tmp_path / "y.tlog").write_bytes(log[:cut] + b"\x01\x02\x03\x04\x05" + log[cut:])
+    code, stdout, _ = run("stats", tmp_path / "y.tlog", "--json")
+    stream = json.loads(stdout)["streams"][0]
+    assert stream["frames_ok"] == 999 and stream["bytes_skipped"] == 5
 
 
 def test_export_of_a_truncated_recording_warns(run, tmp_path):
