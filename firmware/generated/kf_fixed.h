@@ -1,7 +1,8 @@
 /*
  * kf_fixed.h - fixed-point helpers of kinefuse generated code.  Copied verbatim from
  * codegen/runtime/kf_fixed.h by `kinefuse codegen`; its Python mirror is codegen/runtime/q.py
- * (one function there for each function here).
+ * (one function there for each function the generated code calls; the building blocks below them,
+ * kf_smull, kf_bitlen32, kf_isqrt_floor..., are exact integer functions with no mirror).
  *
  * Number format: every real value is an int32 "raw" with a per-variable number of fractional
  * bits f chosen by range analysis (value = raw * 2^-f; f may be negative or exceed 31).

@@ -221,7 +221,7 @@ def classify(mnemonic: str, taken: float) -> float:
     return 1.0
 
 
-def _per_update_trace(elf: Path, target: str, k: int) -> Counter:
+def per_update_trace(elf: Path, target: str, k: int) -> Counter:
     """Executed count of every instruction address over k updates (trace of k minus trace of 0)."""
     with_k = _trace_pcs(elf, target, k)
     without = _trace_pcs(elf, target, 0)
@@ -237,7 +237,7 @@ def cycle_estimate(build, target: str, k: int = K_MIX, per: Counter | None = Non
     """Estimated cycles per update from a single-step trace of K and 0 calls."""
     addrs, mnems, index = _disassembly(build.elf)
     if per is None:
-        per = _per_update_trace(build.elf, target, k)
+        per = per_update_trace(build.elf, target, k)
     cycles = 0.0
     classes = Counter()
     unknown = 0
@@ -308,33 +308,35 @@ def profile(elf: Path, per: Counter, k: int, top: int = 12) -> dict:
     generated C statement the instruction belongs to, through inlining)."""
     syms = _function_symbols(elf)
     starts = [a for a, _ in syms]
+    entry = {a: n for a, n in syms}
+    fn_of: dict[int, str] = {}
     by_fn: Counter = Counter()
     calls: Counter = Counter()
-    entry = {a: n for a, n in syms}
     for pc, c in per.items():
         j = bisect.bisect_right(starts, pc) - 1
-        name = syms[j][1] if j >= 0 else "?"
-        by_fn[name] += c
+        fn_of[pc] = syms[j][1] if j >= 0 else "?"
+        by_fn[fn_of[pc]] += c
         if pc in entry:
             calls[entry[pc]] += c
     pcs = sorted(per)
-    lines = _outer_lines(elf, pcs)
-    texts: dict[str, list[str]] = {}
+    gen_dir = GENERATED_DIR.resolve()
+    texts: dict[str, list[str] | None] = {}     # generated C sources by path (None: not one)
     by_ref: Counter = Counter()
-    for pc, loc in zip(pcs, lines):
-        j = bisect.bisect_right(starts, pc) - 1
-        key = f"in {syms[j][1] if j >= 0 else '?'} (out of line)"
-        if loc is not None and Path(loc[0]).parent.resolve() == GENERATED_DIR.resolve() \
-                and loc[0].endswith(".c"):
+    for pc, loc in zip(pcs, _outer_lines(elf, pcs)):
+        key = f"in {fn_of[pc]} (out of line)"
+        if loc is not None:
             path, num = loc
             if path not in texts:
-                try:
-                    texts[path] = Path(path).read_text().splitlines()
-                except OSError:
-                    texts[path] = []
+                texts[path] = None
+                if path.endswith(".c") and Path(path).parent.resolve() == gen_dir:
+                    try:
+                        texts[path] = Path(path).read_text().splitlines()
+                    except OSError:
+                        texts[path] = []
             src = texts[path]
-            m = _REF_COMMENT.search(src[num - 1]) if 0 < num <= len(src) else None
-            key = m.group(1) if m else f"{Path(path).name}: generated glue (no reference line)"
+            if src is not None:
+                m = _REF_COMMENT.search(src[num - 1]) if 0 < num <= len(src) else None
+                key = m.group(1) if m else f"{Path(path).name}: generated glue (no reference line)"
         by_ref[key] += per[pc]
     total = sum(per.values())
     fns = [{"name": n, "instructions_per_update": c / k, "calls_per_update": calls.get(n, 0) / k}
@@ -349,25 +351,6 @@ def profile(elf: Path, per: Counter, k: int, top: int = 12) -> dict:
         refs.append({"where": f"({len(by_ref) - top} other lines)", "instructions_per_update": rest / k})
     return {"functions": fns, "reference_lines": refs,
             "traced_instructions_per_update": total / k, "traced_updates": k}
-
-
-def profile_filter(name: str, system: str, target: str, k: int = K_MIX, top: int = 12,
-                   mix: bool = True) -> dict:
-    """Build the -O2 cost program with line information (-g: the code is the same) and profile
-    k updates; with ``mix`` the cycle estimate comes from the same trace."""
-    from kinefuse.hil_tests.qemu.cost import cost_program
-
-    src = GENERATED_DIR / f"{name.replace('-', '_')}_{system}.c"
-    table_c, table_dir, _ctype, _n = _table_sources(name, system)
-    prelude, setup, call, finish, baseline = _snippets(name, system)
-    prog = cost_program([src, table_c], setup, call, target, prelude=prelude, finish=finish,
-                        baseline_code=baseline, include_dirs=[GENERATED_DIR, table_dir],
-                        extra_cflags=["-g"])
-    per = _per_update_trace(prog.elf, target, k)
-    out = {"profile": profile(prog.elf, per, k, top)}
-    if mix:
-        out.update(cycle_estimate(prog, target, k, per=per))
-    return out
 
 
 def _class(mn: str) -> str:

@@ -79,13 +79,15 @@ def measure_ours(name: str, system: str, target: str, k: int, mix: bool,
     row["own_flash_bytes"] = sum(v.flash for kk, v in origin.items() if kk == stem)
     row["own_ram_bytes"] = sum(v.ram for kk, v in origin.items() if kk in (stem, "kf_cost_driver"))
     row["size_by_origin"] = {kk: v.as_dict() for kk, v in origin.items()}
-    if profile:
-        row.update(hc.profile_filter(name, system, target, top=top, mix=mix))
-    elif mix:
+    if mix or profile:   # one single-step trace serves both (builds carry -g line information)
         prog = qc.cost_program([GENERATED_DIR / f"{stem}.c", table_c], setup, call, target,
                                prelude=prelude, finish=finish, baseline_code=baseline,
                                include_dirs=[GENERATED_DIR, table_dir])
-        row.update(hc.cycle_estimate(prog, target))
+        per = hc.per_update_trace(prog.elf, target, hc.K_MIX)
+        if profile:
+            row["profile"] = hc.profile(prog.elf, per, hc.K_MIX, top)
+        if mix:
+            row.update(hc.cycle_estimate(prog, target, hc.K_MIX, per=per))
     goal = GOALS.get((name, system, target))
     if goal is not None:
         row["goal_instructions"] = goal

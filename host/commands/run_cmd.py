@@ -35,12 +35,11 @@ def register(sub):
 
 def _refuse_overwriting_the_input(args) -> None:
     from pathlib import Path
-    inp, out = Path(args.input), Path(args.out)
     try:
-        same = out.exists() and inp.exists() and out.samefile(inp)
-    except OSError:
+        same = Path(args.out).samefile(args.input)
+    except OSError:   # either does not exist (a missing input is reported by its reader)
         same = False
-    if same or (not out.exists() and out.resolve() == inp.resolve()):
+    if same:
         raise KinefuseError(f"--out {args.out} is the input recording; give another file name "
                             f"(the recording would be overwritten by the estimates)")
 

@@ -131,8 +131,7 @@ class RecordingWriter:
                 self._f.flush()  # to the OS: survives a killed process
             except OSError as exc:
                 raise self._failed(exc) from None
-            if time.monotonic() - self._last_sync >= self._fsync_interval:
-                self._sync_locked()
+            self._sync_if_due_locked()
 
     def rx(self, stream: int, reads: list[tuple[int, bytes]]) -> None:
         """One RX chunk from consecutive reads [(t_ns, data), ...] of one stream."""
@@ -170,14 +169,17 @@ class RecordingWriter:
         with self._lock:
             self._sync_locked()
 
+    def _sync_if_due_locked(self) -> None:
+        if (self.failed is None and self.bytes_written != self._synced_bytes
+                and time.monotonic() - self._last_sync >= self._fsync_interval):
+            self._sync_locked()
+
     def sync_due(self) -> None:
         """fsync if bytes were written since the last fsync and the interval has passed.  Called
         every loop turn: chunk() alone synced only when a later chunk came, so the last data
         before a stream went quiet stayed unsynced for as long as it stayed quiet."""
         with self._lock:
-            if (self.failed is None and self.bytes_written != self._synced_bytes
-                    and time.monotonic() - self._last_sync >= self._fsync_interval):
-                self._sync_locked()
+            self._sync_if_due_locked()
 
     def close(self) -> None:
         with self._lock:
