@@ -80,39 +80,19 @@ int angle_ekf_f32_init(angle_ekf_f32_state *s, const angle_ekf_f32_params *p)
 void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, angle_ekf_f32_output *out)
 {
     const float u_angle = in->angle;
-    const int u_angle_valid = (in->angle_valid != 0u);
-    const float u_dt = in->dt;
-    const float p_sigma_meas = s->params.sigma_meas;
-    const float p_q_acc = s->params.q_acc;
-    const float p_q_center = s->params.q_center;
-    const float p_q_omega = s->params.q_omega;
-    const float p_omega0 = s->params.omega0;
-    const float x_theta = s->theta;
-    const float x_rate = s->rate;
-    const float x_center = s->center;
-    const float x_omega = s->omega;
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
-    const float x_Ptt = s->Ptt;
-    const float x_Ptr = s->Ptr;
-    const float x_Ptc = s->Ptc;
-    const float x_Ptw = s->Ptw;
-    const float x_Prr = s->Prr;
-    const float x_Prc = s->Prc;
-    const float x_Prw = s->Prw;
-    const float x_Pcc = s->Pcc;
-    const float x_Pcw = s->Pcw;
-    const float x_Pww = s->Pww;
     const float t24 = fabsf(u_angle);  /* angle_kf.py:138 */
     const int t26 = (t24 <= 0x1.99999ap+1f);  /* angle_kf.py:138 */
+    const float u_dt = in->dt;
     const int t28 = (0.0f < u_dt);  /* angle_kf.py:138 */
     const int t30 = (u_dt <= 0x1.99999ap-3f);  /* angle_kf.py:138 */
     const int t31 = (t26 && t28);  /* angle_kf.py:138 */
     const int t32 = (t31 && t30);  /* angle_kf.py:138 */
+    const int u_angle_valid = (in->angle_valid != 0u);
     const int t33 = (t32 && u_angle_valid);  /* angle_kf.py:140 */
     const int t34 = (!t32);  /* angle_kf.py:141 */
     const float t35 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* angle_kf.py:142 */
     const float t36 = ((t35 < 0x1.99999ap-3f) ? t35 : 0x1.99999ap-3f);  /* angle_kf.py:142 */
+    const float x_omega = s->omega;
     const float t37 = ((0x1.99999ap-3f < x_omega) ? x_omega : 0x1.99999ap-3f);  /* angle_kf.py:247 */
     const float t39 = ((t37 < 0x1.ep+4f) ? t37 : 0x1.ep+4f);  /* angle_kf.py:247 */
     const float t40 = (t39 * t36);  /* angle_kf.py:248 */
@@ -191,10 +171,13 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t135 = (t133 * t134);  /* angle_kf.py:237 */
     const float t136 = (t111 ? t119 : t132);  /* angle_kf.py:238 */
     const float t138 = (t111 ? t129 : t135);  /* angle_kf.py:239 */
+    const float x_theta = s->theta;
+    const float x_center = s->center;
     const float t140 = (x_theta - x_center);  /* angle_kf.py:250 */
     const float t141 = (t140 * t107);  /* angle_kf.py:251 */
     const float t142 = (x_center + t141);  /* angle_kf.py:251 */
     const float t143 = (t36 * t136);  /* angle_kf.py:251 */
+    const float x_rate = s->rate;
     const float t144 = (x_rate * t143);  /* angle_kf.py:251 */
     const float t145 = (t142 + t144);  /* angle_kf.py:251 */
     const float t146 = (-t140);  /* angle_kf.py:252 */
@@ -220,25 +203,34 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t166 = (x_rate * t36);  /* angle_kf.py:263 */
     const float t167 = (t166 * t104);  /* angle_kf.py:263 */
     const float t168 = (t165 - t167);  /* angle_kf.py:263 */
+    const float x_Ptt = s->Ptt;
     const float t169 = (t107 * x_Ptt);  /* angle_kf.py:324 */
+    const float x_Ptr = s->Ptr;
     const float t170 = (t143 * x_Ptr);  /* angle_kf.py:324 */
     const float t171 = (t169 + t170);  /* angle_kf.py:131 */
+    const float x_Ptc = s->Ptc;
     const float t172 = (t151 * x_Ptc);  /* angle_kf.py:324 */
     const float t173 = (t171 + t172);  /* angle_kf.py:131 */
+    const float x_Ptw = s->Ptw;
     const float t174 = (t159 * x_Ptw);  /* angle_kf.py:324 */
     const float t175 = (t173 + t174);  /* angle_kf.py:131 */
     const float t176 = (t107 * x_Ptr);  /* angle_kf.py:324 */
+    const float x_Prr = s->Prr;
     const float t177 = (t143 * x_Prr);  /* angle_kf.py:324 */
     const float t178 = (t176 + t177);  /* angle_kf.py:131 */
+    const float x_Prc = s->Prc;
     const float t179 = (t151 * x_Prc);  /* angle_kf.py:324 */
     const float t180 = (t178 + t179);  /* angle_kf.py:131 */
+    const float x_Prw = s->Prw;
     const float t181 = (t159 * x_Prw);  /* angle_kf.py:324 */
     const float t182 = (t180 + t181);  /* angle_kf.py:131 */
     const float t183 = (t107 * x_Ptc);  /* angle_kf.py:324 */
     const float t184 = (t143 * x_Prc);  /* angle_kf.py:324 */
     const float t185 = (t183 + t184);  /* angle_kf.py:131 */
+    const float x_Pcc = s->Pcc;
     const float t186 = (t151 * x_Pcc);  /* angle_kf.py:324 */
     const float t187 = (t185 + t186);  /* angle_kf.py:131 */
+    const float x_Pcw = s->Pcw;
     const float t188 = (t159 * x_Pcw);  /* angle_kf.py:324 */
     const float t189 = (t187 + t188);  /* angle_kf.py:131 */
     const float t190 = (t107 * x_Ptw);  /* angle_kf.py:324 */
@@ -246,6 +238,7 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t192 = (t190 + t191);  /* angle_kf.py:131 */
     const float t193 = (t151 * x_Pcw);  /* angle_kf.py:324 */
     const float t194 = (t192 + t193);  /* angle_kf.py:131 */
+    const float x_Pww = s->Pww;
     const float t195 = (t159 * x_Pww);  /* angle_kf.py:324 */
     const float t196 = (t194 + t195);  /* angle_kf.py:131 */
     const float t197 = (t161 * x_Ptt);  /* angle_kf.py:324 */
@@ -275,12 +268,15 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t221 = (t219 + t220);  /* angle_kf.py:131 */
     const float t222 = (t168 * x_Pww);  /* angle_kf.py:324 */
     const float t223 = (t221 + t222);  /* angle_kf.py:131 */
+    const float p_q_acc = s->params.q_acc;
     const float t224 = (p_q_acc * t36);  /* angle_kf.py:147 */
     const float t225 = (t224 * t36);  /* angle_kf.py:148 */
     const float t226 = (t225 * t36);  /* angle_kf.py:148 */
     const float t227 = (t226 * 0x1.555556p-2f);  /* angle_kf.py:148 */
     const float t228 = (t225 * 0x1p-1f);  /* angle_kf.py:148 */
+    const float p_q_center = s->params.q_center;
     const float t229 = (p_q_center * t36);  /* angle_kf.py:293 */
+    const float p_q_omega = s->params.q_omega;
     const float t230 = (p_q_omega * t36);  /* angle_kf.py:294 */
     const float t231 = (t175 * t107);  /* angle_kf.py:355 */
     const float t232 = (t182 * t143);  /* angle_kf.py:355 */
@@ -316,6 +312,7 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t264 = ((t263 < 0x1.99999ap+1f) ? t263 : 0x1.99999ap+1f);  /* angle_kf.py:299 */
     const float t265 = ((0x1.99999ap-3f < t39) ? t39 : 0x1.99999ap-3f);  /* angle_kf.py:299 */
     const float t266 = ((t265 < 0x1.ep+4f) ? t265 : 0x1.ep+4f);  /* angle_kf.py:299 */
+    const float p_sigma_meas = s->params.sigma_meas;
     const float t267 = (p_sigma_meas * p_sigma_meas);  /* angle_kf.py:360 */
     const float t268 = (t238 + t267);  /* angle_kf.py:160 */
     const float t269 = ((t267 < t268) ? t268 : t267);  /* angle_kf.py:161 */
@@ -369,6 +366,7 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t321 = (t33 ? t305 : t255);  /* angle_kf.py:363 */
     const float t322 = (t33 ? t307 : x_Pcw);  /* angle_kf.py:363 */
     const float t323 = (t33 ? t309 : t256);  /* angle_kf.py:363 */
+    const int x_initialised = (s->initialised != 0u);
     const int t324 = (!x_initialised);  /* angle_kf.py:305 */
     const int t325 = (t33 && t324);  /* angle_kf.py:305 */
     const int t326 = (t32 && x_initialised);  /* angle_kf.py:306 */
@@ -379,6 +377,7 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t331 = (t326 ? t312 : x_center);  /* angle_kf.py:313 */
     const float t332 = (t325 ? u_angle : t331);  /* angle_kf.py:313 */
     const float t333 = (t326 ? t313 : x_omega);  /* angle_kf.py:313 */
+    const float p_omega0 = s->params.omega0;
     const float t334 = (t325 ? p_omega0 : t333);  /* angle_kf.py:313 */
     const float t335 = ((-0x1.99999ap+1f < t328) ? t328 : -0x1.99999ap+1f);  /* angle_kf.py:298 */
     const float t336 = ((t335 < 0x1.99999ap+1f) ? t335 : 0x1.99999ap+1f);  /* angle_kf.py:298 */
@@ -408,6 +407,7 @@ void angle_ekf_f32_update(angle_ekf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t361 = (t325 ? 0.0f : t360);  /* angle_kf.py:314 */
     const float t362 = (t326 ? t323 : x_Pww);  /* angle_kf.py:314 */
     const float t364 = (t325 ? 0x1.9p+4f : t362);  /* angle_kf.py:314 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t365 = kf_inc_if(x_rejected, t34);  /* angle_kf.py:316 */
     const int t366 = (x_initialised || t325);  /* angle_kf.py:318 */
     const float t367 = ((0.0f < t344) ? t344 : 0.0f);  /* angle_kf.py:104 */

@@ -74,41 +74,21 @@ int angle_ekf_q_init(angle_ekf_q_state *s, const angle_ekf_q_params *p)
 void angle_ekf_q_update(angle_ekf_q_state *s, const kf_angle_input_q *in, angle_ekf_q_output *out)
 {
     const int32_t u_angle = in->angle;
-    const int u_angle_valid = (in->angle_valid != 0u);
-    const int32_t u_dt = in->dt;
-    const int32_t p_sigma_meas = s->params.sigma_meas;
-    const int32_t p_q_acc = s->params.q_acc;
-    const int32_t p_q_center = s->params.q_center;
-    const int32_t p_q_omega = s->params.q_omega;
-    const int32_t p_omega0 = s->params.omega0;
-    const int32_t x_theta = s->theta;
-    const int32_t x_rate = s->rate;
-    const int32_t x_center = s->center;
-    const int32_t x_omega = s->omega;
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
-    const int32_t x_Ptt = s->Ptt;
-    const int32_t x_Ptr = s->Ptr;
-    const int32_t x_Ptc = s->Ptc;
-    const int32_t x_Ptw = s->Ptw;
-    const int32_t x_Prr = s->Prr;
-    const int32_t x_Prc = s->Prc;
-    const int32_t x_Prw = s->Prw;
-    const int32_t x_Pcc = s->Pcc;
-    const int32_t x_Pcw = s->Pcw;
-    const int32_t x_Pww = s->Pww;
     const int32_t t24 = ((int32_t)((((int64_t)u_angle) < 0) ? (-((int64_t)u_angle)) : ((int64_t)u_angle)));  /* angle_kf.py:138 Q3.28 */
     const int t26 = ((((int64_t)t24) * 2) <= ((int64_t)1717986918));  /* angle_kf.py:138 */
+    const int32_t u_dt = in->dt;
     const int t28 = ((((int64_t)0) * 4) < ((int64_t)u_dt));  /* angle_kf.py:138 */
     const int t30 = ((((int64_t)u_dt) * 2) <= ((int64_t)1717986918));  /* angle_kf.py:138 */
     const int t31 = (t26 && t28);  /* angle_kf.py:138 */
     const int t32 = (t31 && t30);  /* angle_kf.py:138 */
+    const int u_angle_valid = (in->angle_valid != 0u);
     const int t33 = (t32 && u_angle_valid);  /* angle_kf.py:140 */
     const int t34 = (!t32);  /* angle_kf.py:141 */
     const int32_t t35_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t35 = ((0 < t35_0) ? t35_0 : 0);  /* angle_kf.py:142 Q0.31 */
     const int32_t t36_0 = kf_sat((((int64_t)t35) * 4), 0, 1717986918);
     const int32_t t36 = ((t36_0 < 1717986918) ? t36_0 : 1717986918);  /* angle_kf.py:142 */
+    const int32_t x_omega = s->omega;
     const int32_t t37 = ((13421773 < x_omega) ? x_omega : 13421773);  /* angle_kf.py:247 Q5.26 */
     const int32_t t39 = ((t37 < 2013265920) ? t37 : 2013265920);  /* angle_kf.py:247 Q5.26 */
     const int32_t t40 = ((int32_t)((kf_smull(t39, t36) + 1073741824) >> 31));  /* angle_kf.py:248 Q3.28 */
@@ -192,10 +172,13 @@ void angle_ekf_q_update(angle_ekf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t138_0 = kf_sat(((int64_t)t129), -1073741824, 730144440);
     const int32_t t138_1 = kf_sat((((int64_t)t135) * 16), -1073741824, 730144440);
     const int32_t t138 = (t111 ? t138_0 : t138_1);  /* angle_kf.py:239 Q0.31 */
+    const int32_t x_theta = s->theta;
+    const int32_t x_center = s->center;
     const int32_t t140 = ((int32_t)(((((int64_t)x_theta) - ((int64_t)x_center)) + 1) >> 1));  /* angle_kf.py:250 Q3.28 */
     const int32_t t141 = ((int32_t)((kf_smull(t140, t107) + 536870912) >> 30));  /* angle_kf.py:251 Q3.28 */
     const int32_t t142 = ((int32_t)(((((int64_t)x_center) + (((int64_t)t141) * 2)) + 2) >> 2));  /* angle_kf.py:251 Q4.27 */
     const int32_t t143 = ((int32_t)((kf_smull(t36, t136) + 536870912) >> 30));  /* angle_kf.py:251 */
+    const int32_t x_rate = s->rate;
     const int32_t t144 = ((int32_t)((kf_smull(x_rate, t143) + 1073741824) >> 31));  /* angle_kf.py:251 Q3.28 */
     const int32_t t145 = ((int32_t)((((((int64_t)t142) * 2) + ((int64_t)t144)) + 1) >> 1));  /* angle_kf.py:251 Q4.27 */
     const int32_t t146 = ((int32_t)(-((int64_t)t140)));  /* angle_kf.py:252 Q3.28 */
@@ -221,25 +204,34 @@ void angle_ekf_q_update(angle_ekf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t166 = ((int32_t)((kf_smull(x_rate, t36) + 1073741824) >> 31));  /* angle_kf.py:263 Q3.28 */
     const int32_t t167 = ((int32_t)((kf_smull(t166, t104) + 536870912) >> 30));  /* angle_kf.py:263 Q3.28 */
     const int32_t t168 = ((int32_t)((((((int64_t)t165) * 8) - ((int64_t)t167)) + 4) >> 3));  /* angle_kf.py:263 Q6.25 */
+    const int32_t x_Ptt = s->Ptt;
     const int32_t t169 = ((int32_t)((kf_smull(t107, x_Ptt) + 536870912) >> 30));  /* angle_kf.py:324 */
+    const int32_t x_Ptr = s->Ptr;
     const int32_t t170 = ((int32_t)((kf_smull(t143, x_Ptr) + 536870912) >> 30));  /* angle_kf.py:324 Q1.30 */
     const int32_t t171 = ((int32_t)(((((int64_t)t169) + (((int64_t)t170) * 4)) + 2) >> 2));  /* angle_kf.py:131 Q1.30 */
+    const int32_t x_Ptc = s->Ptc;
     const int32_t t172 = ((int32_t)((kf_smull(t151, x_Ptc) + 536870912) >> 30));  /* angle_kf.py:324 Q0.31 */
     const int32_t t173 = ((int32_t)((((((int64_t)t171) * 2) + ((int64_t)t172)) + 2) >> 2));  /* angle_kf.py:131 Q2.29 */
+    const int32_t x_Ptw = s->Ptw;
     const int32_t t174 = ((int32_t)((kf_smull(t159, x_Ptw) + 536870912) >> 30));  /* angle_kf.py:324 Q6.25 */
     const int32_t t175 = ((int32_t)(((((int64_t)t173) + (((int64_t)t174) * 16)) + 8) >> 4));  /* angle_kf.py:131 Q6.25 */
     const int32_t t176 = ((int32_t)((kf_smull(t107, x_Ptr) + 536870912) >> 30));  /* angle_kf.py:324 Q4.27 */
+    const int32_t x_Prr = s->Prr;
     const int32_t t177 = ((int32_t)((kf_smull(t143, x_Prr) + 536870912) >> 30));  /* angle_kf.py:324 Q6.25 */
     const int32_t t178 = ((int32_t)(((((int64_t)t176) + (((int64_t)t177) * 4)) + 2) >> 2));  /* angle_kf.py:131 Q6.25 */
+    const int32_t x_Prc = s->Prc;
     const int32_t t179 = ((int32_t)((kf_smull(t151, x_Prc) + 536870912) >> 30));  /* angle_kf.py:324 Q5.26 */
     const int32_t t180 = ((int32_t)((((((int64_t)t178) * 2) + ((int64_t)t179)) + 2) >> 2));  /* angle_kf.py:131 Q7.24 */
+    const int32_t x_Prw = s->Prw;
     const int32_t t181 = ((int32_t)((kf_smull(t159, x_Prw) + 536870912) >> 30));  /* angle_kf.py:324 Q11.20 */
     const int32_t t182 = ((int32_t)(((((int64_t)t180) + (((int64_t)t181) * 16)) + 8) >> 4));  /* angle_kf.py:131 Q11.20 */
     const int32_t t183 = ((int32_t)((kf_smull(t107, x_Ptc) + 536870912) >> 30));  /* angle_kf.py:324 */
     const int32_t t184 = ((int32_t)((kf_smull(t143, x_Prc) + 536870912) >> 30));  /* angle_kf.py:324 Q1.30 */
     const int32_t t185 = ((int32_t)(((((int64_t)t183) + (((int64_t)t184) * 4)) + 2) >> 2));  /* angle_kf.py:131 Q1.30 */
+    const int32_t x_Pcc = s->Pcc;
     const int32_t t186 = ((int32_t)((kf_smull(t151, x_Pcc) + 536870912) >> 30));  /* angle_kf.py:324 Q0.31 */
     const int32_t t187 = ((int32_t)((((((int64_t)t185) * 2) + ((int64_t)t186)) + 2) >> 2));  /* angle_kf.py:131 Q2.29 */
+    const int32_t x_Pcw = s->Pcw;
     const int32_t t188 = ((int32_t)((kf_smull(t159, x_Pcw) + 536870912) >> 30));  /* angle_kf.py:324 Q6.25 */
     const int32_t t189 = ((int32_t)(((((int64_t)t187) + (((int64_t)t188) * 16)) + 8) >> 4));  /* angle_kf.py:131 Q6.25 */
     const int32_t t190 = ((int32_t)((kf_smull(t107, x_Ptw) + 536870912) >> 30));  /* angle_kf.py:324 Q4.27 */
@@ -247,6 +239,7 @@ void angle_ekf_q_update(angle_ekf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t192 = ((int32_t)(((((int64_t)t190) + (((int64_t)t191) * 4)) + 2) >> 2));  /* angle_kf.py:131 Q6.25 */
     const int32_t t193 = ((int32_t)((kf_smull(t151, x_Pcw) + 536870912) >> 30));  /* angle_kf.py:324 Q5.26 */
     const int32_t t194 = ((int32_t)((((((int64_t)t192) * 2) + ((int64_t)t193)) + 2) >> 2));  /* angle_kf.py:131 Q7.24 */
+    const int32_t x_Pww = s->Pww;
     const int32_t t195 = ((int32_t)((kf_smull(t159, x_Pww) + 536870912) >> 30));  /* angle_kf.py:324 Q11.20 */
     const int32_t t196 = ((int32_t)(((((int64_t)t194) + (((int64_t)t195) * 16)) + 8) >> 4));  /* angle_kf.py:131 Q11.20 */
     const int32_t t197 = ((int32_t)((kf_smull(t161, x_Ptt) + 536870912) >> 30));  /* angle_kf.py:324 Q3.28 */
@@ -276,12 +269,15 @@ void angle_ekf_q_update(angle_ekf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t221 = ((int32_t)((((((int64_t)t219) * 2) + ((int64_t)t220)) + 2) >> 2));  /* angle_kf.py:131 Q10.21 */
     const int32_t t222 = ((int32_t)((kf_smull(t168, x_Pww) + 536870912) >> 30));  /* angle_kf.py:324 Q14.17 */
     const int32_t t223 = ((int32_t)(((((int64_t)t221) + (((int64_t)t222) * 16)) + 8) >> 4));  /* angle_kf.py:131 Q14.17 */
+    const int32_t p_q_acc = s->params.q_acc;
     const int32_t t224 = ((int32_t)((kf_smull(p_q_acc, t36) + 536870912) >> 30));  /* angle_kf.py:147 Q11.20 */
     const int32_t t225 = ((int32_t)((kf_smull(t224, t36) + 1073741824) >> 31));  /* angle_kf.py:148 Q9.22 */
     const int32_t t226 = ((int32_t)((kf_smull(t225, t36) + 1073741824) >> 31));  /* angle_kf.py:148 Q7.24 */
     const int32_t t227 = ((int32_t)((kf_smull(t226, 1431655765) + 536870912) >> 30));  /* angle_kf.py:148 Q5.26 */
     const int32_t t228 = ((int32_t)((kf_smull(t225, 1073741824) + 536870912) >> 30));  /* angle_kf.py:148 Q8.23 */
+    const int32_t p_q_center = s->params.q_center;
     const int32_t t229 = ((int32_t)((kf_smull(p_q_center, t36) + 1073741824) >> 31));  /* angle_kf.py:293 Q2.29 */
+    const int32_t p_q_omega = s->params.q_omega;
     const int32_t t230 = ((int32_t)((kf_smull(p_q_omega, t36) + 1073741824) >> 31));  /* angle_kf.py:294 Q5.26 */
     const int32_t t231 = ((int32_t)((kf_smull(t175, t107) + 536870912) >> 30));  /* angle_kf.py:355 Q6.25 */
     const int32_t t232 = ((int32_t)((kf_smull(t182, t143) + 1073741824) >> 31));  /* angle_kf.py:355 Q9.22 */
@@ -319,6 +315,7 @@ void angle_ekf_q_update(angle_ekf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t264 = ((t263 < 1717986918) ? t263 : 1717986918);  /* angle_kf.py:299 Q2.29 */
     const int32_t t265 = ((13421773 < t39) ? t39 : 13421773);  /* angle_kf.py:299 Q5.26 */
     const int32_t t266 = ((t265 < 2013265920) ? t265 : 2013265920);  /* angle_kf.py:299 Q5.26 */
+    const int32_t p_sigma_meas = s->params.sigma_meas;
     const int32_t t267 = ((int32_t)((kf_smull(p_sigma_meas, p_sigma_meas) + 536870912) >> 30));  /* angle_kf.py:360 Q1.30 */
     const int32_t t268 = ((int32_t)((((((int64_t)t238) * 4096) + ((int64_t)t267)) + 2048) >> 12));  /* angle_kf.py:160 Q13.18 */
     const int32_t t269_1 = ((int32_t)((((int64_t)t267) + 2048) >> 12));
@@ -377,6 +374,7 @@ void angle_ekf_q_update(angle_ekf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t322_1 = ((int32_t)((((int64_t)x_Pcw) + 1) >> 1));
     const int32_t t322 = (t33 ? t307 : t322_1);  /* angle_kf.py:363 Q5.26 */
     const int32_t t323 = (t33 ? t309 : t256);  /* angle_kf.py:363 Q9.22 */
+    const int x_initialised = (s->initialised != 0u);
     const int t324 = (!x_initialised);  /* angle_kf.py:305 */
     const int t325 = (t33 && t324);  /* angle_kf.py:305 */
     const int t326 = (t32 && x_initialised);  /* angle_kf.py:306 */
@@ -393,6 +391,7 @@ void angle_ekf_q_update(angle_ekf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t332 = (t325 ? t332_0 : t331);  /* angle_kf.py:313 Q12.19 */
     const int32_t t333_1 = ((int32_t)((((int64_t)x_omega) + 2048) >> 12));
     const int32_t t333 = (t326 ? t313 : t333_1);  /* angle_kf.py:313 Q17.14 */
+    const int32_t p_omega0 = s->params.omega0;
     const int32_t t334_0 = ((int32_t)((((int64_t)p_omega0) + 2048) >> 12));
     const int32_t t334 = (t325 ? t334_0 : t333);  /* angle_kf.py:313 Q17.14 */
     const int32_t t335 = ((-1677722 < t328) ? t328 : -1677722);  /* angle_kf.py:298 Q12.19 */
@@ -443,6 +442,7 @@ void angle_ekf_q_update(angle_ekf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t361 = (t325 ? 0 : t361_1);  /* angle_kf.py:314 Q4.27 */
     const int32_t t362 = (t326 ? t323 : x_Pww);  /* angle_kf.py:314 Q9.22 */
     const int32_t t364 = (t325 ? 104857600 : t362);  /* angle_kf.py:314 Q9.22 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t365 = kf_inc_if(x_rejected, t34);  /* angle_kf.py:316 */
     const int t366 = (x_initialised || t325);  /* angle_kf.py:318 */
     const int32_t t367 = ((0 < t344) ? t344 : 0);  /* angle_kf.py:104 Q13.18 */

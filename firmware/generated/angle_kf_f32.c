@@ -59,38 +59,35 @@ int angle_kf_f32_init(angle_kf_f32_state *s, const angle_kf_f32_params *p)
 void angle_kf_f32_update(angle_kf_f32_state *s, const kf_angle_input_f32 *in, angle_kf_f32_output *out)
 {
     const float u_angle = in->angle;
-    const int u_angle_valid = (in->angle_valid != 0u);
-    const float u_dt = in->dt;
-    const float p_sigma_meas = s->params.sigma_meas;
-    const float p_q_acc = s->params.q_acc;
-    const float x_theta = s->theta;
-    const float x_rate = s->rate;
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
-    const float x_Ptt = s->Ptt;
-    const float x_Ptr = s->Ptr;
-    const float x_Prr = s->Prr;
     const float t12 = fabsf(u_angle);  /* angle_kf.py:138 */
     const int t14 = (t12 <= 0x1.99999ap+1f);  /* angle_kf.py:138 */
+    const float u_dt = in->dt;
     const int t16 = (0.0f < u_dt);  /* angle_kf.py:138 */
     const int t18 = (u_dt <= 0x1.99999ap-3f);  /* angle_kf.py:138 */
     const int t19 = (t14 && t16);  /* angle_kf.py:138 */
     const int t20 = (t19 && t18);  /* angle_kf.py:138 */
+    const int u_angle_valid = (in->angle_valid != 0u);
     const int t21 = (t20 && u_angle_valid);  /* angle_kf.py:140 */
     const int t22 = (!t20);  /* angle_kf.py:141 */
     const float t23 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* angle_kf.py:142 */
     const float t24 = ((t23 < 0x1.99999ap-3f) ? t23 : 0x1.99999ap-3f);  /* angle_kf.py:142 */
+    const float x_rate = s->rate;
     const float t25 = (x_rate * t24);  /* angle_kf.py:195 */
+    const float x_theta = s->theta;
     const float t26 = (x_theta + t25);  /* angle_kf.py:195 */
+    const float p_q_acc = s->params.q_acc;
     const float t27 = (p_q_acc * t24);  /* angle_kf.py:147 */
     const float t28 = (t27 * t24);  /* angle_kf.py:148 */
     const float t29 = (t28 * t24);  /* angle_kf.py:148 */
     const float t31 = (t29 * 0x1.555556p-2f);  /* angle_kf.py:148 */
     const float t33 = (t28 * 0x1p-1f);  /* angle_kf.py:148 */
     const float t35 = (0x1p+1f * t24);  /* angle_kf.py:197 */
+    const float x_Ptr = s->Ptr;
     const float t36 = (t35 * x_Ptr);  /* angle_kf.py:197 */
+    const float x_Ptt = s->Ptt;
     const float t37 = (x_Ptt + t36);  /* angle_kf.py:197 */
     const float t38 = (t24 * t24);  /* angle_kf.py:197 */
+    const float x_Prr = s->Prr;
     const float t39 = (t38 * x_Prr);  /* angle_kf.py:197 */
     const float t40 = (t37 + t39);  /* angle_kf.py:197 */
     const float t41 = (t40 + t31);  /* angle_kf.py:197 */
@@ -100,6 +97,7 @@ void angle_kf_f32_update(angle_kf_f32_state *s, const kf_angle_input_f32 *in, an
     const float t45 = (x_Prr + t27);  /* angle_kf.py:199 */
     const float t47 = ((-0x1.99999ap+1f < t26) ? t26 : -0x1.99999ap+1f);  /* angle_kf.py:201 */
     const float t48 = ((t47 < 0x1.99999ap+1f) ? t47 : 0x1.99999ap+1f);  /* angle_kf.py:201 */
+    const float p_sigma_meas = s->params.sigma_meas;
     const float t49 = (p_sigma_meas * p_sigma_meas);  /* angle_kf.py:202 */
     const float t50 = (t41 + t49);  /* angle_kf.py:160 */
     const float t51 = ((t49 < t50) ? t50 : t49);  /* angle_kf.py:161 */
@@ -124,6 +122,7 @@ void angle_kf_f32_update(angle_kf_f32_state *s, const kf_angle_input_f32 *in, an
     const float t72 = (t21 ? t65 : t41);  /* angle_kf.py:205 */
     const float t73 = (t21 ? t67 : t44);  /* angle_kf.py:205 */
     const float t74 = (t21 ? t69 : t45);  /* angle_kf.py:205 */
+    const int x_initialised = (s->initialised != 0u);
     const int t75 = (!x_initialised);  /* angle_kf.py:207 */
     const int t76 = (t21 && t75);  /* angle_kf.py:207 */
     const int t77 = (t20 && x_initialised);  /* angle_kf.py:208 */
@@ -141,6 +140,7 @@ void angle_kf_f32_update(angle_kf_f32_state *s, const kf_angle_input_f32 *in, an
     const float t90 = ((t89 < 0x1.99999ap+1f) ? t89 : 0x1.99999ap+1f);  /* angle_kf.py:214 */
     const float t92 = ((-0x1.ep+4f < t81) ? t81 : -0x1.ep+4f);  /* angle_kf.py:215 */
     const float t94 = ((t92 < 0x1.ep+4f) ? t92 : 0x1.ep+4f);  /* angle_kf.py:215 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t95 = kf_inc_if(x_rejected, t22);  /* angle_kf.py:216 */
     const int t96 = (x_initialised || t76);  /* angle_kf.py:217 */
     const float t97 = ((0.0f < t83) ? t83 : 0.0f);  /* angle_kf.py:104 */

@@ -53,40 +53,37 @@ int angle_kf_q_init(angle_kf_q_state *s, const angle_kf_q_params *p)
 void angle_kf_q_update(angle_kf_q_state *s, const kf_angle_input_q *in, angle_kf_q_output *out)
 {
     const int32_t u_angle = in->angle;
-    const int u_angle_valid = (in->angle_valid != 0u);
-    const int32_t u_dt = in->dt;
-    const int32_t p_sigma_meas = s->params.sigma_meas;
-    const int32_t p_q_acc = s->params.q_acc;
-    const int32_t x_theta = s->theta;
-    const int32_t x_rate = s->rate;
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
-    const int32_t x_Ptt = s->Ptt;
-    const int32_t x_Ptr = s->Ptr;
-    const int32_t x_Prr = s->Prr;
     const int32_t t12 = ((int32_t)((((int64_t)u_angle) < 0) ? (-((int64_t)u_angle)) : ((int64_t)u_angle)));  /* angle_kf.py:138 Q3.28 */
     const int t14 = ((((int64_t)t12) * 2) <= ((int64_t)1717986918));  /* angle_kf.py:138 */
+    const int32_t u_dt = in->dt;
     const int t16 = ((((int64_t)0) * 4) < ((int64_t)u_dt));  /* angle_kf.py:138 */
     const int t18 = ((((int64_t)u_dt) * 2) <= ((int64_t)1717986918));  /* angle_kf.py:138 */
     const int t19 = (t14 && t16);  /* angle_kf.py:138 */
     const int t20 = (t19 && t18);  /* angle_kf.py:138 */
+    const int u_angle_valid = (in->angle_valid != 0u);
     const int t21 = (t20 && u_angle_valid);  /* angle_kf.py:140 */
     const int t22 = (!t20);  /* angle_kf.py:141 */
     const int32_t t23_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t23 = ((0 < t23_0) ? t23_0 : 0);  /* angle_kf.py:142 Q0.31 */
     const int32_t t24_0 = kf_sat((((int64_t)t23) * 4), 0, 1717986918);
     const int32_t t24 = ((t24_0 < 1717986918) ? t24_0 : 1717986918);  /* angle_kf.py:142 */
+    const int32_t x_rate = s->rate;
     const int32_t t25 = ((int32_t)((kf_smull(x_rate, t24) + 1073741824) >> 31));  /* angle_kf.py:195 Q3.28 */
+    const int32_t x_theta = s->theta;
     const int32_t t26 = ((int32_t)(((((int64_t)x_theta) + (((int64_t)t25) * 2)) + 2) >> 2));  /* angle_kf.py:195 Q4.27 */
+    const int32_t p_q_acc = s->params.q_acc;
     const int32_t t27 = ((int32_t)((kf_smull(p_q_acc, t24) + 1073741824) >> 31));  /* angle_kf.py:147 Q15.16 */
     const int32_t t28 = ((int32_t)((kf_smull(t27, t24) + 536870912) >> 30));  /* angle_kf.py:148 Q12.19 */
     const int32_t t29 = ((int32_t)((kf_smull(t28, t24) + 1073741824) >> 31));  /* angle_kf.py:148 Q10.21 */
     const int32_t t31 = ((int32_t)((kf_smull(t29, 1431655765) + 1073741824) >> 31));  /* angle_kf.py:148 Q9.22 */
     const int32_t t33 = ((int32_t)((kf_smull(t28, 1073741824) + 536870912) >> 30));  /* angle_kf.py:148 Q11.20 */
     const int32_t t35 = ((int32_t)((kf_smull(1073741824, t24) + 536870912) >> 30));  /* angle_kf.py:197 */
+    const int32_t x_Ptr = s->Ptr;
     const int32_t t36 = ((int32_t)((kf_smull(t35, x_Ptr) + 536870912) >> 30));  /* angle_kf.py:197 Q2.29 */
+    const int32_t x_Ptt = s->Ptt;
     const int32_t t37 = ((int32_t)(((((int64_t)x_Ptt) + (((int64_t)t36) * 8)) + 4) >> 3));  /* angle_kf.py:197 Q2.29 */
     const int32_t t38 = ((int32_t)((kf_smull(t24, t24) + 1073741824) >> 31));  /* angle_kf.py:197 */
+    const int32_t x_Prr = s->Prr;
     const int32_t t39 = ((int32_t)((kf_smull(t38, x_Prr) + 536870912) >> 30));  /* angle_kf.py:197 Q4.27 */
     const int32_t t40 = ((int32_t)(((((int64_t)t37) + (((int64_t)t39) * 4)) + 2) >> 2));  /* angle_kf.py:197 Q4.27 */
     const int32_t t41 = ((int32_t)(((((int64_t)t40) + (((int64_t)t31) * 32)) + 16) >> 5));  /* angle_kf.py:197 Q9.22 */
@@ -97,6 +94,7 @@ void angle_kf_q_update(angle_kf_q_state *s, const kf_angle_input_q *in, angle_kf
     const int32_t t47 = ((-429496729 < t26) ? t26 : -429496729);  /* angle_kf.py:201 Q4.27 */
     const int32_t t48_0 = kf_sat((((int64_t)t47) * 4), -1717986916, 1717986918);
     const int32_t t48 = ((t48_0 < 1717986918) ? t48_0 : 1717986918);  /* angle_kf.py:201 Q2.29 */
+    const int32_t p_sigma_meas = s->params.sigma_meas;
     const int32_t t49 = ((int32_t)((kf_smull(p_sigma_meas, p_sigma_meas) + 536870912) >> 30));  /* angle_kf.py:202 Q1.30 */
     const int32_t t50 = ((int32_t)((((((int64_t)t41) * 256) + ((int64_t)t49)) + 128) >> 8));  /* angle_kf.py:160 Q9.22 */
     const int32_t t51_1 = ((int32_t)((((int64_t)t49) + 128) >> 8));
@@ -123,6 +121,7 @@ void angle_kf_q_update(angle_kf_q_state *s, const kf_angle_input_q *in, angle_kf
     const int32_t t72 = (t21 ? t65 : t41);  /* angle_kf.py:205 Q9.22 */
     const int32_t t73 = (t21 ? t67 : t44);  /* angle_kf.py:205 Q12.19 */
     const int32_t t74 = (t21 ? t69 : t45);  /* angle_kf.py:205 Q15.16 */
+    const int x_initialised = (s->initialised != 0u);
     const int t75 = (!x_initialised);  /* angle_kf.py:207 */
     const int t76 = (t21 && t75);  /* angle_kf.py:207 */
     const int t77 = (t20 && x_initialised);  /* angle_kf.py:208 */
@@ -150,6 +149,7 @@ void angle_kf_q_update(angle_kf_q_state *s, const kf_angle_input_q *in, angle_kf
     const int32_t t92 = ((-491520 < t81) ? t81 : -491520);  /* angle_kf.py:215 Q17.14 */
     const int32_t t94_0 = kf_sat((((int64_t)t92) * 4096), -2013265920, 2013265920);
     const int32_t t94 = ((t94_0 < 2013265920) ? t94_0 : 2013265920);  /* angle_kf.py:215 Q5.26 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t95 = kf_inc_if(x_rejected, t22);  /* angle_kf.py:216 */
     const int t96 = (x_initialised || t76);  /* angle_kf.py:217 */
     const int32_t t97 = ((0 < t83) ? t83 : 0);  /* angle_kf.py:104 Q9.22 */

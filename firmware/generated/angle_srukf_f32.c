@@ -84,67 +84,60 @@ int angle_srukf_f32_init(angle_srukf_f32_state *s, const angle_srukf_f32_params 
 void angle_srukf_f32_update(angle_srukf_f32_state *s, const kf_angle_input_f32 *in, angle_srukf_f32_output *out)
 {
     const float u_angle = in->angle;
-    const int u_angle_valid = (in->angle_valid != 0u);
-    const float u_dt = in->dt;
-    const float p_sigma_meas = s->params.sigma_meas;
-    const float p_q_acc = s->params.q_acc;
-    const float p_q_center = s->params.q_center;
-    const float p_q_omega = s->params.q_omega;
-    const float p_omega0 = s->params.omega0;
-    const float p_w0 = s->params.w0;
-    const float x_theta = s->theta;
-    const float x_rate = s->rate;
-    const float x_center = s->center;
-    const float x_omega = s->omega;
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
-    const float x_Stt = s->Stt;
-    const float x_Srt = s->Srt;
-    const float x_Srr = s->Srr;
-    const float x_Sct = s->Sct;
-    const float x_Scr = s->Scr;
-    const float x_Scc = s->Scc;
-    const float x_Swt = s->Swt;
-    const float x_Swr = s->Swr;
-    const float x_Swc = s->Swc;
-    const float x_Sww = s->Sww;
     const float t25 = fabsf(u_angle);  /* angle_kf.py:138 */
     const int t27 = (t25 <= 0x1.99999ap+1f);  /* angle_kf.py:138 */
+    const float u_dt = in->dt;
     const int t29 = (0.0f < u_dt);  /* angle_kf.py:138 */
     const int t31 = (u_dt <= 0x1.99999ap-3f);  /* angle_kf.py:138 */
     const int t32 = (t27 && t29);  /* angle_kf.py:138 */
     const int t33 = (t32 && t31);  /* angle_kf.py:138 */
+    const int u_angle_valid = (in->angle_valid != 0u);
     const int t34 = (t33 && u_angle_valid);  /* angle_kf.py:140 */
     const int t35 = (!t33);  /* angle_kf.py:141 */
     const float t36 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* angle_kf.py:142 */
     const float t37 = ((t36 < 0x1.99999ap-3f) ? t36 : 0x1.99999ap-3f);  /* angle_kf.py:142 */
+    const float p_w0 = s->params.w0;
     const float t39 = (0x1p+0f - p_w0);  /* angle_kf.py:403 */
     const float t41 = (t39 * 0x1p-3f);  /* angle_kf.py:403 */
     const float t43 = ((0x1.99999ap-4f < t39) ? t39 : 0x1.99999ap-4f);  /* angle_kf.py:404 */
     const float t45 = (0x1p+2f / t43);  /* angle_kf.py:404 */
     const float t46 = sqrtf(t45);  /* angle_kf.py:404 */
+    const float x_Stt = s->Stt;
     const float t47 = (t46 * x_Stt);  /* angle_kf.py:397 */
+    const float x_theta = s->theta;
     const float t48 = (x_theta + t47);  /* angle_kf.py:397 */
+    const float x_Srt = s->Srt;
     const float t49 = (t46 * x_Srt);  /* angle_kf.py:397 */
+    const float x_rate = s->rate;
     const float t50 = (x_rate + t49);  /* angle_kf.py:397 */
+    const float x_Sct = s->Sct;
     const float t51 = (t46 * x_Sct);  /* angle_kf.py:397 */
+    const float x_center = s->center;
     const float t52 = (x_center + t51);  /* angle_kf.py:397 */
+    const float x_Swt = s->Swt;
     const float t53 = (t46 * x_Swt);  /* angle_kf.py:397 */
+    const float x_omega = s->omega;
     const float t54 = (x_omega + t53);  /* angle_kf.py:397 */
     const float t55 = (t46 * 0.0f);  /* angle_kf.py:397 */
     const float t56 = (x_theta + t55);  /* angle_kf.py:397 */
+    const float x_Srr = s->Srr;
     const float t57 = (t46 * x_Srr);  /* angle_kf.py:397 */
     const float t58 = (x_rate + t57);  /* angle_kf.py:397 */
+    const float x_Scr = s->Scr;
     const float t59 = (t46 * x_Scr);  /* angle_kf.py:397 */
     const float t60 = (x_center + t59);  /* angle_kf.py:397 */
+    const float x_Swr = s->Swr;
     const float t61 = (t46 * x_Swr);  /* angle_kf.py:397 */
     const float t62 = (x_omega + t61);  /* angle_kf.py:397 */
     const float t63 = (x_rate + t55);  /* angle_kf.py:397 */
+    const float x_Scc = s->Scc;
     const float t64 = (t46 * x_Scc);  /* angle_kf.py:397 */
     const float t65 = (x_center + t64);  /* angle_kf.py:397 */
+    const float x_Swc = s->Swc;
     const float t66 = (t46 * x_Swc);  /* angle_kf.py:397 */
     const float t67 = (x_omega + t66);  /* angle_kf.py:397 */
     const float t68 = (x_center + t55);  /* angle_kf.py:397 */
+    const float x_Sww = s->Sww;
     const float t69 = (t46 * x_Sww);  /* angle_kf.py:397 */
     const float t70 = (x_omega + t69);  /* angle_kf.py:397 */
     const float t72 = (-0x1p+0f * t46);  /* angle_kf.py:397 */
@@ -995,6 +988,7 @@ void angle_srukf_f32_update(angle_srukf_f32_state *s, const kf_angle_input_f32 *
     const float t919 = (t887 * t883);  /* angle_kf.py:481 */
     const float t920 = (t887 * t884);  /* angle_kf.py:481 */
     const float t921 = (t887 * t885);  /* angle_kf.py:481 */
+    const float p_q_acc = s->params.q_acc;
     const float t922 = (p_q_acc * t37);  /* angle_kf.py:482 */
     const float t923 = ((0.0f < t922) ? t922 : 0.0f);  /* angle_kf.py:482 */
     const float t924 = sqrtf(t923);  /* angle_kf.py:482 */
@@ -1002,9 +996,11 @@ void angle_srukf_f32_update(angle_srukf_f32_state *s, const kf_angle_input_f32 *
     const float t927 = (t925 * 0x1.279a74p-1f);  /* angle_kf.py:483 */
     const float t929 = (t924 * 0x1.bb67aep-1f);  /* angle_kf.py:483 */
     const float t930 = (t924 * 0x1p-1f);  /* angle_kf.py:484 */
+    const float p_q_center = s->params.q_center;
     const float t931 = (p_q_center * t37);  /* angle_kf.py:485 */
     const float t932 = ((0.0f < t931) ? t931 : 0.0f);  /* angle_kf.py:485 */
     const float t933 = sqrtf(t932);  /* angle_kf.py:485 */
+    const float p_q_omega = s->params.q_omega;
     const float t934 = (p_q_omega * t37);  /* angle_kf.py:486 */
     const float t935 = ((0.0f < t934) ? t934 : 0.0f);  /* angle_kf.py:486 */
     const float t936 = sqrtf(t935);  /* angle_kf.py:486 */
@@ -2296,6 +2292,7 @@ void angle_srukf_f32_update(angle_srukf_f32_state *s, const kf_angle_input_f32 *
     const float t2378 = ((t2377 < 0x1.99999ap+1f) ? t2377 : 0x1.99999ap+1f);  /* angle_kf.py:299 */
     const float t2379 = ((0x1.99999ap-3f < t849) ? t849 : 0x1.99999ap-3f);  /* angle_kf.py:299 */
     const float t2380 = ((t2379 < 0x1.ep+4f) ? t2379 : 0x1.ep+4f);  /* angle_kf.py:299 */
+    const float p_sigma_meas = s->params.sigma_meas;
     const float t2381 = (p_sigma_meas * p_sigma_meas);  /* angle_kf.py:496 */
     const float t2382 = (t1405 * t1405);  /* angle_kf.py:497 */
     const float t2383 = (t2382 + t2381);  /* angle_kf.py:497 */
@@ -2332,6 +2329,7 @@ void angle_srukf_f32_update(angle_srukf_f32_state *s, const kf_angle_input_f32 *
     const float t2423 = (t34 ? t2412 : t1410);  /* angle_kf.py:510 */
     const float t2424 = (t34 ? t2414 : t1420);  /* angle_kf.py:510 */
     const float t2425 = (t34 ? t2416 : t1430);  /* angle_kf.py:510 */
+    const int x_initialised = (s->initialised != 0u);
     const int t2426 = (!x_initialised);  /* angle_kf.py:305 */
     const int t2427 = (t34 && t2426);  /* angle_kf.py:305 */
     const int t2428 = (t33 && x_initialised);  /* angle_kf.py:306 */
@@ -2342,6 +2340,7 @@ void angle_srukf_f32_update(angle_srukf_f32_state *s, const kf_angle_input_f32 *
     const float t2433 = (t2428 ? t2420 : x_center);  /* angle_kf.py:313 */
     const float t2434 = (t2427 ? u_angle : t2433);  /* angle_kf.py:313 */
     const float t2435 = (t2428 ? t2421 : x_omega);  /* angle_kf.py:313 */
+    const float p_omega0 = s->params.omega0;
     const float t2436 = (t2427 ? p_omega0 : t2435);  /* angle_kf.py:313 */
     const float t2437 = ((-0x1.99999ap+1f < t2430) ? t2430 : -0x1.99999ap+1f);  /* angle_kf.py:298 */
     const float t2438 = ((t2437 < 0x1.99999ap+1f) ? t2437 : 0x1.99999ap+1f);  /* angle_kf.py:298 */
@@ -2371,6 +2370,7 @@ void angle_srukf_f32_update(angle_srukf_f32_state *s, const kf_angle_input_f32 *
     const float t2463 = (t2427 ? 0.0f : t2462);  /* angle_kf.py:314 */
     const float t2464 = (t2428 ? t2359 : x_Sww);  /* angle_kf.py:314 */
     const float t2466 = (t2427 ? 0x1.4p+2f : t2464);  /* angle_kf.py:314 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t2467 = kf_inc_if(x_rejected, t35);  /* angle_kf.py:316 */
     const int t2468 = (x_initialised || t2427);  /* angle_kf.py:318 */
     const float t2469 = ((0.0f < t2446) ? t2446 : 0.0f);  /* angle_kf.py:123 */

@@ -78,69 +78,62 @@ int angle_srukf_q_init(angle_srukf_q_state *s, const angle_srukf_q_params *p)
 void angle_srukf_q_update(angle_srukf_q_state *s, const kf_angle_input_q *in, angle_srukf_q_output *out)
 {
     const int32_t u_angle = in->angle;
-    const int u_angle_valid = (in->angle_valid != 0u);
-    const int32_t u_dt = in->dt;
-    const int32_t p_sigma_meas = s->params.sigma_meas;
-    const int32_t p_q_acc = s->params.q_acc;
-    const int32_t p_q_center = s->params.q_center;
-    const int32_t p_q_omega = s->params.q_omega;
-    const int32_t p_omega0 = s->params.omega0;
-    const int32_t p_w0 = s->params.w0;
-    const int32_t x_theta = s->theta;
-    const int32_t x_rate = s->rate;
-    const int32_t x_center = s->center;
-    const int32_t x_omega = s->omega;
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
-    const int32_t x_Stt = s->Stt;
-    const int32_t x_Srt = s->Srt;
-    const int32_t x_Srr = s->Srr;
-    const int32_t x_Sct = s->Sct;
-    const int32_t x_Scr = s->Scr;
-    const int32_t x_Scc = s->Scc;
-    const int32_t x_Swt = s->Swt;
-    const int32_t x_Swr = s->Swr;
-    const int32_t x_Swc = s->Swc;
-    const int32_t x_Sww = s->Sww;
     const int32_t t25 = ((int32_t)((((int64_t)u_angle) < 0) ? (-((int64_t)u_angle)) : ((int64_t)u_angle)));  /* angle_kf.py:138 Q3.28 */
     const int t27 = ((((int64_t)t25) * 2) <= ((int64_t)1717986918));  /* angle_kf.py:138 */
+    const int32_t u_dt = in->dt;
     const int t29 = ((((int64_t)0) * 4) < ((int64_t)u_dt));  /* angle_kf.py:138 */
     const int t31 = ((((int64_t)u_dt) * 2) <= ((int64_t)1717986918));  /* angle_kf.py:138 */
     const int t32 = (t27 && t29);  /* angle_kf.py:138 */
     const int t33 = (t32 && t31);  /* angle_kf.py:138 */
+    const int u_angle_valid = (in->angle_valid != 0u);
     const int t34 = (t33 && u_angle_valid);  /* angle_kf.py:140 */
     const int t35 = (!t33);  /* angle_kf.py:141 */
     const int32_t t36_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t36 = ((0 < t36_0) ? t36_0 : 0);  /* angle_kf.py:142 Q0.31 */
     const int32_t t37_0 = kf_sat((((int64_t)t36) * 4), 0, 1717986918);
     const int32_t t37 = ((t37_0 < 1717986918) ? t37_0 : 1717986918);  /* angle_kf.py:142 */
+    const int32_t p_w0 = s->params.w0;
     const int32_t t39 = ((int32_t)((((((int64_t)1073741824) * 2) - ((int64_t)p_w0)) + 1) >> 1));  /* angle_kf.py:403 Q1.30 */
     const int32_t t41 = ((int32_t)((kf_smull(t39, 1073741824) + 536870912) >> 30));  /* angle_kf.py:403 */
     const int32_t t43 = ((107374183 < t39) ? t39 : 107374183);  /* angle_kf.py:404 Q1.30 */
     const int32_t t45 = kf_div_rnd((((int64_t)1073741824) * 134217728), ((int64_t)t43), 134217728, 1342177280);  /* angle_kf.py:404 Q6.25 */
     const int32_t t46 = ((int32_t)kf_isqrt_rnd((((int64_t)t45) * INT64_C(2147483648))));  /* angle_kf.py:404 Q3.28 */
+    const int32_t x_Stt = s->Stt;
     const int32_t t47 = ((int32_t)((kf_smull(t46, x_Stt) + 536870912) >> 30));  /* angle_kf.py:397 Q2.29 */
+    const int32_t x_theta = s->theta;
     const int32_t t48 = ((int32_t)(((((int64_t)x_theta) + ((int64_t)t47)) + 1) >> 1));  /* angle_kf.py:397 Q3.28 */
+    const int32_t x_Srt = s->Srt;
     const int32_t t49 = ((int32_t)((kf_smull(t46, x_Srt) + 536870912) >> 30));  /* angle_kf.py:397 Q7.24 */
+    const int32_t x_rate = s->rate;
     const int32_t t50 = ((int32_t)(((((int64_t)x_rate) + (((int64_t)t49) * 4)) + 4) >> 3));  /* angle_kf.py:397 Q8.23 */
+    const int32_t x_Sct = s->Sct;
     const int32_t t51 = ((int32_t)((kf_smull(t46, x_Sct) + 536870912) >> 30));  /* angle_kf.py:397 Q2.29 */
+    const int32_t x_center = s->center;
     const int32_t t52 = ((int32_t)(((((int64_t)x_center) + ((int64_t)t51)) + 1) >> 1));  /* angle_kf.py:397 Q3.28 */
+    const int32_t x_Swt = s->Swt;
     const int32_t t53 = ((int32_t)((kf_smull(t46, x_Swt) + 536870912) >> 30));  /* angle_kf.py:397 Q7.24 */
+    const int32_t x_omega = s->omega;
     const int32_t t54 = ((int32_t)(((((int64_t)x_omega) + (((int64_t)t53) * 4)) + 4) >> 3));  /* angle_kf.py:397 Q8.23 */
     const int32_t t55 = ((int32_t)((kf_smull(t46, 0) + 134217728) >> 28));  /* angle_kf.py:397 Q1.30 */
     const int32_t t56 = ((int32_t)((((((int64_t)x_theta) * 2) + ((int64_t)t55)) + 1) >> 1));  /* angle_kf.py:397 Q2.29 */
+    const int32_t x_Srr = s->Srr;
     const int32_t t57 = ((int32_t)((kf_smull(t46, x_Srr) + 536870912) >> 30));  /* angle_kf.py:397 Q7.24 */
     const int32_t t58 = ((int32_t)(((((int64_t)x_rate) + (((int64_t)t57) * 4)) + 4) >> 3));  /* angle_kf.py:397 Q8.23 */
+    const int32_t x_Scr = s->Scr;
     const int32_t t59 = ((int32_t)((kf_smull(t46, x_Scr) + 536870912) >> 30));  /* angle_kf.py:397 Q2.29 */
     const int32_t t60 = ((int32_t)(((((int64_t)x_center) + ((int64_t)t59)) + 1) >> 1));  /* angle_kf.py:397 Q3.28 */
+    const int32_t x_Swr = s->Swr;
     const int32_t t61 = ((int32_t)((kf_smull(t46, x_Swr) + 536870912) >> 30));  /* angle_kf.py:397 Q7.24 */
     const int32_t t62 = ((int32_t)(((((int64_t)x_omega) + (((int64_t)t61) * 4)) + 4) >> 3));  /* angle_kf.py:397 Q8.23 */
     const int32_t t63 = ((int32_t)((((((int64_t)x_rate) * 16) + ((int64_t)t55)) + 8) >> 4));  /* angle_kf.py:397 Q5.26 */
+    const int32_t x_Scc = s->Scc;
     const int32_t t64 = ((int32_t)((kf_smull(t46, x_Scc) + 536870912) >> 30));  /* angle_kf.py:397 Q2.29 */
     const int32_t t65 = ((int32_t)(((((int64_t)x_center) + ((int64_t)t64)) + 1) >> 1));  /* angle_kf.py:397 Q3.28 */
+    const int32_t x_Swc = s->Swc;
     const int32_t t66 = ((int32_t)((kf_smull(t46, x_Swc) + 536870912) >> 30));  /* angle_kf.py:397 Q7.24 */
     const int32_t t67 = ((int32_t)(((((int64_t)x_omega) + (((int64_t)t66) * 4)) + 4) >> 3));  /* angle_kf.py:397 Q8.23 */
     const int32_t t68 = ((int32_t)((((((int64_t)x_center) * 2) + ((int64_t)t55)) + 1) >> 1));  /* angle_kf.py:397 Q2.29 */
+    const int32_t x_Sww = s->Sww;
     const int32_t t69 = ((int32_t)((kf_smull(t46, x_Sww) + 536870912) >> 30));  /* angle_kf.py:397 Q7.24 */
     const int32_t t70 = ((int32_t)(((((int64_t)x_omega) + (((int64_t)t69) * 4)) + 4) >> 3));  /* angle_kf.py:397 Q8.23 */
     const int32_t t72 = ((int32_t)((kf_smull(-1073741824, t46) + 536870912) >> 30));  /* angle_kf.py:397 Q3.28 */
@@ -1026,6 +1019,7 @@ void angle_srukf_q_update(angle_srukf_q_state *s, const kf_angle_input_q *in, an
     const int32_t t919 = ((int32_t)((kf_smull(t887, t883) + 1073741824) >> 31));  /* angle_kf.py:481 Q9.22 */
     const int32_t t920 = ((int32_t)((kf_smull(t887, t884) + 536870912) >> 30));  /* angle_kf.py:481 Q2.29 */
     const int32_t t921 = ((int32_t)((kf_smull(t887, t885) + 1073741824) >> 31));  /* angle_kf.py:481 Q5.26 */
+    const int32_t p_q_acc = s->params.q_acc;
     const int32_t t922 = ((int32_t)((kf_smull(p_q_acc, t37) + 536870912) >> 30));  /* angle_kf.py:482 Q11.20 */
     const int32_t t923 = ((0 < t922) ? t922 : 0);  /* angle_kf.py:482 Q11.20 */
     const int32_t t924 = ((int32_t)kf_isqrt_rnd((((int64_t)t923) * 1073741824)));  /* angle_kf.py:482 Q6.25 */
@@ -1033,9 +1027,11 @@ void angle_srukf_q_update(angle_srukf_q_state *s, const kf_angle_input_q *in, an
     const int32_t t927 = ((int32_t)((kf_smull(t925, 1239850262) + 536870912) >> 30));  /* angle_kf.py:483 Q3.28 */
     const int32_t t929 = ((int32_t)((kf_smull(t924, 1859775393) + 1073741824) >> 31));  /* angle_kf.py:483 Q6.25 */
     const int32_t t930 = ((int32_t)((kf_smull(t924, 1073741824) + 536870912) >> 30));  /* angle_kf.py:484 Q5.26 */
+    const int32_t p_q_center = s->params.q_center;
     const int32_t t931 = ((int32_t)((kf_smull(p_q_center, t37) + 1073741824) >> 31));  /* angle_kf.py:485 Q2.29 */
     const int32_t t932 = ((0 < t931) ? t931 : 0);  /* angle_kf.py:485 Q2.29 */
     const int32_t t933 = ((int32_t)kf_isqrt_rnd((((int64_t)t932) * INT64_C(2147483648))));  /* angle_kf.py:485 Q1.30 */
+    const int32_t p_q_omega = s->params.q_omega;
     const int32_t t934 = ((int32_t)((kf_smull(p_q_omega, t37) + 1073741824) >> 31));  /* angle_kf.py:486 Q5.26 */
     const int32_t t935 = ((0 < t934) ? t934 : 0);  /* angle_kf.py:486 Q5.26 */
     const int32_t t936 = ((int32_t)kf_isqrt_rnd((((int64_t)t935) * 1073741824)));  /* angle_kf.py:486 Q3.28 */
@@ -2182,6 +2178,7 @@ void angle_srukf_q_update(angle_srukf_q_state *s, const kf_angle_input_q *in, an
     const int32_t t2379 = ((6710886 < t849) ? t849 : 6710886);  /* angle_kf.py:299 Q6.25 */
     const int32_t t2380_0 = kf_sat((((int64_t)t2379) * 2), 13421772, 2013265920);
     const int32_t t2380 = ((t2380_0 < 2013265920) ? t2380_0 : 2013265920);  /* angle_kf.py:299 Q5.26 */
+    const int32_t p_sigma_meas = s->params.sigma_meas;
     const int32_t t2381 = ((int32_t)((kf_smull(p_sigma_meas, p_sigma_meas) + 536870912) >> 30));  /* angle_kf.py:496 Q1.30 */
     const int32_t t2382 = ((int32_t)((kf_smull(t1406, t1406) + 536870912) >> 30));  /* angle_kf.py:497 Q1.30 */
     const int32_t t2383 = ((int32_t)(((((int64_t)t2382) + ((int64_t)t2381)) + 1) >> 1));  /* angle_kf.py:497 Q2.29 */
@@ -2222,6 +2219,7 @@ void angle_srukf_q_update(angle_srukf_q_state *s, const kf_angle_input_q *in, an
     const int32_t t2423 = (t34 ? t2412 : t1411);  /* angle_kf.py:510 Q6.25 */
     const int32_t t2424 = (t34 ? t2414 : t1421);  /* angle_kf.py:510 Q1.30 */
     const int32_t t2425 = (t34 ? t2416 : t1431);  /* angle_kf.py:510 Q6.25 */
+    const int x_initialised = (s->initialised != 0u);
     const int t2426 = (!x_initialised);  /* angle_kf.py:305 */
     const int t2427 = (t34 && t2426);  /* angle_kf.py:305 */
     const int t2428 = (t33 && x_initialised);  /* angle_kf.py:306 */
@@ -2238,6 +2236,7 @@ void angle_srukf_q_update(angle_srukf_q_state *s, const kf_angle_input_q *in, an
     const int32_t t2434 = (t2427 ? t2434_0 : t2433);  /* angle_kf.py:313 Q12.19 */
     const int32_t t2435_1 = ((int32_t)((((int64_t)x_omega) + 2048) >> 12));
     const int32_t t2435 = (t2428 ? t2421 : t2435_1);  /* angle_kf.py:313 Q17.14 */
+    const int32_t p_omega0 = s->params.omega0;
     const int32_t t2436_0 = ((int32_t)((((int64_t)p_omega0) + 2048) >> 12));
     const int32_t t2436 = (t2427 ? t2436_0 : t2435);  /* angle_kf.py:313 Q17.14 */
     const int32_t t2437 = ((-1677722 < t2430) ? t2430 : -1677722);  /* angle_kf.py:298 Q12.19 */
@@ -2288,6 +2287,7 @@ void angle_srukf_q_update(angle_srukf_q_state *s, const kf_angle_input_q *in, an
     const int32_t t2464_1 = ((int32_t)((((int64_t)x_Sww) + 1) >> 1));
     const int32_t t2464 = (t2428 ? t2360 : t2464_1);  /* angle_kf.py:314 Q6.25 */
     const int32_t t2466 = (t2427 ? 167772160 : t2464);  /* angle_kf.py:314 Q6.25 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t2467 = kf_inc_if(x_rejected, t35);  /* angle_kf.py:316 */
     const int t2468 = (x_initialised || t2427);  /* angle_kf.py:318 */
     const int32_t t2469 = ((0 < t2446) ? t2446 : 0);  /* angle_kf.py:123 Q1.30 */

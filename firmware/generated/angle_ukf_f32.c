@@ -84,58 +84,44 @@ int angle_ukf_f32_init(angle_ukf_f32_state *s, const angle_ukf_f32_params *p)
 void angle_ukf_f32_update(angle_ukf_f32_state *s, const kf_angle_input_f32 *in, angle_ukf_f32_output *out)
 {
     const float u_angle = in->angle;
-    const int u_angle_valid = (in->angle_valid != 0u);
-    const float u_dt = in->dt;
-    const float p_sigma_meas = s->params.sigma_meas;
-    const float p_q_acc = s->params.q_acc;
-    const float p_q_center = s->params.q_center;
-    const float p_q_omega = s->params.q_omega;
-    const float p_omega0 = s->params.omega0;
-    const float p_w0 = s->params.w0;
-    const float x_theta = s->theta;
-    const float x_rate = s->rate;
-    const float x_center = s->center;
-    const float x_omega = s->omega;
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
-    const float x_Ptt = s->Ptt;
-    const float x_Ptr = s->Ptr;
-    const float x_Ptc = s->Ptc;
-    const float x_Ptw = s->Ptw;
-    const float x_Prr = s->Prr;
-    const float x_Prc = s->Prc;
-    const float x_Prw = s->Prw;
-    const float x_Pcc = s->Pcc;
-    const float x_Pcw = s->Pcw;
-    const float x_Pww = s->Pww;
     const float t25 = fabsf(u_angle);  /* angle_kf.py:138 */
     const int t27 = (t25 <= 0x1.99999ap+1f);  /* angle_kf.py:138 */
+    const float u_dt = in->dt;
     const int t29 = (0.0f < u_dt);  /* angle_kf.py:138 */
     const int t31 = (u_dt <= 0x1.99999ap-3f);  /* angle_kf.py:138 */
     const int t32 = (t27 && t29);  /* angle_kf.py:138 */
     const int t33 = (t32 && t31);  /* angle_kf.py:138 */
+    const int u_angle_valid = (in->angle_valid != 0u);
     const int t34 = (t33 && u_angle_valid);  /* angle_kf.py:140 */
     const int t35 = (!t33);  /* angle_kf.py:141 */
     const float t36 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* angle_kf.py:142 */
     const float t37 = ((t36 < 0x1.99999ap-3f) ? t36 : 0x1.99999ap-3f);  /* angle_kf.py:142 */
+    const float x_Ptt = s->Ptt;
     const float t39 = ((0x1.12e0bep-30f < x_Ptt) ? x_Ptt : 0x1.12e0bep-30f);  /* angle_kf.py:381 */
     const float t40 = sqrtf(t39);  /* angle_kf.py:381 */
     const float t43 = (0x1p+0f / t40);  /* angle_kf.py:383 */
+    const float x_Ptr = s->Ptr;
     const float t44 = (x_Ptr * t43);  /* angle_kf.py:388 */
+    const float x_Ptc = s->Ptc;
     const float t46 = (x_Ptc * t43);  /* angle_kf.py:388 */
+    const float x_Ptw = s->Ptw;
     const float t48 = (x_Ptw * t43);  /* angle_kf.py:388 */
     const float t50 = (t44 * t44);  /* angle_kf.py:380 */
+    const float x_Prr = s->Prr;
     const float t51 = (x_Prr - t50);  /* angle_kf.py:380 */
     const float t52 = ((0x1.12e0bep-30f < t51) ? t51 : 0x1.12e0bep-30f);  /* angle_kf.py:381 */
     const float t53 = sqrtf(t52);  /* angle_kf.py:381 */
     const float t55 = (0x1p+0f / t53);  /* angle_kf.py:383 */
     const float t56 = (t46 * t44);  /* angle_kf.py:387 */
+    const float x_Prc = s->Prc;
     const float t57 = (x_Prc - t56);  /* angle_kf.py:387 */
     const float t58 = (t57 * t55);  /* angle_kf.py:388 */
     const float t60 = (t48 * t44);  /* angle_kf.py:387 */
+    const float x_Prw = s->Prw;
     const float t61 = (x_Prw - t60);  /* angle_kf.py:387 */
     const float t62 = (t61 * t55);  /* angle_kf.py:388 */
     const float t64 = (t46 * t46);  /* angle_kf.py:380 */
+    const float x_Pcc = s->Pcc;
     const float t65 = (x_Pcc - t64);  /* angle_kf.py:380 */
     const float t66 = (t58 * t58);  /* angle_kf.py:380 */
     const float t67 = (t65 - t66);  /* angle_kf.py:380 */
@@ -143,11 +129,13 @@ void angle_ukf_f32_update(angle_ukf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t69 = sqrtf(t68);  /* angle_kf.py:381 */
     const float t71 = (0x1p+0f / t69);  /* angle_kf.py:383 */
     const float t72 = (t48 * t46);  /* angle_kf.py:387 */
+    const float x_Pcw = s->Pcw;
     const float t73 = (x_Pcw - t72);  /* angle_kf.py:387 */
     const float t74 = (t62 * t58);  /* angle_kf.py:387 */
     const float t75 = (t73 - t74);  /* angle_kf.py:387 */
     const float t76 = (t75 * t71);  /* angle_kf.py:388 */
     const float t78 = (t48 * t48);  /* angle_kf.py:380 */
+    const float x_Pww = s->Pww;
     const float t79 = (x_Pww - t78);  /* angle_kf.py:380 */
     const float t80 = (t62 * t62);  /* angle_kf.py:380 */
     const float t81 = (t79 - t80);  /* angle_kf.py:380 */
@@ -155,18 +143,23 @@ void angle_ukf_f32_update(angle_ukf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t83 = (t81 - t82);  /* angle_kf.py:380 */
     const float t84 = ((0x1.12e0bep-30f < t83) ? t83 : 0x1.12e0bep-30f);  /* angle_kf.py:381 */
     const float t85 = sqrtf(t84);  /* angle_kf.py:381 */
+    const float p_w0 = s->params.w0;
     const float t87 = (0x1p+0f - p_w0);  /* angle_kf.py:403 */
     const float t89 = (t87 * 0x1p-3f);  /* angle_kf.py:403 */
     const float t91 = ((0x1.99999ap-4f < t87) ? t87 : 0x1.99999ap-4f);  /* angle_kf.py:404 */
     const float t93 = (0x1p+2f / t91);  /* angle_kf.py:404 */
     const float t94 = sqrtf(t93);  /* angle_kf.py:404 */
     const float t95 = (t94 * t40);  /* angle_kf.py:397 */
+    const float x_theta = s->theta;
     const float t96 = (x_theta + t95);  /* angle_kf.py:397 */
     const float t97 = (t94 * t44);  /* angle_kf.py:397 */
+    const float x_rate = s->rate;
     const float t98 = (x_rate + t97);  /* angle_kf.py:397 */
     const float t99 = (t94 * t46);  /* angle_kf.py:397 */
+    const float x_center = s->center;
     const float t100 = (x_center + t99);  /* angle_kf.py:397 */
     const float t101 = (t94 * t48);  /* angle_kf.py:397 */
+    const float x_omega = s->omega;
     const float t102 = (x_omega + t101);  /* angle_kf.py:397 */
     const float t103 = (t94 * 0.0f);  /* angle_kf.py:397 */
     const float t104 = (x_theta + t103);  /* angle_kf.py:397 */
@@ -996,12 +989,15 @@ void angle_ukf_f32_update(angle_ukf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t932 = (t858 - t878);  /* angle_kf.py:422 */
     const float t933 = (t142 - t888);  /* angle_kf.py:422 */
     const float t934 = (t783 - t898);  /* angle_kf.py:422 */
+    const float p_q_acc = s->params.q_acc;
     const float t935 = (p_q_acc * t37);  /* angle_kf.py:147 */
     const float t936 = (t935 * t37);  /* angle_kf.py:148 */
     const float t937 = (t936 * t37);  /* angle_kf.py:148 */
     const float t938 = (t937 * 0x1.555556p-2f);  /* angle_kf.py:148 */
     const float t939 = (t936 * 0x1p-1f);  /* angle_kf.py:148 */
+    const float p_q_center = s->params.q_center;
     const float t940 = (p_q_center * t37);  /* angle_kf.py:293 */
+    const float p_q_omega = s->params.q_omega;
     const float t941 = (p_q_omega * t37);  /* angle_kf.py:294 */
     const float t942 = (t899 * t899);  /* angle_kf.py:447 */
     const float t943 = (p_w0 * t942);  /* angle_kf.py:447 */
@@ -1206,6 +1202,7 @@ void angle_ukf_f32_update(angle_ukf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t1144 = ((t1143 < 0x1.99999ap+1f) ? t1143 : 0x1.99999ap+1f);  /* angle_kf.py:299 */
     const float t1145 = ((0x1.99999ap-3f < t898) ? t898 : 0x1.99999ap-3f);  /* angle_kf.py:299 */
     const float t1146 = ((t1145 < 0x1.ep+4f) ? t1145 : 0x1.ep+4f);  /* angle_kf.py:299 */
+    const float p_sigma_meas = s->params.sigma_meas;
     const float t1147 = (p_sigma_meas * p_sigma_meas);  /* angle_kf.py:453 */
     const float t1148 = (t961 + t1147);  /* angle_kf.py:160 */
     const float t1149 = ((t1147 < t1148) ? t1148 : t1147);  /* angle_kf.py:161 */
@@ -1259,6 +1256,7 @@ void angle_ukf_f32_update(angle_ukf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t1201 = (t34 ? t1185 : t1097);  /* angle_kf.py:457 */
     const float t1202 = (t34 ? t1187 : t1116);  /* angle_kf.py:457 */
     const float t1203 = (t34 ? t1189 : t1136);  /* angle_kf.py:457 */
+    const int x_initialised = (s->initialised != 0u);
     const int t1204 = (!x_initialised);  /* angle_kf.py:305 */
     const int t1205 = (t34 && t1204);  /* angle_kf.py:305 */
     const int t1206 = (t33 && x_initialised);  /* angle_kf.py:306 */
@@ -1269,6 +1267,7 @@ void angle_ukf_f32_update(angle_ukf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t1211 = (t1206 ? t1192 : x_center);  /* angle_kf.py:313 */
     const float t1212 = (t1205 ? u_angle : t1211);  /* angle_kf.py:313 */
     const float t1213 = (t1206 ? t1193 : x_omega);  /* angle_kf.py:313 */
+    const float p_omega0 = s->params.omega0;
     const float t1214 = (t1205 ? p_omega0 : t1213);  /* angle_kf.py:313 */
     const float t1215 = ((-0x1.99999ap+1f < t1208) ? t1208 : -0x1.99999ap+1f);  /* angle_kf.py:298 */
     const float t1216 = ((t1215 < 0x1.99999ap+1f) ? t1215 : 0x1.99999ap+1f);  /* angle_kf.py:298 */
@@ -1298,6 +1297,7 @@ void angle_ukf_f32_update(angle_ukf_f32_state *s, const kf_angle_input_f32 *in, 
     const float t1241 = (t1205 ? 0.0f : t1240);  /* angle_kf.py:314 */
     const float t1242 = (t1206 ? t1203 : x_Pww);  /* angle_kf.py:314 */
     const float t1244 = (t1205 ? 0x1.9p+4f : t1242);  /* angle_kf.py:314 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t1245 = kf_inc_if(x_rejected, t35);  /* angle_kf.py:316 */
     const int t1246 = (x_initialised || t1205);  /* angle_kf.py:318 */
     const float t1247 = ((0.0f < t1224) ? t1224 : 0.0f);  /* angle_kf.py:104 */

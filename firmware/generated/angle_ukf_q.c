@@ -78,60 +78,46 @@ int angle_ukf_q_init(angle_ukf_q_state *s, const angle_ukf_q_params *p)
 void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_ukf_q_output *out)
 {
     const int32_t u_angle = in->angle;
-    const int u_angle_valid = (in->angle_valid != 0u);
-    const int32_t u_dt = in->dt;
-    const int32_t p_sigma_meas = s->params.sigma_meas;
-    const int32_t p_q_acc = s->params.q_acc;
-    const int32_t p_q_center = s->params.q_center;
-    const int32_t p_q_omega = s->params.q_omega;
-    const int32_t p_omega0 = s->params.omega0;
-    const int32_t p_w0 = s->params.w0;
-    const int32_t x_theta = s->theta;
-    const int32_t x_rate = s->rate;
-    const int32_t x_center = s->center;
-    const int32_t x_omega = s->omega;
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
-    const int32_t x_Ptt = s->Ptt;
-    const int32_t x_Ptr = s->Ptr;
-    const int32_t x_Ptc = s->Ptc;
-    const int32_t x_Ptw = s->Ptw;
-    const int32_t x_Prr = s->Prr;
-    const int32_t x_Prc = s->Prc;
-    const int32_t x_Prw = s->Prw;
-    const int32_t x_Pcc = s->Pcc;
-    const int32_t x_Pcw = s->Pcw;
-    const int32_t x_Pww = s->Pww;
     const int32_t t25 = ((int32_t)((((int64_t)u_angle) < 0) ? (-((int64_t)u_angle)) : ((int64_t)u_angle)));  /* angle_kf.py:138 Q3.28 */
     const int t27 = ((((int64_t)t25) * 2) <= ((int64_t)1717986918));  /* angle_kf.py:138 */
+    const int32_t u_dt = in->dt;
     const int t29 = ((((int64_t)0) * 4) < ((int64_t)u_dt));  /* angle_kf.py:138 */
     const int t31 = ((((int64_t)u_dt) * 2) <= ((int64_t)1717986918));  /* angle_kf.py:138 */
     const int t32 = (t27 && t29);  /* angle_kf.py:138 */
     const int t33 = (t32 && t31);  /* angle_kf.py:138 */
+    const int u_angle_valid = (in->angle_valid != 0u);
     const int t34 = (t33 && u_angle_valid);  /* angle_kf.py:140 */
     const int t35 = (!t33);  /* angle_kf.py:141 */
     const int32_t t36_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t36 = ((0 < t36_0) ? t36_0 : 0);  /* angle_kf.py:142 Q0.31 */
     const int32_t t37_0 = kf_sat((((int64_t)t36) * 4), 0, 1717986918);
     const int32_t t37 = ((t37_0 < 1717986918) ? t37_0 : 1717986918);  /* angle_kf.py:142 */
+    const int32_t x_Ptt = s->Ptt;
     const int32_t t39 = ((4 < x_Ptt) ? x_Ptt : 4);  /* angle_kf.py:381 */
     const int32_t t40 = kf_sat(kf_isqrt_rnd((((int64_t)t39) * 1073741824)), 67909, 1073741824);  /* angle_kf.py:381 Q0.31 */
     const int32_t t43 = kf_div_rnd((((int64_t)1073741824) * 131072), ((int64_t)t40), 131072, 2072430287);  /* angle_kf.py:383 Q15.16 */
+    const int32_t x_Ptr = s->Ptr;
     const int32_t t44 = kf_sat(((kf_smull(x_Ptr, t43) + 65536) >> 17), -1073741824, 1073741824);  /* angle_kf.py:388 Q5.26 */
+    const int32_t x_Ptc = s->Ptc;
     const int32_t t46 = kf_sat(((kf_smull(x_Ptc, t43) + 65536) >> 17), -1073741824, 1073741824);  /* angle_kf.py:388 Q0.31 */
+    const int32_t x_Ptw = s->Ptw;
     const int32_t t48 = kf_sat(((kf_smull(x_Ptw, t43) + 65536) >> 17), -1073741824, 1073741824);  /* angle_kf.py:388 Q5.26 */
     const int32_t t50 = ((int32_t)((kf_smull(t44, t44) + 536870912) >> 30));  /* angle_kf.py:380 Q9.22 */
+    const int32_t x_Prr = s->Prr;
     const int32_t t51 = ((int32_t)(((int64_t)x_Prr) - ((int64_t)t50)));  /* angle_kf.py:380 Q9.22 */
     const int32_t t52 = ((0 < t51) ? t51 : 0);  /* angle_kf.py:381 Q9.22 */
     const int32_t t53 = kf_sat(kf_isqrt_rnd((((int64_t)t52) * 1073741824)), 2122, 1073741824);  /* angle_kf.py:381 Q5.26 */
     const int32_t t55 = kf_div_rnd((((int64_t)1073741824) * 4096), ((int64_t)t53), 4096, 2072430287);  /* angle_kf.py:383 Q15.16 */
     const int32_t t56 = ((int32_t)((kf_smull(t46, t44) + 536870912) >> 30));  /* angle_kf.py:387 Q4.27 */
+    const int32_t x_Prc = s->Prc;
     const int32_t t57 = ((int32_t)(((((int64_t)x_Prc) - ((int64_t)t56)) + 1) >> 1));  /* angle_kf.py:387 Q5.26 */
     const int32_t t58 = kf_sat(((kf_smull(t57, t55) + 1024) >> 11), -1073741824, 1073741824);  /* angle_kf.py:388 Q0.31 */
     const int32_t t60 = ((int32_t)((kf_smull(t48, t44) + 536870912) >> 30));  /* angle_kf.py:387 Q9.22 */
+    const int32_t x_Prw = s->Prw;
     const int32_t t61 = ((int32_t)(((((int64_t)x_Prw) - ((int64_t)t60)) + 1) >> 1));  /* angle_kf.py:387 Q10.21 */
     const int32_t t62 = kf_sat(((kf_smull(t61, t55) + 1024) >> 11), -1073741824, 1073741824);  /* angle_kf.py:388 Q5.26 */
     const int32_t t64 = ((int32_t)((kf_smull(t46, t46) + 536870912) >> 30));  /* angle_kf.py:380 */
+    const int32_t x_Pcc = s->Pcc;
     const int32_t t65 = ((int32_t)(((int64_t)x_Pcc) - ((int64_t)t64)));  /* angle_kf.py:380 */
     const int32_t t66 = ((int32_t)((kf_smull(t58, t58) + 536870912) >> 30));  /* angle_kf.py:380 */
     const int32_t t67 = ((int32_t)(((((int64_t)t65) - ((int64_t)t66)) + 1) >> 1));  /* angle_kf.py:380 Q0.31 */
@@ -140,11 +126,13 @@ void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t69 = kf_sat(kf_isqrt_rnd((((int64_t)t68) * 1073741824)), 67909, 1073741824);  /* angle_kf.py:381 Q0.31 */
     const int32_t t71 = kf_div_rnd((((int64_t)1073741824) * 131072), ((int64_t)t69), 131072, 2072430287);  /* angle_kf.py:383 Q15.16 */
     const int32_t t72 = ((int32_t)((kf_smull(t48, t46) + 536870912) >> 30));  /* angle_kf.py:387 Q4.27 */
+    const int32_t x_Pcw = s->Pcw;
     const int32_t t73 = ((int32_t)(((((int64_t)x_Pcw) - ((int64_t)t72)) + 1) >> 1));  /* angle_kf.py:387 Q5.26 */
     const int32_t t74 = ((int32_t)((kf_smull(t62, t58) + 536870912) >> 30));  /* angle_kf.py:387 Q4.27 */
     const int32_t t75 = ((int32_t)((((((int64_t)t73) * 2) - ((int64_t)t74)) + 1) >> 1));  /* angle_kf.py:387 Q5.26 */
     const int32_t t76 = kf_sat(((kf_smull(t75, t71) + 32768) >> 16), -1073741824, 1073741824);  /* angle_kf.py:388 Q5.26 */
     const int32_t t78 = ((int32_t)((kf_smull(t48, t48) + 536870912) >> 30));  /* angle_kf.py:380 Q9.22 */
+    const int32_t x_Pww = s->Pww;
     const int32_t t79 = ((int32_t)(((int64_t)x_Pww) - ((int64_t)t78)));  /* angle_kf.py:380 Q9.22 */
     const int32_t t80 = ((int32_t)((kf_smull(t62, t62) + 536870912) >> 30));  /* angle_kf.py:380 Q9.22 */
     const int32_t t81 = ((int32_t)(((((int64_t)t79) - ((int64_t)t80)) + 1) >> 1));  /* angle_kf.py:380 Q10.21 */
@@ -153,18 +141,23 @@ void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t84_0 = kf_sat((((int64_t)t83) * 2), 0, 1073741824);
     const int32_t t84 = ((0 < t84_0) ? t84_0 : 0);  /* angle_kf.py:381 Q9.22 */
     const int32_t t85 = kf_sat(kf_isqrt_rnd((((int64_t)t84) * 1073741824)), 2122, 1073741824);  /* angle_kf.py:381 Q5.26 */
+    const int32_t p_w0 = s->params.w0;
     const int32_t t87 = ((int32_t)((((((int64_t)1073741824) * 2) - ((int64_t)p_w0)) + 1) >> 1));  /* angle_kf.py:403 Q1.30 */
     const int32_t t89 = ((int32_t)((kf_smull(t87, 1073741824) + 536870912) >> 30));  /* angle_kf.py:403 */
     const int32_t t91 = ((107374183 < t87) ? t87 : 107374183);  /* angle_kf.py:404 Q1.30 */
     const int32_t t93 = kf_div_rnd((((int64_t)1073741824) * 134217728), ((int64_t)t91), 134217728, 1342177280);  /* angle_kf.py:404 Q6.25 */
     const int32_t t94 = ((int32_t)kf_isqrt_rnd((((int64_t)t93) * INT64_C(2147483648))));  /* angle_kf.py:404 Q3.28 */
     const int32_t t95 = ((int32_t)((kf_smull(t94, t40) + 536870912) >> 30));  /* angle_kf.py:397 Q2.29 */
+    const int32_t x_theta = s->theta;
     const int32_t t96 = ((int32_t)(((((int64_t)x_theta) + ((int64_t)t95)) + 1) >> 1));  /* angle_kf.py:397 Q3.28 */
     const int32_t t97 = ((int32_t)((kf_smull(t94, t44) + 536870912) >> 30));  /* angle_kf.py:397 Q7.24 */
+    const int32_t x_rate = s->rate;
     const int32_t t98 = ((int32_t)(((((int64_t)x_rate) + (((int64_t)t97) * 4)) + 4) >> 3));  /* angle_kf.py:397 Q8.23 */
     const int32_t t99 = ((int32_t)((kf_smull(t94, t46) + 536870912) >> 30));  /* angle_kf.py:397 Q2.29 */
+    const int32_t x_center = s->center;
     const int32_t t100 = ((int32_t)(((((int64_t)x_center) + ((int64_t)t99)) + 1) >> 1));  /* angle_kf.py:397 Q3.28 */
     const int32_t t101 = ((int32_t)((kf_smull(t94, t48) + 536870912) >> 30));  /* angle_kf.py:397 Q7.24 */
+    const int32_t x_omega = s->omega;
     const int32_t t102 = ((int32_t)(((((int64_t)x_omega) + (((int64_t)t101) * 4)) + 4) >> 3));  /* angle_kf.py:397 Q8.23 */
     const int32_t t103 = ((int32_t)((kf_smull(t94, 0) + 134217728) >> 28));  /* angle_kf.py:397 Q1.30 */
     const int32_t t104 = ((int32_t)((((((int64_t)x_theta) * 2) + ((int64_t)t103)) + 1) >> 1));  /* angle_kf.py:397 Q2.29 */
@@ -1029,12 +1022,15 @@ void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t932 = ((int32_t)(((((int64_t)t858) - (((int64_t)t878) * 4)) + 2) >> 2));  /* angle_kf.py:422 Q10.21 */
     const int32_t t933 = ((int32_t)(((((int64_t)t142) - (((int64_t)t888) * 4)) + 2) >> 2));  /* angle_kf.py:422 Q4.27 */
     const int32_t t934 = ((int32_t)(((((int64_t)t783) - (((int64_t)t898) * 2)) + 1) >> 1));  /* angle_kf.py:422 Q6.25 */
+    const int32_t p_q_acc = s->params.q_acc;
     const int32_t t935 = ((int32_t)((kf_smull(p_q_acc, t37) + 536870912) >> 30));  /* angle_kf.py:147 Q11.20 */
     const int32_t t936 = ((int32_t)((kf_smull(t935, t37) + 1073741824) >> 31));  /* angle_kf.py:148 Q9.22 */
     const int32_t t937 = ((int32_t)((kf_smull(t936, t37) + 1073741824) >> 31));  /* angle_kf.py:148 Q7.24 */
     const int32_t t938 = ((int32_t)((kf_smull(t937, 1431655765) + 536870912) >> 30));  /* angle_kf.py:148 Q5.26 */
     const int32_t t939 = ((int32_t)((kf_smull(t936, 1073741824) + 536870912) >> 30));  /* angle_kf.py:148 Q8.23 */
+    const int32_t p_q_center = s->params.q_center;
     const int32_t t940 = ((int32_t)((kf_smull(p_q_center, t37) + 1073741824) >> 31));  /* angle_kf.py:293 Q2.29 */
+    const int32_t p_q_omega = s->params.q_omega;
     const int32_t t941 = ((int32_t)((kf_smull(p_q_omega, t37) + 1073741824) >> 31));  /* angle_kf.py:294 Q5.26 */
     const int32_t t942 = ((int32_t)((kf_smull(t899, t899) + 1073741824) >> 31));  /* angle_kf.py:447 Q12.19 */
     const int32_t t943 = ((int32_t)((kf_smull(p_w0, t942) + 1073741824) >> 31));  /* angle_kf.py:447 Q12.19 */
@@ -1243,6 +1239,7 @@ void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t1145 = ((6710886 < t898) ? t898 : 6710886);  /* angle_kf.py:299 Q6.25 */
     const int32_t t1146_0 = kf_sat((((int64_t)t1145) * 2), 13421772, 2013265920);
     const int32_t t1146 = ((t1146_0 < 2013265920) ? t1146_0 : 2013265920);  /* angle_kf.py:299 Q5.26 */
+    const int32_t p_sigma_meas = s->params.sigma_meas;
     const int32_t t1147 = ((int32_t)((kf_smull(p_sigma_meas, p_sigma_meas) + 536870912) >> 30));  /* angle_kf.py:453 Q1.30 */
     const int32_t t1148 = ((int32_t)((((((int64_t)t961) * 8192) + ((int64_t)t1147)) + 4096) >> 13));  /* angle_kf.py:160 Q14.17 */
     const int32_t t1149_1 = ((int32_t)((((int64_t)t1147) + 4096) >> 13));
@@ -1300,6 +1297,7 @@ void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t1201 = (t34 ? t1185 : t1097);  /* angle_kf.py:457 Q9.22 */
     const int32_t t1202 = (t34 ? t1187 : t1116);  /* angle_kf.py:457 Q11.20 */
     const int32_t t1203 = (t34 ? t1189 : t1136);  /* angle_kf.py:457 Q13.18 */
+    const int x_initialised = (s->initialised != 0u);
     const int t1204 = (!x_initialised);  /* angle_kf.py:305 */
     const int t1205 = (t34 && t1204);  /* angle_kf.py:305 */
     const int t1206 = (t33 && x_initialised);  /* angle_kf.py:306 */
@@ -1316,6 +1314,7 @@ void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t1212 = (t1205 ? t1212_0 : t1211);  /* angle_kf.py:313 Q12.19 */
     const int32_t t1213_1 = ((int32_t)((((int64_t)x_omega) + 2048) >> 12));
     const int32_t t1213 = (t1206 ? t1193 : t1213_1);  /* angle_kf.py:313 Q17.14 */
+    const int32_t p_omega0 = s->params.omega0;
     const int32_t t1214_0 = ((int32_t)((((int64_t)p_omega0) + 2048) >> 12));
     const int32_t t1214 = (t1205 ? t1214_0 : t1213);  /* angle_kf.py:313 Q17.14 */
     const int32_t t1215 = ((-1677722 < t1208) ? t1208 : -1677722);  /* angle_kf.py:298 Q12.19 */
@@ -1367,6 +1366,7 @@ void angle_ukf_q_update(angle_ukf_q_state *s, const kf_angle_input_q *in, angle_
     const int32_t t1242_1 = ((int32_t)((((int64_t)x_Pww) + 8) >> 4));
     const int32_t t1242 = (t1206 ? t1203 : t1242_1);  /* angle_kf.py:314 Q13.18 */
     const int32_t t1244 = (t1205 ? 6553600 : t1242);  /* angle_kf.py:314 Q13.18 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t1245 = kf_inc_if(x_rejected, t35);  /* angle_kf.py:316 */
     const int t1246 = (x_initialised || t1205);  /* angle_kf.py:318 */
     const int32_t t1247 = ((0 < t1224) ? t1224 : 0);  /* angle_kf.py:104 Q14.17 */

@@ -61,40 +61,27 @@ int complementary_f32_init(complementary_f32_state *s, const complementary_f32_p
 
 void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32 *in, complementary_f32_output *out)
 {
-    const float u_gyr0 = in->gyr[0];
-    const float u_gyr1 = in->gyr[1];
-    const float u_gyr2 = in->gyr[2];
-    const float u_acc0 = in->acc[0];
-    const float u_acc1 = in->acc[1];
-    const float u_acc2 = in->acc[2];
-    const float u_mag0 = in->mag[0];
-    const float u_mag1 = in->mag[1];
-    const float u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
     const float u_dt = in->dt;
-    const float p_tau_acc = s->params.tau_acc;
-    const float p_tau_mag = s->params.tau_mag;
-    const float p_acc_gate = s->params.acc_gate;
-    const float x_q0 = s->q[0];
-    const float x_q1 = s->q[1];
-    const float x_q2 = s->q[2];
-    const float x_q3 = s->q[3];
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
     const float t21 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* common.py:62 */
     const float t23 = ((t21 < 0x1p+0f) ? t21 : 0x1p+0f);  /* common.py:62 */
+    const float u_gyr0 = in->gyr[0];
     const float t24 = fabsf(u_gyr0);  /* common.py:50 */
     const int t26 = (t24 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr1 = in->gyr[1];
     const float t27 = fabsf(u_gyr1);  /* common.py:50 */
     const int t28 = (t27 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr2 = in->gyr[2];
     const float t29 = fabsf(u_gyr2);  /* common.py:50 */
     const int t30 = (t29 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t31 = (t26 && t28);  /* common.py:50 */
     const int t32 = (t31 && t30);  /* common.py:50 */
+    const float u_acc0 = in->acc[0];
     const float t33 = fabsf(u_acc0);  /* common.py:50 */
     const int t35 = (t33 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc1 = in->acc[1];
     const float t36 = fabsf(u_acc1);  /* common.py:50 */
     const int t37 = (t36 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc2 = in->acc[2];
     const float t38 = fabsf(u_acc2);  /* common.py:50 */
     const int t39 = (t38 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t40 = (t35 && t37);  /* common.py:50 */
@@ -104,14 +91,18 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const int t44 = (t32 && t41);  /* common.py:63 */
     const int t45 = (t44 && t42);  /* common.py:63 */
     const int t46 = (t45 && t43);  /* common.py:63 */
+    const float u_mag0 = in->mag[0];
     const float t47 = fabsf(u_mag0);  /* common.py:50 */
     const int t49 = (t47 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag1 = in->mag[1];
     const float t50 = fabsf(u_mag1);  /* common.py:50 */
     const int t51 = (t50 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag2 = in->mag[2];
     const float t52 = fabsf(u_mag2);  /* common.py:50 */
     const int t53 = (t52 <= 0x1.324p+12f);  /* common.py:50 */
     const int t54 = (t49 && t51);  /* common.py:50 */
     const int t55 = (t54 && t53);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t56 = (t46 && u_mag_valid);  /* common.py:67 */
     const int t57 = (t56 && t55);  /* common.py:67 */
     const int t58 = (!t55);  /* common.py:69 */
@@ -119,12 +110,16 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const int t60 = (!t59);  /* common.py:68 */
     const int t61 = (t46 && t60);  /* common.py:68 */
     const int t62 = (!t61);  /* common.py:68 */
+    const float x_q1 = s->q[1];
     const float t63 = (x_q1 * u_gyr0);  /* common.py:176 */
     const float t64 = (-t63);  /* common.py:176 */
+    const float x_q2 = s->q[2];
     const float t65 = (x_q2 * u_gyr1);  /* common.py:176 */
     const float t66 = (t64 - t65);  /* common.py:176 */
+    const float x_q3 = s->q[3];
     const float t67 = (x_q3 * u_gyr2);  /* common.py:176 */
     const float t68 = (t66 - t67);  /* common.py:176 */
+    const float x_q0 = s->q[0];
     const float t69 = (x_q0 * u_gyr0);  /* common.py:176 */
     const float t70 = (x_q2 * u_gyr2);  /* common.py:176 */
     const float t71 = (t69 + t70);  /* common.py:176 */
@@ -178,6 +173,7 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t119 = (u_acc0 * t118);  /* complementary.py:45 */
     const float t121 = (u_acc1 * t118);  /* complementary.py:45 */
     const float t123 = (u_acc2 * t118);  /* complementary.py:45 */
+    const float p_acc_gate = s->params.acc_gate;
     const float t126 = (0x1.39eb86p+3f - p_acc_gate);  /* complementary.py:47 */
     const float t127 = (t126 * t126);  /* complementary.py:47 */
     const float t128 = (0x1.39eb86p+3f + p_acc_gate);  /* complementary.py:48 */
@@ -191,6 +187,7 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const int t136 = (p_acc_gate <= 0.0f);  /* complementary.py:50 */
     const int t137 = (t136 || t134);  /* complementary.py:50 */
     const int t138 = (t135 && t137);  /* complementary.py:50 */
+    const float p_tau_acc = s->params.tau_acc;
     const float t139 = (p_tau_acc + t23);  /* complementary.py:51 */
     const float t140 = (t23 / t139);  /* complementary.py:51 */
     const float t141 = (t109 * t123);  /* common.py:151 */
@@ -289,6 +286,7 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t239 = (t138 ? t223 : t107);  /* complementary.py:52 */
     const float t240 = (t138 ? t230 : t109);  /* complementary.py:52 */
     const float t241 = (t138 ? t237 : t111);  /* complementary.py:52 */
+    const float p_tau_mag = s->params.tau_mag;
     float t246 = 0.0f;
     float t319 = 0.0f;
     float t326 = 0.0f;
@@ -395,6 +393,7 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t340 = (t338 ? t326 : t239);  /* complementary.py:59 */
     const float t341 = (t338 ? t331 : t240);  /* complementary.py:59 */
     const float t342 = (t338 ? t336 : t241);  /* complementary.py:59 */
+    const int x_initialised = (s->initialised != 0u);
     const int t343 = (!x_initialised);  /* complementary.py:61 */
     const int t344 = (t46 && t343);  /* complementary.py:61 */
     float t468 = 0.0f;
@@ -540,6 +539,7 @@ void complementary_f32_update(complementary_f32_state *s, const kf_imu_input_f32
     const float t485 = (t478 ? t470 : t481);  /* complementary.py:66 */
     const float t486 = (t478 ? t472 : t482);  /* complementary.py:66 */
     const float t487 = (t478 ? t474 : t483);  /* complementary.py:66 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t488 = kf_inc_if(x_rejected, t62);  /* complementary.py:67 */
     const int t489 = (x_initialised || t478);  /* complementary.py:68 */
     s->q[0] = t484;

@@ -55,42 +55,29 @@ int complementary_q_init(complementary_q_state *s, const complementary_q_params 
 
 void complementary_q_update(complementary_q_state *s, const kf_imu_input_q *in, complementary_q_output *out)
 {
-    const int32_t u_gyr0 = in->gyr[0];
-    const int32_t u_gyr1 = in->gyr[1];
-    const int32_t u_gyr2 = in->gyr[2];
-    const int32_t u_acc0 = in->acc[0];
-    const int32_t u_acc1 = in->acc[1];
-    const int32_t u_acc2 = in->acc[2];
-    const int32_t u_mag0 = in->mag[0];
-    const int32_t u_mag1 = in->mag[1];
-    const int32_t u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
     const int32_t u_dt = in->dt;
-    const int32_t p_tau_acc = s->params.tau_acc;
-    const int32_t p_tau_mag = s->params.tau_mag;
-    const int32_t p_acc_gate = s->params.acc_gate;
-    const int32_t x_q0 = s->q[0];
-    const int32_t x_q1 = s->q[1];
-    const int32_t x_q2 = s->q[2];
-    const int32_t x_q3 = s->q[3];
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
     const int32_t t21_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t21 = ((0 < t21_0) ? t21_0 : 0);  /* common.py:62 Q3.28 */
     const int32_t t23_0 = kf_sat((((int64_t)t21) * 4), 0, 1073741824);
     const int32_t t23 = ((t23_0 < 1073741824) ? t23_0 : 1073741824);  /* common.py:62 Q1.30 */
+    const int32_t u_gyr0 = in->gyr[0];
     const int32_t t24 = ((int32_t)((((int64_t)u_gyr0) < 0) ? (-((int64_t)u_gyr0)) : ((int64_t)u_gyr0)));  /* common.py:50 Q7.24 */
     const int t26 = ((((int64_t)t24) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr1 = in->gyr[1];
     const int32_t t27 = ((int32_t)((((int64_t)u_gyr1) < 0) ? (-((int64_t)u_gyr1)) : ((int64_t)u_gyr1)));  /* common.py:50 Q7.24 */
     const int t28 = ((((int64_t)t27) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr2 = in->gyr[2];
     const int32_t t29 = ((int32_t)((((int64_t)u_gyr2) < 0) ? (-((int64_t)u_gyr2)) : ((int64_t)u_gyr2)));  /* common.py:50 Q7.24 */
     const int t30 = ((((int64_t)t29) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
     const int t31 = (t26 && t28);  /* common.py:50 */
     const int t32 = (t31 && t30);  /* common.py:50 */
+    const int32_t u_acc0 = in->acc[0];
     const int32_t t33 = ((int32_t)((((int64_t)u_acc0) < 0) ? (-((int64_t)u_acc0)) : ((int64_t)u_acc0)));  /* common.py:50 Q9.22 */
     const int t35 = ((((int64_t)t33) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc1 = in->acc[1];
     const int32_t t36 = ((int32_t)((((int64_t)u_acc1) < 0) ? (-((int64_t)u_acc1)) : ((int64_t)u_acc1)));  /* common.py:50 Q9.22 */
     const int t37 = ((((int64_t)t36) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc2 = in->acc[2];
     const int32_t t38 = ((int32_t)((((int64_t)u_acc2) < 0) ? (-((int64_t)u_acc2)) : ((int64_t)u_acc2)));  /* common.py:50 Q9.22 */
     const int t39 = ((((int64_t)t38) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
     const int t40 = (t35 && t37);  /* common.py:50 */
@@ -100,14 +87,18 @@ void complementary_q_update(complementary_q_state *s, const kf_imu_input_q *in, 
     const int t44 = (t32 && t41);  /* common.py:63 */
     const int t45 = (t44 && t42);  /* common.py:63 */
     const int t46 = (t45 && t43);  /* common.py:63 */
+    const int32_t u_mag0 = in->mag[0];
     const int32_t t47 = ((int32_t)((((int64_t)u_mag0) < 0) ? (-((int64_t)u_mag0)) : ((int64_t)u_mag0)));  /* common.py:50 Q14.17 */
     const int t49 = ((((int64_t)t47) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag1 = in->mag[1];
     const int32_t t50 = ((int32_t)((((int64_t)u_mag1) < 0) ? (-((int64_t)u_mag1)) : ((int64_t)u_mag1)));  /* common.py:50 Q14.17 */
     const int t51 = ((((int64_t)t50) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag2 = in->mag[2];
     const int32_t t52 = ((int32_t)((((int64_t)u_mag2) < 0) ? (-((int64_t)u_mag2)) : ((int64_t)u_mag2)));  /* common.py:50 Q14.17 */
     const int t53 = ((((int64_t)t52) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
     const int t54 = (t49 && t51);  /* common.py:50 */
     const int t55 = (t54 && t53);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t56 = (t46 && u_mag_valid);  /* common.py:67 */
     const int t57 = (t56 && t55);  /* common.py:67 */
     const int t58 = (!t55);  /* common.py:69 */
@@ -115,12 +106,16 @@ void complementary_q_update(complementary_q_state *s, const kf_imu_input_q *in, 
     const int t60 = (!t59);  /* common.py:68 */
     const int t61 = (t46 && t60);  /* common.py:68 */
     const int t62 = (!t61);  /* common.py:68 */
+    const int32_t x_q1 = s->q[1];
     const int32_t t63 = ((int32_t)((kf_smull(x_q1, u_gyr0) + 1073741824) >> 31));  /* common.py:176 Q8.23 */
     const int32_t t64 = ((int32_t)(-((int64_t)t63)));  /* common.py:176 Q8.23 */
+    const int32_t x_q2 = s->q[2];
     const int32_t t65 = ((int32_t)((kf_smull(x_q2, u_gyr1) + 1073741824) >> 31));  /* common.py:176 Q8.23 */
     const int32_t t66 = ((int32_t)(((((int64_t)t64) - ((int64_t)t65)) + 1) >> 1));  /* common.py:176 Q9.22 */
+    const int32_t x_q3 = s->q[3];
     const int32_t t67 = ((int32_t)((kf_smull(x_q3, u_gyr2) + 1073741824) >> 31));  /* common.py:176 Q8.23 */
     const int32_t t68 = ((int32_t)((((((int64_t)t66) * 2) - ((int64_t)t67)) + 1) >> 1));  /* common.py:176 Q9.22 */
+    const int32_t x_q0 = s->q[0];
     const int32_t t69 = ((int32_t)((kf_smull(x_q0, u_gyr0) + 1073741824) >> 31));  /* common.py:176 Q8.23 */
     const int32_t t70 = ((int32_t)((kf_smull(x_q2, u_gyr2) + 1073741824) >> 31));  /* common.py:176 Q8.23 */
     const int32_t t71 = ((int32_t)(((((int64_t)t69) + ((int64_t)t70)) + 1) >> 1));  /* common.py:176 Q9.22 */
@@ -162,6 +157,7 @@ void complementary_q_update(complementary_q_state *s, const kf_imu_input_q *in, 
     const int32_t t119 = kf_mul_dyn(u_acc0, t118, -8, -1073741824, 1073741824);  /* complementary.py:45 Q1.30 */
     const int32_t t121 = kf_mul_dyn(u_acc1, t118, -8, -1073741824, 1073741824);  /* complementary.py:45 Q1.30 */
     const int32_t t123 = kf_mul_dyn(u_acc2, t118, -8, -1073741824, 1073741824);  /* complementary.py:45 Q1.30 */
+    const int32_t p_acc_gate = s->params.acc_gate;
     const int32_t t126 = ((int32_t)(((((int64_t)1316675912) - (((int64_t)p_acc_gate) * 8)) + 4) >> 3));  /* complementary.py:47 Q7.24 */
     const int32_t t127 = ((int32_t)((kf_smull(t126, t126) + 536870912) >> 30));  /* complementary.py:47 Q13.18 */
     const int32_t t128 = ((int32_t)(((((int64_t)1316675912) + (((int64_t)p_acc_gate) * 8)) + 4) >> 3));  /* complementary.py:48 Q7.24 */
@@ -175,6 +171,7 @@ void complementary_q_update(complementary_q_state *s, const kf_imu_input_q *in, 
     const int t136 = ((((int64_t)p_acc_gate) * 64) <= ((int64_t)0));  /* complementary.py:50 */
     const int t137 = (t136 || t134);  /* complementary.py:50 */
     const int t138 = (t135 && t137);  /* complementary.py:50 */
+    const int32_t p_tau_acc = s->params.tau_acc;
     const int32_t t139 = ((int32_t)((((((int64_t)p_tau_acc) * 64) + ((int64_t)t23)) + 32) >> 6));  /* complementary.py:51 Q7.24 */
     const int32_t t140 = kf_div_rnd((((int64_t)t23) * 262144), ((int64_t)t139), 0, 1677721600);  /* complementary.py:51 Q7.24 */
     const int32_t t141 = ((int32_t)((kf_smull(t109, t123) + 536870912) >> 30));  /* common.py:151 Q1.30 */
@@ -261,6 +258,7 @@ void complementary_q_update(complementary_q_state *s, const kf_imu_input_q *in, 
     const int32_t t240 = (t138 ? t230 : t240_1);  /* complementary.py:52 Q2.29 */
     const int32_t t241_1 = ((int32_t)((((int64_t)t111) + 1) >> 1));
     const int32_t t241 = (t138 ? t237 : t241_1);  /* complementary.py:52 Q2.29 */
+    const int32_t p_tau_mag = s->params.tau_mag;
     int32_t t246 = 0;
     int32_t t319 = 0;
     int32_t t326 = 0;
@@ -356,6 +354,7 @@ void complementary_q_update(complementary_q_state *s, const kf_imu_input_q *in, 
     const int32_t t341 = (t338 ? t331 : t341_1);  /* complementary.py:59 Q3.28 */
     const int32_t t342_1 = ((int32_t)((((int64_t)t241) + 1) >> 1));
     const int32_t t342 = (t338 ? t336 : t342_1);  /* complementary.py:59 Q3.28 */
+    const int x_initialised = (s->initialised != 0u);
     const int t343 = (!x_initialised);  /* complementary.py:61 */
     const int t344 = (t46 && t343);  /* complementary.py:61 */
     int32_t t468 = 0;
@@ -507,6 +506,7 @@ void complementary_q_update(complementary_q_state *s, const kf_imu_input_q *in, 
     const int32_t t486 = (t478 ? t486_0 : t482);  /* complementary.py:66 Q3.28 */
     const int32_t t487_0 = ((int32_t)((((int64_t)t474) + 2) >> 2));
     const int32_t t487 = (t478 ? t487_0 : t483);  /* complementary.py:66 Q3.28 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t488 = kf_inc_if(x_rejected, t62);  /* complementary.py:67 */
     const int t489 = (x_initialised || t478);  /* complementary.py:68 */
     s->q[0] = kf_lsh_sat(((int64_t)t484), 2, -1073741824, 1073741824);

@@ -54,52 +54,45 @@ int ecompass_f32_init(ecompass_f32_state *s, const ecompass_f32_params *p)
 void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecompass_f32_output *out)
 {
     const float u_gyr0 = in->gyr[0];
-    const float u_gyr1 = in->gyr[1];
-    const float u_gyr2 = in->gyr[2];
-    const float u_acc0 = in->acc[0];
-    const float u_acc1 = in->acc[1];
-    const float u_acc2 = in->acc[2];
-    const float u_mag0 = in->mag[0];
-    const float u_mag1 = in->mag[1];
-    const float u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
-    const float u_dt = in->dt;
-    const float p_min_angle_deg = s->params.min_angle_deg;
-    const float x_q0 = s->q[0];
-    const float x_q1 = s->q[1];
-    const float x_q2 = s->q[2];
-    const float x_q3 = s->q[3];
-    const int x_valid = (s->valid != 0u);
-    const int32_t x_rejected = s->rejected;
     const float t20 = fabsf(u_gyr0);  /* common.py:50 */
     const int t22 = (t20 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr1 = in->gyr[1];
     const float t23 = fabsf(u_gyr1);  /* common.py:50 */
     const int t24 = (t23 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr2 = in->gyr[2];
     const float t25 = fabsf(u_gyr2);  /* common.py:50 */
     const int t26 = (t25 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t27 = (t22 && t24);  /* common.py:50 */
     const int t28 = (t27 && t26);  /* common.py:50 */
+    const float u_acc0 = in->acc[0];
     const float t29 = fabsf(u_acc0);  /* common.py:50 */
     const int t31 = (t29 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc1 = in->acc[1];
     const float t32 = fabsf(u_acc1);  /* common.py:50 */
     const int t33 = (t32 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc2 = in->acc[2];
     const float t34 = fabsf(u_acc2);  /* common.py:50 */
     const int t35 = (t34 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t36 = (t31 && t33);  /* common.py:50 */
     const int t37 = (t36 && t35);  /* common.py:50 */
+    const float u_dt = in->dt;
     const int t38 = (0.0f < u_dt);  /* common.py:64 */
     const int t39 = (u_dt <= 0x1p+0f);  /* common.py:64 */
     const int t40 = (t28 && t37);  /* common.py:63 */
     const int t41 = (t40 && t38);  /* common.py:63 */
     const int t42 = (t41 && t39);  /* common.py:63 */
+    const float u_mag0 = in->mag[0];
     const float t43 = fabsf(u_mag0);  /* common.py:50 */
     const int t45 = (t43 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag1 = in->mag[1];
     const float t46 = fabsf(u_mag1);  /* common.py:50 */
     const int t47 = (t46 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag2 = in->mag[2];
     const float t48 = fabsf(u_mag2);  /* common.py:50 */
     const int t49 = (t48 <= 0x1.324p+12f);  /* common.py:50 */
     const int t50 = (t45 && t47);  /* common.py:50 */
     const int t51 = (t50 && t49);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t52 = (t42 && u_mag_valid);  /* common.py:67 */
     const int t53 = (t52 && t51);  /* common.py:67 */
     const int t54 = (!t51);  /* common.py:69 */
@@ -225,6 +218,7 @@ void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecom
     const float t187 = (t186 - t167);  /* algebraic.py:107 */
     const float t188 = (t165 * t106);  /* algebraic.py:107 */
     const float t189 = (t187 + t188);  /* algebraic.py:107 */
+    const float p_min_angle_deg = s->params.min_angle_deg;
     const float t191 = (p_min_angle_deg * 0x1.1df46ap-6f);  /* ecompass.py:59 */
     const float t193 = (t191 * 0x1.45f306p-1f);  /* ecompass.py:59 */
     const float t194 = (t193 + 0x1p-1f);  /* ecompass.py:59 */
@@ -294,11 +288,17 @@ void ecompass_f32_update(ecompass_f32_state *s, const kf_imu_input_f32 *in, ecom
     const float t270 = (t264 ? t269 : t184);  /* ecompass.py:64 */
     const float t271 = (-t189);  /* ecompass.py:64 */
     const float t272 = (t264 ? t271 : t189);  /* ecompass.py:64 */
+    const float x_q0 = s->q[0];
     const float t273 = (t263 ? t266 : x_q0);  /* ecompass.py:65 */
+    const float x_q1 = s->q[1];
     const float t274 = (t263 ? t268 : x_q1);  /* ecompass.py:65 */
+    const float x_q2 = s->q[2];
     const float t275 = (t263 ? t270 : x_q2);  /* ecompass.py:65 */
+    const float x_q3 = s->q[3];
     const float t276 = (t263 ? t272 : x_q3);  /* ecompass.py:65 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t277 = kf_inc_if(x_rejected, t58);  /* ecompass.py:66 */
+    const int x_valid = (s->valid != 0u);
     const int t278 = (x_valid || t263);  /* ecompass.py:67 */
     const int t279 = (!t263);  /* ecompass.py:68 */
     s->q[0] = t273;

@@ -48,52 +48,45 @@ int ecompass_q_init(ecompass_q_state *s, const ecompass_q_params *p)
 void ecompass_q_update(ecompass_q_state *s, const kf_imu_input_q *in, ecompass_q_output *out)
 {
     const int32_t u_gyr0 = in->gyr[0];
-    const int32_t u_gyr1 = in->gyr[1];
-    const int32_t u_gyr2 = in->gyr[2];
-    const int32_t u_acc0 = in->acc[0];
-    const int32_t u_acc1 = in->acc[1];
-    const int32_t u_acc2 = in->acc[2];
-    const int32_t u_mag0 = in->mag[0];
-    const int32_t u_mag1 = in->mag[1];
-    const int32_t u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
-    const int32_t u_dt = in->dt;
-    const int32_t p_min_angle_deg = s->params.min_angle_deg;
-    const int32_t x_q0 = s->q[0];
-    const int32_t x_q1 = s->q[1];
-    const int32_t x_q2 = s->q[2];
-    const int32_t x_q3 = s->q[3];
-    const int x_valid = (s->valid != 0u);
-    const int32_t x_rejected = s->rejected;
     const int32_t t20 = ((int32_t)((((int64_t)u_gyr0) < 0) ? (-((int64_t)u_gyr0)) : ((int64_t)u_gyr0)));  /* common.py:50 Q7.24 */
     const int t22 = ((((int64_t)t20) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr1 = in->gyr[1];
     const int32_t t23 = ((int32_t)((((int64_t)u_gyr1) < 0) ? (-((int64_t)u_gyr1)) : ((int64_t)u_gyr1)));  /* common.py:50 Q7.24 */
     const int t24 = ((((int64_t)t23) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr2 = in->gyr[2];
     const int32_t t25 = ((int32_t)((((int64_t)u_gyr2) < 0) ? (-((int64_t)u_gyr2)) : ((int64_t)u_gyr2)));  /* common.py:50 Q7.24 */
     const int t26 = ((((int64_t)t25) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
     const int t27 = (t22 && t24);  /* common.py:50 */
     const int t28 = (t27 && t26);  /* common.py:50 */
+    const int32_t u_acc0 = in->acc[0];
     const int32_t t29 = ((int32_t)((((int64_t)u_acc0) < 0) ? (-((int64_t)u_acc0)) : ((int64_t)u_acc0)));  /* common.py:50 Q9.22 */
     const int t31 = ((((int64_t)t29) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc1 = in->acc[1];
     const int32_t t32 = ((int32_t)((((int64_t)u_acc1) < 0) ? (-((int64_t)u_acc1)) : ((int64_t)u_acc1)));  /* common.py:50 Q9.22 */
     const int t33 = ((((int64_t)t32) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc2 = in->acc[2];
     const int32_t t34 = ((int32_t)((((int64_t)u_acc2) < 0) ? (-((int64_t)u_acc2)) : ((int64_t)u_acc2)));  /* common.py:50 Q9.22 */
     const int t35 = ((((int64_t)t34) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
     const int t36 = (t31 && t33);  /* common.py:50 */
     const int t37 = (t36 && t35);  /* common.py:50 */
+    const int32_t u_dt = in->dt;
     const int t38 = (((int64_t)0) < (((int64_t)u_dt) * 2));  /* common.py:64 */
     const int t39 = ((((int64_t)u_dt) * 2) <= ((int64_t)1073741824));  /* common.py:64 */
     const int t40 = (t28 && t37);  /* common.py:63 */
     const int t41 = (t40 && t38);  /* common.py:63 */
     const int t42 = (t41 && t39);  /* common.py:63 */
+    const int32_t u_mag0 = in->mag[0];
     const int32_t t43 = ((int32_t)((((int64_t)u_mag0) < 0) ? (-((int64_t)u_mag0)) : ((int64_t)u_mag0)));  /* common.py:50 Q14.17 */
     const int t45 = ((((int64_t)t43) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag1 = in->mag[1];
     const int32_t t46 = ((int32_t)((((int64_t)u_mag1) < 0) ? (-((int64_t)u_mag1)) : ((int64_t)u_mag1)));  /* common.py:50 Q14.17 */
     const int t47 = ((((int64_t)t46) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag2 = in->mag[2];
     const int32_t t48 = ((int32_t)((((int64_t)u_mag2) < 0) ? (-((int64_t)u_mag2)) : ((int64_t)u_mag2)));  /* common.py:50 Q14.17 */
     const int t49 = ((((int64_t)t48) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
     const int t50 = (t45 && t47);  /* common.py:50 */
     const int t51 = (t50 && t49);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t52 = (t42 && u_mag_valid);  /* common.py:67 */
     const int t53 = (t52 && t51);  /* common.py:67 */
     const int t54 = (!t51);  /* common.py:69 */
@@ -217,6 +210,7 @@ void ecompass_q_update(ecompass_q_state *s, const kf_imu_input_q *in, ecompass_q
     const int32_t t187 = ((int32_t)(((int64_t)t186) - (((int64_t)t167) * 2)));  /* algebraic.py:107 Q0.31 */
     const int32_t t188 = ((int32_t)((kf_smull(t165, t106) + 536870912) >> 30));  /* algebraic.py:107 Q1.30 */
     const int32_t t189 = ((int32_t)(((((int64_t)t187) + (((int64_t)t188) * 2)) + 1) >> 1));  /* algebraic.py:107 Q1.30 */
+    const int32_t p_min_angle_deg = s->params.min_angle_deg;
     const int32_t t191 = ((int32_t)((kf_smull(p_min_angle_deg, 1199381129) + 536870912) >> 30));  /* ecompass.py:59 Q0.31 */
     const int32_t t193 = ((int32_t)((kf_smull(t191, 1367130551) + 1073741824) >> 31));  /* ecompass.py:59 Q0.31 */
     const int32_t t194 = ((int32_t)(((((int64_t)t193) + ((int64_t)1073741824)) + 1) >> 1));  /* ecompass.py:59 Q1.30 */
@@ -283,11 +277,17 @@ void ecompass_q_update(ecompass_q_state *s, const kf_imu_input_q *in, ecompass_q
     const int32_t t270 = (t264 ? t269 : t184);  /* ecompass.py:64 Q1.30 */
     const int32_t t271 = ((int32_t)(-((int64_t)t189)));  /* ecompass.py:64 Q1.30 */
     const int32_t t272 = (t264 ? t271 : t189);  /* ecompass.py:64 Q1.30 */
+    const int32_t x_q0 = s->q[0];
     const int32_t t273 = (t263 ? t266 : x_q0);  /* ecompass.py:65 Q1.30 */
+    const int32_t x_q1 = s->q[1];
     const int32_t t274 = (t263 ? t268 : x_q1);  /* ecompass.py:65 Q1.30 */
+    const int32_t x_q2 = s->q[2];
     const int32_t t275 = (t263 ? t270 : x_q2);  /* ecompass.py:65 Q1.30 */
+    const int32_t x_q3 = s->q[3];
     const int32_t t276 = (t263 ? t272 : x_q3);  /* ecompass.py:65 Q1.30 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t277 = kf_inc_if(x_rejected, t58);  /* ecompass.py:66 */
+    const int x_valid = (s->valid != 0u);
     const int t278 = (x_valid || t263);  /* ecompass.py:67 */
     const int t279 = (!t263);  /* ecompass.py:68 */
     s->q[0] = kf_sat(((int64_t)t273), -1073741824, 1073741824);

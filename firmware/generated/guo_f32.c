@@ -72,51 +72,27 @@ int guo_f32_init(guo_f32_state *s, const guo_f32_params *p)
 
 void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output *out)
 {
-    const float u_gyr0 = in->gyr[0];
-    const float u_gyr1 = in->gyr[1];
-    const float u_gyr2 = in->gyr[2];
-    const float u_acc0 = in->acc[0];
-    const float u_acc1 = in->acc[1];
-    const float u_acc2 = in->acc[2];
-    const float u_mag0 = in->mag[0];
-    const float u_mag1 = in->mag[1];
-    const float u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
     const float u_dt = in->dt;
-    const float p_var_acc = s->params.var_acc;
-    const float p_var_gyr = s->params.var_gyr;
-    const float p_var_mag = s->params.var_mag;
-    const float x_q0 = s->q[0];
-    const float x_q1 = s->q[1];
-    const float x_q2 = s->q[2];
-    const float x_q3 = s->q[3];
-    const float x_S0 = s->S[0];
-    const float x_S1 = s->S[1];
-    const float x_S2 = s->S[2];
-    const float x_S3 = s->S[3];
-    const float x_S4 = s->S[4];
-    const float x_S5 = s->S[5];
-    const float x_S6 = s->S[6];
-    const float x_S7 = s->S[7];
-    const float x_S8 = s->S[8];
-    const float x_S9 = s->S[9];
-    const int x_initialised = (s->initialised != 0u);
-    const int x_heading_set = (s->heading_set != 0u);
-    const int32_t x_rejected = s->rejected;
     const float t32 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* common.py:62 */
     const float t34 = ((t32 < 0x1p+0f) ? t32 : 0x1p+0f);  /* common.py:62 */
+    const float u_gyr0 = in->gyr[0];
     const float t35 = fabsf(u_gyr0);  /* common.py:50 */
     const int t37 = (t35 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr1 = in->gyr[1];
     const float t38 = fabsf(u_gyr1);  /* common.py:50 */
     const int t39 = (t38 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr2 = in->gyr[2];
     const float t40 = fabsf(u_gyr2);  /* common.py:50 */
     const int t41 = (t40 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t42 = (t37 && t39);  /* common.py:50 */
     const int t43 = (t42 && t41);  /* common.py:50 */
+    const float u_acc0 = in->acc[0];
     const float t44 = fabsf(u_acc0);  /* common.py:50 */
     const int t46 = (t44 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc1 = in->acc[1];
     const float t47 = fabsf(u_acc1);  /* common.py:50 */
     const int t48 = (t47 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc2 = in->acc[2];
     const float t49 = fabsf(u_acc2);  /* common.py:50 */
     const int t50 = (t49 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t51 = (t46 && t48);  /* common.py:50 */
@@ -126,14 +102,18 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const int t55 = (t43 && t52);  /* common.py:63 */
     const int t56 = (t55 && t53);  /* common.py:63 */
     const int t57 = (t56 && t54);  /* common.py:63 */
+    const float u_mag0 = in->mag[0];
     const float t58 = fabsf(u_mag0);  /* common.py:50 */
     const int t60 = (t58 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag1 = in->mag[1];
     const float t61 = fabsf(u_mag1);  /* common.py:50 */
     const int t62 = (t61 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag2 = in->mag[2];
     const float t63 = fabsf(u_mag2);  /* common.py:50 */
     const int t64 = (t63 <= 0x1.324p+12f);  /* common.py:50 */
     const int t65 = (t60 && t62);  /* common.py:50 */
     const int t66 = (t65 && t64);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t67 = (t57 && u_mag_valid);  /* common.py:67 */
     const int t68 = (t67 && t66);  /* common.py:67 */
     const int t69 = (!t66);  /* common.py:69 */
@@ -175,7 +155,9 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const int t108 = (0x1.f212d8p-8f <= t106);  /* guo.py:145 */
     const int t109 = (t68 && t104);  /* guo.py:145 */
     const int t110 = (t109 && t108);  /* guo.py:145 */
+    const float p_var_acc = s->params.var_acc;
     const float t111 = sqrtf(p_var_acc);  /* guo.py:150 */
+    const float p_var_mag = s->params.var_mag;
     const float t112 = sqrtf(p_var_mag);  /* guo.py:151 */
     const float t113 = (t112 / t111);  /* guo.py:151 */
     const float t114 = ((0.0f < t113) ? t113 : 0.0f);  /* guo.py:151 */
@@ -185,6 +167,7 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t120 = ((t119 < 0x1p+0f) ? 0x1p+0f : t119);  /* guo.py:153 */
     const float t121 = (t120 * t120);  /* guo.py:154 */
     const float t122 = (0x1p+0f / t121);  /* guo.py:154 */
+    const float p_var_gyr = s->params.var_gyr;
     const float t123 = sqrtf(p_var_gyr);  /* guo.py:155 */
     const float t124 = (t111 * t120);  /* guo.py:155 */
     const float t125 = (t123 / t124);  /* guo.py:155 */
@@ -305,12 +288,17 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t254 = (t248 ? t253 : t246);  /* vac.py:61 */
     const float t255 = (-t247);  /* vac.py:61 */
     const float t256 = (t248 ? t255 : t247);  /* vac.py:61 */
+    const int x_initialised = (s->initialised != 0u);
     const int t257 = (!x_initialised);  /* guo.py:166 */
     const int t258 = (t57 && t257);  /* guo.py:166 */
     const int t259 = (t258 && t98);  /* guo.py:166 */
+    const float x_q0 = s->q[0];
     const float t260 = (x_initialised ? x_q0 : t250);  /* guo.py:167 */
+    const float x_q1 = s->q[1];
     const float t261 = (x_initialised ? x_q1 : t252);  /* guo.py:167 */
+    const float x_q2 = s->q[2];
     const float t262 = (x_initialised ? x_q2 : t254);  /* guo.py:167 */
+    const float x_q3 = s->q[3];
     const float t263 = (x_initialised ? x_q3 : t256);  /* guo.py:167 */
     const float t265 = ((-0x1p+0f < t103) ? t103 : -0x1p+0f);  /* guo.py:82 */
     const float t266 = ((t265 < 0x1p+0f) ? t265 : 0x1p+0f);  /* guo.py:82 */
@@ -1084,6 +1072,7 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1098 = (t1085 * t1095);  /* algebraic.py:273 */
     const float t1100 = (t1086 * t1095);  /* algebraic.py:273 */
     const float t1102 = (t1087 * t1095);  /* algebraic.py:273 */
+    const int x_heading_set = (s->heading_set != 0u);
     const int t1104 = (!x_heading_set);  /* guo.py:186 */
     const int t1105 = (t110 && t1104);  /* guo.py:186 */
     const int t1106 = (!t1105);  /* guo.py:187 */
@@ -1107,20 +1096,30 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const float t1124 = (-t1056);  /* algebraic.py:415 */
     const float t1125 = (-t1059);  /* algebraic.py:415 */
     const float t1126 = (-t1062);  /* algebraic.py:415 */
+    const float x_S1 = s->S[1];
     const float t1127 = (t1124 * x_S1);  /* algebraic.py:422 */
+    const float x_S3 = s->S[3];
     const float t1128 = (t1125 * x_S3);  /* algebraic.py:422 */
+    const float x_S6 = s->S[6];
     const float t1129 = (t1126 * x_S6);  /* algebraic.py:422 */
     const float t1130 = (t1127 + t1128);  /* algebraic.py:192 */
     const float t1131 = (t1130 + t1129);  /* algebraic.py:192 */
+    const float x_S0 = s->S[0];
     const float t1132 = (x_S0 + t1131);  /* algebraic.py:428 */
+    const float x_S2 = s->S[2];
     const float t1134 = (t1124 * x_S2);  /* algebraic.py:422 */
+    const float x_S4 = s->S[4];
     const float t1135 = (t1125 * x_S4);  /* algebraic.py:422 */
+    const float x_S7 = s->S[7];
     const float t1136 = (t1126 * x_S7);  /* algebraic.py:422 */
     const float t1137 = (t1134 + t1135);  /* algebraic.py:192 */
     const float t1138 = (t1137 + t1136);  /* algebraic.py:192 */
+    const float x_S5 = s->S[5];
     const float t1140 = (t1125 * x_S5);  /* algebraic.py:422 */
+    const float x_S8 = s->S[8];
     const float t1141 = (t1126 * x_S8);  /* algebraic.py:422 */
     const float t1142 = (t1140 + t1141);  /* algebraic.py:192 */
+    const float x_S9 = s->S[9];
     const float t1144 = (t1126 * x_S9);  /* algebraic.py:422 */
     const float t1146 = (t1056 * x_S0);  /* algebraic.py:422 */
     const float t1147 = (t1062 * x_S3);  /* algebraic.py:422 */
@@ -2416,6 +2415,7 @@ void guo_f32_update(guo_f32_state *s, const kf_imu_input_f32 *in, guo_f32_output
     const int t2639 = (t259 || t2520);  /* guo.py:202 */
     const int t2640 = (t2639 && t110);  /* guo.py:202 */
     const int t2641 = (x_heading_set || t2640);  /* guo.py:202 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t2642 = kf_inc_if(x_rejected, t73);  /* guo.py:203 */
     const int t2643 = (x_initialised || t259);  /* guo.py:204 */
     s->q[0] = t2615;

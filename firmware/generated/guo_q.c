@@ -66,53 +66,29 @@ int guo_q_init(guo_q_state *s, const guo_q_params *p)
 
 void guo_q_update(guo_q_state *s, const kf_imu_input_q *in, guo_q_output *out)
 {
-    const int32_t u_gyr0 = in->gyr[0];
-    const int32_t u_gyr1 = in->gyr[1];
-    const int32_t u_gyr2 = in->gyr[2];
-    const int32_t u_acc0 = in->acc[0];
-    const int32_t u_acc1 = in->acc[1];
-    const int32_t u_acc2 = in->acc[2];
-    const int32_t u_mag0 = in->mag[0];
-    const int32_t u_mag1 = in->mag[1];
-    const int32_t u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
     const int32_t u_dt = in->dt;
-    const int32_t p_var_acc = s->params.var_acc;
-    const int32_t p_var_gyr = s->params.var_gyr;
-    const int32_t p_var_mag = s->params.var_mag;
-    const int32_t x_q0 = s->q[0];
-    const int32_t x_q1 = s->q[1];
-    const int32_t x_q2 = s->q[2];
-    const int32_t x_q3 = s->q[3];
-    const int32_t x_S0 = s->S[0];
-    const int32_t x_S1 = s->S[1];
-    const int32_t x_S2 = s->S[2];
-    const int32_t x_S3 = s->S[3];
-    const int32_t x_S4 = s->S[4];
-    const int32_t x_S5 = s->S[5];
-    const int32_t x_S6 = s->S[6];
-    const int32_t x_S7 = s->S[7];
-    const int32_t x_S8 = s->S[8];
-    const int32_t x_S9 = s->S[9];
-    const int x_initialised = (s->initialised != 0u);
-    const int x_heading_set = (s->heading_set != 0u);
-    const int32_t x_rejected = s->rejected;
     const int32_t t32_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t32 = ((0 < t32_0) ? t32_0 : 0);  /* common.py:62 Q3.28 */
     const int32_t t34_0 = kf_sat((((int64_t)t32) * 4), 0, 1073741824);
     const int32_t t34 = ((t34_0 < 1073741824) ? t34_0 : 1073741824);  /* common.py:62 Q1.30 */
+    const int32_t u_gyr0 = in->gyr[0];
     const int32_t t35 = ((int32_t)((((int64_t)u_gyr0) < 0) ? (-((int64_t)u_gyr0)) : ((int64_t)u_gyr0)));  /* common.py:50 Q7.24 */
     const int t37 = ((((int64_t)t35) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr1 = in->gyr[1];
     const int32_t t38 = ((int32_t)((((int64_t)u_gyr1) < 0) ? (-((int64_t)u_gyr1)) : ((int64_t)u_gyr1)));  /* common.py:50 Q7.24 */
     const int t39 = ((((int64_t)t38) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr2 = in->gyr[2];
     const int32_t t40 = ((int32_t)((((int64_t)u_gyr2) < 0) ? (-((int64_t)u_gyr2)) : ((int64_t)u_gyr2)));  /* common.py:50 Q7.24 */
     const int t41 = ((((int64_t)t40) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
     const int t42 = (t37 && t39);  /* common.py:50 */
     const int t43 = (t42 && t41);  /* common.py:50 */
+    const int32_t u_acc0 = in->acc[0];
     const int32_t t44 = ((int32_t)((((int64_t)u_acc0) < 0) ? (-((int64_t)u_acc0)) : ((int64_t)u_acc0)));  /* common.py:50 Q9.22 */
     const int t46 = ((((int64_t)t44) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc1 = in->acc[1];
     const int32_t t47 = ((int32_t)((((int64_t)u_acc1) < 0) ? (-((int64_t)u_acc1)) : ((int64_t)u_acc1)));  /* common.py:50 Q9.22 */
     const int t48 = ((((int64_t)t47) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc2 = in->acc[2];
     const int32_t t49 = ((int32_t)((((int64_t)u_acc2) < 0) ? (-((int64_t)u_acc2)) : ((int64_t)u_acc2)));  /* common.py:50 Q9.22 */
     const int t50 = ((((int64_t)t49) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
     const int t51 = (t46 && t48);  /* common.py:50 */
@@ -122,14 +98,18 @@ void guo_q_update(guo_q_state *s, const kf_imu_input_q *in, guo_q_output *out)
     const int t55 = (t43 && t52);  /* common.py:63 */
     const int t56 = (t55 && t53);  /* common.py:63 */
     const int t57 = (t56 && t54);  /* common.py:63 */
+    const int32_t u_mag0 = in->mag[0];
     const int32_t t58 = ((int32_t)((((int64_t)u_mag0) < 0) ? (-((int64_t)u_mag0)) : ((int64_t)u_mag0)));  /* common.py:50 Q14.17 */
     const int t60 = ((((int64_t)t58) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag1 = in->mag[1];
     const int32_t t61 = ((int32_t)((((int64_t)u_mag1) < 0) ? (-((int64_t)u_mag1)) : ((int64_t)u_mag1)));  /* common.py:50 Q14.17 */
     const int t62 = ((((int64_t)t61) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag2 = in->mag[2];
     const int32_t t63 = ((int32_t)((((int64_t)u_mag2) < 0) ? (-((int64_t)u_mag2)) : ((int64_t)u_mag2)));  /* common.py:50 Q14.17 */
     const int t64 = ((((int64_t)t63) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
     const int t65 = (t60 && t62);  /* common.py:50 */
     const int t66 = (t65 && t64);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t67 = (t57 && u_mag_valid);  /* common.py:67 */
     const int t68 = (t67 && t66);  /* common.py:67 */
     const int t69 = (!t66);  /* common.py:69 */
@@ -167,7 +147,9 @@ void guo_q_update(guo_q_state *s, const kf_imu_input_q *in, guo_q_output *out)
     const int t108 = (((int64_t)2089072093) <= (((int64_t)t106) * 2048));  /* guo.py:145 */
     const int t109 = (t68 && t104);  /* guo.py:145 */
     const int t110 = (t109 && t108);  /* guo.py:145 */
+    const int32_t p_var_acc = s->params.var_acc;
     const int32_t t111 = ((int32_t)kf_isqrt_rnd((((int64_t)p_var_acc) * 1073741824)));  /* guo.py:150 Q1.30 */
+    const int32_t p_var_mag = s->params.var_mag;
     const int32_t t112 = ((int32_t)kf_isqrt_rnd((((int64_t)p_var_mag) * INT64_C(2147483648))));  /* guo.py:151 Q2.29 */
     const int32_t t113 = kf_div_rnd((((int64_t)t112) * 1048576), ((int64_t)t111), 524, 1657944230);  /* guo.py:151 Q12.19 */
     const int32_t t114 = ((524 < t113) ? t113 : 524);  /* guo.py:151 Q12.19 */
@@ -178,6 +160,7 @@ void guo_q_update(guo_q_state *s, const kf_imu_input_q *in, guo_q_output *out)
     const int32_t t120 = ((t119 < 67108864) ? 67108864 : t119);  /* guo.py:153 Q5.26 */
     const int32_t t121 = ((int32_t)((kf_smull(t120, t120) + 1073741824) >> 31));  /* guo.py:154 Q10.21 */
     const int32_t t122 = kf_div_rnd((((int64_t)1073741824) * 2097152), ((int64_t)t121), 1717987, 1073741824);  /* guo.py:154 Q1.30 */
+    const int32_t p_var_gyr = s->params.var_gyr;
     const int32_t t123 = ((int32_t)kf_isqrt_rnd((((int64_t)p_var_gyr) * INT64_C(2147483648))));  /* guo.py:155 Q2.29 */
     const int32_t t124 = ((int32_t)((kf_smull(t111, t120) + 536870912) >> 30));  /* guo.py:155 Q5.26 */
     const int32_t t125 = kf_div_rnd((((int64_t)t123) * 65536), ((int64_t)t124), 2, 1657944230);  /* guo.py:155 Q12.19 */
@@ -304,12 +287,17 @@ void guo_q_update(guo_q_state *s, const kf_imu_input_q *in, guo_q_output *out)
     const int32_t t254 = (t248 ? t253 : t246);  /* vac.py:61 Q1.30 */
     const int32_t t255 = ((int32_t)(-((int64_t)t247)));  /* vac.py:61 Q1.30 */
     const int32_t t256 = (t248 ? t255 : t247);  /* vac.py:61 Q1.30 */
+    const int x_initialised = (s->initialised != 0u);
     const int t257 = (!x_initialised);  /* guo.py:166 */
     const int t258 = (t57 && t257);  /* guo.py:166 */
     const int t259 = (t258 && t98);  /* guo.py:166 */
+    const int32_t x_q0 = s->q[0];
     const int32_t t260 = (x_initialised ? x_q0 : t250);  /* guo.py:167 Q1.30 */
+    const int32_t x_q1 = s->q[1];
     const int32_t t261 = (x_initialised ? x_q1 : t252);  /* guo.py:167 Q1.30 */
+    const int32_t x_q2 = s->q[2];
     const int32_t t262 = (x_initialised ? x_q2 : t254);  /* guo.py:167 Q1.30 */
+    const int32_t x_q3 = s->q[3];
     const int32_t t263 = (x_initialised ? x_q3 : t256);  /* guo.py:167 Q1.30 */
     const int32_t t265 = ((-536870912 < t103) ? t103 : -536870912);  /* guo.py:82 Q2.29 */
     const int32_t t266_0 = kf_sat((((int64_t)t265) * 2), -1073741824, 1073741824);
@@ -1079,6 +1067,7 @@ void guo_q_update(guo_q_state *s, const kf_imu_input_q *in, guo_q_output *out)
     const int32_t t1098 = kf_mul_dyn(t1085, t1095, -1, -1073741824, 1073741824);  /* algebraic.py:273 Q1.30 */
     const int32_t t1100 = kf_mul_dyn(t1086, t1095, -1, -1073741824, 1073741824);  /* algebraic.py:273 Q1.30 */
     const int32_t t1102 = kf_mul_dyn(t1087, t1095, -1, -1073741824, 1073741824);  /* algebraic.py:273 Q1.30 */
+    const int x_heading_set = (s->heading_set != 0u);
     const int t1104 = (!x_heading_set);  /* guo.py:186 */
     const int t1105 = (t110 && t1104);  /* guo.py:186 */
     const int t1106 = (!t1105);  /* guo.py:187 */
@@ -1102,20 +1091,30 @@ void guo_q_update(guo_q_state *s, const kf_imu_input_q *in, guo_q_output *out)
     const int32_t t1124 = ((int32_t)(-((int64_t)t1056)));  /* algebraic.py:415 Q0.31 */
     const int32_t t1125 = ((int32_t)(-((int64_t)t1059)));  /* algebraic.py:415 Q0.31 */
     const int32_t t1126 = ((int32_t)(-((int64_t)t1062)));  /* algebraic.py:415 Q0.31 */
+    const int32_t x_S1 = s->S[1];
     const int32_t t1127 = ((int32_t)((kf_smull(t1124, x_S1) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
+    const int32_t x_S3 = s->S[3];
     const int32_t t1128 = ((int32_t)((kf_smull(t1125, x_S3) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
+    const int32_t x_S6 = s->S[6];
     const int32_t t1129 = ((int32_t)((kf_smull(t1126, x_S6) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
     const int32_t t1130 = ((int32_t)(((((int64_t)t1127) + ((int64_t)t1128)) + 1) >> 1));  /* algebraic.py:192 Q3.28 */
     const int32_t t1131 = ((int32_t)((((((int64_t)t1130) * 2) + ((int64_t)t1129)) + 1) >> 1));  /* algebraic.py:192 Q3.28 */
+    const int32_t x_S0 = s->S[0];
     const int32_t t1132 = kf_sat((((int64_t)x_S0) + ((int64_t)t1131)), -1073741824, 1073741824);  /* algebraic.py:428 Q3.28 */
+    const int32_t x_S2 = s->S[2];
     const int32_t t1134 = ((int32_t)((kf_smull(t1124, x_S2) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
+    const int32_t x_S4 = s->S[4];
     const int32_t t1135 = ((int32_t)((kf_smull(t1125, x_S4) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
+    const int32_t x_S7 = s->S[7];
     const int32_t t1136 = ((int32_t)((kf_smull(t1126, x_S7) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
     const int32_t t1137 = ((int32_t)(((((int64_t)t1134) + ((int64_t)t1135)) + 1) >> 1));  /* algebraic.py:192 Q3.28 */
     const int32_t t1138 = kf_sat(((((((int64_t)t1137) * 2) + ((int64_t)t1136)) + 1) >> 1), -1073741824, 1073741824);  /* algebraic.py:192 Q3.28 */
+    const int32_t x_S5 = s->S[5];
     const int32_t t1140 = ((int32_t)((kf_smull(t1125, x_S5) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
+    const int32_t x_S8 = s->S[8];
     const int32_t t1141 = ((int32_t)((kf_smull(t1126, x_S8) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
     const int32_t t1142 = kf_sat((((((int64_t)t1140) + ((int64_t)t1141)) + 1) >> 1), -1073741824, 1073741824);  /* algebraic.py:192 Q3.28 */
+    const int32_t x_S9 = s->S[9];
     const int32_t t1144 = kf_sat(((kf_smull(t1126, x_S9) + 536870912) >> 30), -1073741824, 1073741824);  /* algebraic.py:422 Q2.29 */
     const int32_t t1146 = ((int32_t)((kf_smull(t1056, x_S0) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
     const int32_t t1147 = ((int32_t)((kf_smull(t1062, x_S3) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
@@ -2364,6 +2363,7 @@ void guo_q_update(guo_q_state *s, const kf_imu_input_q *in, guo_q_output *out)
     const int t2639 = (t259 || t2520);  /* guo.py:202 */
     const int t2640 = (t2639 && t110);  /* guo.py:202 */
     const int t2641 = (x_heading_set || t2640);  /* guo.py:202 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t2642 = kf_inc_if(x_rejected, t73);  /* guo.py:203 */
     const int t2643 = (x_initialised || t259);  /* guo.py:204 */
     s->q[0] = kf_sat(((int64_t)t2615), -1073741824, 1073741824);

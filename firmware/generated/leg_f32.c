@@ -153,17 +153,70 @@ int leg_f32_init(leg_f32_state *s, const leg_f32_params *p)
 
 void leg_f32_update(leg_f32_state *s, const kf_leg_input_f32 *in, leg_f32_output *out)
 {
-    const float u_gyr0 = in->gyr[0];
-    const float u_gyr1 = in->gyr[1];
-    const float u_acc0 = in->acc[0];
-    const float u_acc1 = in->acc[1];
-    const float u_acc2 = in->acc[2];
-    const float u_acc3 = in->acc[3];
-    const int u_gyr_valid0 = (in->gyr_valid[0] != 0u);
-    const int u_gyr_valid1 = (in->gyr_valid[1] != 0u);
-    const int u_acc_valid0 = (in->acc_valid[0] != 0u);
-    const int u_acc_valid1 = (in->acc_valid[1] != 0u);
     const float u_dt = in->dt;
+    const int t71 = (0.0f < u_dt);  /* leg.py:276 */
+    const int t73 = (u_dt <= 0x1.99999ap-4f);  /* leg.py:276 */
+    const int t74 = (t71 && t73);  /* leg.py:276 */
+    const float u_gyr0 = in->gyr[0];
+    const float t75 = fabsf(u_gyr0);  /* leg.py:279 */
+    const int t77 = (t75 <= 0x1.1740bp+5f);  /* leg.py:279 */
+    const int u_gyr_valid0 = (in->gyr_valid[0] != 0u);
+    const int t78 = (u_gyr_valid0 && t77);  /* leg.py:279 */
+    const float u_gyr1 = in->gyr[1];
+    const float t79 = fabsf(u_gyr1);  /* leg.py:279 */
+    const int t80 = (t79 <= 0x1.1740bp+5f);  /* leg.py:279 */
+    const int u_gyr_valid1 = (in->gyr_valid[1] != 0u);
+    const int t81 = (u_gyr_valid1 && t80);  /* leg.py:279 */
+    const float u_acc0 = in->acc[0];
+    const float t82 = fabsf(u_acc0);  /* leg.py:280 */
+    const int t84 = (t82 <= 0x1.39d014p+7f);  /* leg.py:280 */
+    const float u_acc1 = in->acc[1];
+    const float t85 = fabsf(u_acc1);  /* leg.py:281 */
+    const int t86 = (t85 <= 0x1.39d014p+7f);  /* leg.py:281 */
+    const int u_acc_valid0 = (in->acc_valid[0] != 0u);
+    const int t87 = (u_acc_valid0 && t84);  /* leg.py:280 */
+    const int t88 = (t87 && t86);  /* leg.py:280 */
+    const float u_acc2 = in->acc[2];
+    const float t89 = fabsf(u_acc2);  /* leg.py:280 */
+    const int t90 = (t89 <= 0x1.39d014p+7f);  /* leg.py:280 */
+    const float u_acc3 = in->acc[3];
+    const float t91 = fabsf(u_acc3);  /* leg.py:281 */
+    const int t92 = (t91 <= 0x1.39d014p+7f);  /* leg.py:281 */
+    const int u_acc_valid1 = (in->acc_valid[1] != 0u);
+    const int t93 = (u_acc_valid1 && t90);  /* leg.py:280 */
+    const int t94 = (t93 && t92);  /* leg.py:280 */
+    const int t95 = (!t78);  /* leg.py:282 */
+    const int t96 = (u_gyr_valid0 && t95);  /* leg.py:282 */
+    const int t97 = (!t81);  /* leg.py:282 */
+    const int t98 = (u_gyr_valid1 && t97);  /* leg.py:282 */
+    const int t99 = (!t88);  /* leg.py:283 */
+    const int t100 = (u_acc_valid0 && t99);  /* leg.py:283 */
+    const int t101 = (!t94);  /* leg.py:283 */
+    const int t102 = (u_acc_valid1 && t101);  /* leg.py:283 */
+    const float p_sigma_gyr = s->params.sigma_gyr;
+    const float t103 = (p_sigma_gyr * p_sigma_gyr);  /* leg.py:287 */
+    const float p_sigma_acc = s->params.sigma_acc;
+    const float t104 = (p_sigma_acc * p_sigma_acc);  /* leg.py:287 */
+    const int32_t x_rejected = s->rejected;
+    const int32_t t105 = kf_inc_if(x_rejected, t96);  /* leg.py:296 */
+    const int32_t t106 = kf_inc_if(t105, t98);  /* leg.py:296 */
+    const int32_t t107 = kf_inc_if(t106, t100);  /* leg.py:296 */
+    const int32_t t108 = kf_inc_if(t107, t102);  /* leg.py:296 */
+    const int t109 = (!t74);  /* leg.py:297 */
+    const int x_initialised = (s->initialised != 0u);
+    const int t110 = (x_initialised && t109);  /* leg.py:297 */
+    const int32_t t111 = kf_inc_if(t108, t110);  /* leg.py:297 */
+    const int t112 = (t78 && t81);  /* leg.py:302 */
+    const int t113 = (t112 && t74);  /* leg.py:304 */
+    const int x_hist_ok0 = (s->hist_ok[0] != 0u);
+    const int t114 = (t113 && x_hist_ok0);  /* leg.py:304 */
+    const int x_hist_ok1 = (s->hist_ok[1] != 0u);
+    const int t115 = (t114 && x_hist_ok1);  /* leg.py:304 */
+    const int t116 = (!x_initialised);  /* leg.py:305 */
+    const int t117 = (t116 && t88);  /* leg.py:305 */
+    const int t118 = (t117 && t94);  /* leg.py:305 */
+    const int t119 = (t118 && t115);  /* leg.py:305 */
+    const int t120 = (x_initialised && t74);  /* leg.py:306 */
     const float p_m1 = s->params.m1;
     const float p_m2 = s->params.m2;
     const float p_L1 = s->params.L1;
@@ -176,12 +229,7 @@ void leg_f32_update(leg_f32_state *s, const kf_leg_input_f32 *in, leg_f32_output
     const float p_b1 = s->params.b1;
     const float p_a2 = s->params.a2;
     const float p_b2 = s->params.b2;
-    const float p_sigma_gyr = s->params.sigma_gyr;
-    const float p_sigma_acc = s->params.sigma_acc;
     const float p_q_torque = s->params.q_torque;
-    const float p_p0_angle = s->params.p0_angle;
-    const float p_p0_rate = s->params.p0_rate;
-    const float p_p0_torque = s->params.p0_torque;
     const float x_z0 = s->z[0];
     const float x_z1 = s->z[1];
     const float x_zd0 = s->zd[0];
@@ -209,64 +257,6 @@ void leg_f32_update(leg_f32_state *s, const kf_leg_input_f32 *in, leg_f32_output
     const float x_P18 = s->P[18];
     const float x_P19 = s->P[19];
     const float x_P20 = s->P[20];
-    const int x_initialised = (s->initialised != 0u);
-    const float x_gyr_hist0 = s->gyr_hist[0];
-    const float x_gyr_hist1 = s->gyr_hist[1];
-    const float x_gyr_hist2 = s->gyr_hist[2];
-    const float x_gyr_hist3 = s->gyr_hist[3];
-    const float x_dt_prev = s->dt_prev;
-    const int x_hist_ok0 = (s->hist_ok[0] != 0u);
-    const int x_hist_ok1 = (s->hist_ok[1] != 0u);
-    const int32_t x_rejected = s->rejected;
-    const int32_t x_skipped = s->skipped;
-    const int32_t x_resets = s->resets;
-    const int t71 = (0.0f < u_dt);  /* leg.py:276 */
-    const int t73 = (u_dt <= 0x1.99999ap-4f);  /* leg.py:276 */
-    const int t74 = (t71 && t73);  /* leg.py:276 */
-    const float t75 = fabsf(u_gyr0);  /* leg.py:279 */
-    const int t77 = (t75 <= 0x1.1740bp+5f);  /* leg.py:279 */
-    const int t78 = (u_gyr_valid0 && t77);  /* leg.py:279 */
-    const float t79 = fabsf(u_gyr1);  /* leg.py:279 */
-    const int t80 = (t79 <= 0x1.1740bp+5f);  /* leg.py:279 */
-    const int t81 = (u_gyr_valid1 && t80);  /* leg.py:279 */
-    const float t82 = fabsf(u_acc0);  /* leg.py:280 */
-    const int t84 = (t82 <= 0x1.39d014p+7f);  /* leg.py:280 */
-    const float t85 = fabsf(u_acc1);  /* leg.py:281 */
-    const int t86 = (t85 <= 0x1.39d014p+7f);  /* leg.py:281 */
-    const int t87 = (u_acc_valid0 && t84);  /* leg.py:280 */
-    const int t88 = (t87 && t86);  /* leg.py:280 */
-    const float t89 = fabsf(u_acc2);  /* leg.py:280 */
-    const int t90 = (t89 <= 0x1.39d014p+7f);  /* leg.py:280 */
-    const float t91 = fabsf(u_acc3);  /* leg.py:281 */
-    const int t92 = (t91 <= 0x1.39d014p+7f);  /* leg.py:281 */
-    const int t93 = (u_acc_valid1 && t90);  /* leg.py:280 */
-    const int t94 = (t93 && t92);  /* leg.py:280 */
-    const int t95 = (!t78);  /* leg.py:282 */
-    const int t96 = (u_gyr_valid0 && t95);  /* leg.py:282 */
-    const int t97 = (!t81);  /* leg.py:282 */
-    const int t98 = (u_gyr_valid1 && t97);  /* leg.py:282 */
-    const int t99 = (!t88);  /* leg.py:283 */
-    const int t100 = (u_acc_valid0 && t99);  /* leg.py:283 */
-    const int t101 = (!t94);  /* leg.py:283 */
-    const int t102 = (u_acc_valid1 && t101);  /* leg.py:283 */
-    const float t103 = (p_sigma_gyr * p_sigma_gyr);  /* leg.py:287 */
-    const float t104 = (p_sigma_acc * p_sigma_acc);  /* leg.py:287 */
-    const int32_t t105 = kf_inc_if(x_rejected, t96);  /* leg.py:296 */
-    const int32_t t106 = kf_inc_if(t105, t98);  /* leg.py:296 */
-    const int32_t t107 = kf_inc_if(t106, t100);  /* leg.py:296 */
-    const int32_t t108 = kf_inc_if(t107, t102);  /* leg.py:296 */
-    const int t109 = (!t74);  /* leg.py:297 */
-    const int t110 = (x_initialised && t109);  /* leg.py:297 */
-    const int32_t t111 = kf_inc_if(t108, t110);  /* leg.py:297 */
-    const int t112 = (t78 && t81);  /* leg.py:302 */
-    const int t113 = (t112 && t74);  /* leg.py:304 */
-    const int t114 = (t113 && x_hist_ok0);  /* leg.py:304 */
-    const int t115 = (t114 && x_hist_ok1);  /* leg.py:304 */
-    const int t116 = (!x_initialised);  /* leg.py:305 */
-    const int t117 = (t116 && t88);  /* leg.py:305 */
-    const int t118 = (t117 && t94);  /* leg.py:305 */
-    const int t119 = (t118 && t115);  /* leg.py:305 */
-    const int t120 = (x_initialised && t74);  /* leg.py:306 */
     int t3302 = 0;
     float t3319 = 0.0f;
     float t3321 = 0.0f;
@@ -3608,6 +3598,11 @@ void leg_f32_update(leg_f32_state *s, const kf_leg_input_f32 *in, leg_f32_output
         const float t3424 = (t3285 * t3316);  /* ekf.py:411 */
         t3425 = (t3423 - t3424);  /* ekf.py:411 */
     }
+    const float x_gyr_hist0 = s->gyr_hist[0];
+    const float x_gyr_hist1 = s->gyr_hist[1];
+    const float x_gyr_hist2 = s->gyr_hist[2];
+    const float x_gyr_hist3 = s->gyr_hist[3];
+    const float x_dt_prev = s->dt_prev;
     float t3518 = 0.0f;
     float t3627 = 0.0f;
     float t3766 = 0.0f;
@@ -3945,8 +3940,11 @@ void leg_f32_update(leg_f32_state *s, const kf_leg_input_f32 *in, leg_f32_output
         t3766 = (t3764 - t3765);  /* mbs.py:221 */
         t3767 = (t3763 - t3762);  /* mbs.py:222 */
     }
+    const float p_p0_angle = s->params.p0_angle;
     const float t3768 = (p_p0_angle * p_p0_angle);  /* leg.py:195 */
+    const float p_p0_rate = s->params.p0_rate;
     const float t3769 = (p_p0_rate * p_p0_rate);  /* leg.py:195 */
+    const float p_p0_torque = s->params.p0_torque;
     const float t3770 = (p_p0_torque * p_p0_torque);  /* leg.py:195 */
     const float t3771 = (t120 ? t3319 : x_z0);  /* ekf.py:430 */
     const float t3772 = (t119 ? t3518 : t3771);  /* ekf.py:430 */
@@ -4076,7 +4074,9 @@ void leg_f32_update(leg_f32_state *s, const kf_leg_input_f32 *in, leg_f32_output
     const int t3899 = (!t3871);  /* ekf.py:449 */
     const int t3900 = (t3825 && t3899);  /* ekf.py:449 */
     const int t3901 = (t120 && t3302);  /* leg.py:328 */
+    const int32_t x_skipped = s->skipped;
     const int32_t t3902 = kf_inc_if(x_skipped, t3901);  /* leg.py:329 */
+    const int32_t x_resets = s->resets;
     const int32_t t3903 = kf_inc_if(x_resets, t3871);  /* leg.py:330 */
     const float t3904 = ((0.0f < t3896) ? t3896 : 0.0f);  /* leg.py:332 */
     const float t3905 = sqrtf(t3904);  /* leg.py:332 */

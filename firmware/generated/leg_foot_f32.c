@@ -186,20 +186,84 @@ int leg_foot_f32_init(leg_foot_f32_state *s, const leg_foot_f32_params *p)
 
 void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_foot_f32_output *out)
 {
-    const float u_gyr0 = in->gyr[0];
-    const float u_gyr1 = in->gyr[1];
-    const float u_acc0 = in->acc[0];
-    const float u_acc1 = in->acc[1];
-    const float u_acc2 = in->acc[2];
-    const float u_acc3 = in->acc[3];
-    const float u_foot0 = in->foot[0];
-    const float u_foot1 = in->foot[1];
-    const int u_gyr_valid0 = (in->gyr_valid[0] != 0u);
-    const int u_gyr_valid1 = (in->gyr_valid[1] != 0u);
-    const int u_acc_valid0 = (in->acc_valid[0] != 0u);
-    const int u_acc_valid1 = (in->acc_valid[1] != 0u);
-    const int u_foot_valid = (in->foot_valid != 0u);
     const float u_dt = in->dt;
+    const int t92 = (0.0f < u_dt);  /* leg.py:276 */
+    const int t94 = (u_dt <= 0x1.99999ap-4f);  /* leg.py:276 */
+    const int t95 = (t92 && t94);  /* leg.py:276 */
+    const float u_gyr0 = in->gyr[0];
+    const float t96 = fabsf(u_gyr0);  /* leg.py:279 */
+    const int t98 = (t96 <= 0x1.1740bp+5f);  /* leg.py:279 */
+    const int u_gyr_valid0 = (in->gyr_valid[0] != 0u);
+    const int t99 = (u_gyr_valid0 && t98);  /* leg.py:279 */
+    const float u_gyr1 = in->gyr[1];
+    const float t100 = fabsf(u_gyr1);  /* leg.py:279 */
+    const int t101 = (t100 <= 0x1.1740bp+5f);  /* leg.py:279 */
+    const int u_gyr_valid1 = (in->gyr_valid[1] != 0u);
+    const int t102 = (u_gyr_valid1 && t101);  /* leg.py:279 */
+    const float u_acc0 = in->acc[0];
+    const float t103 = fabsf(u_acc0);  /* leg.py:280 */
+    const int t105 = (t103 <= 0x1.39d014p+7f);  /* leg.py:280 */
+    const float u_acc1 = in->acc[1];
+    const float t106 = fabsf(u_acc1);  /* leg.py:281 */
+    const int t107 = (t106 <= 0x1.39d014p+7f);  /* leg.py:281 */
+    const int u_acc_valid0 = (in->acc_valid[0] != 0u);
+    const int t108 = (u_acc_valid0 && t105);  /* leg.py:280 */
+    const int t109 = (t108 && t107);  /* leg.py:280 */
+    const float u_acc2 = in->acc[2];
+    const float t110 = fabsf(u_acc2);  /* leg.py:280 */
+    const int t111 = (t110 <= 0x1.39d014p+7f);  /* leg.py:280 */
+    const float u_acc3 = in->acc[3];
+    const float t112 = fabsf(u_acc3);  /* leg.py:281 */
+    const int t113 = (t112 <= 0x1.39d014p+7f);  /* leg.py:281 */
+    const int u_acc_valid1 = (in->acc_valid[1] != 0u);
+    const int t114 = (u_acc_valid1 && t111);  /* leg.py:280 */
+    const int t115 = (t114 && t113);  /* leg.py:280 */
+    const int t116 = (!t99);  /* leg.py:282 */
+    const int t117 = (u_gyr_valid0 && t116);  /* leg.py:282 */
+    const int t118 = (!t102);  /* leg.py:282 */
+    const int t119 = (u_gyr_valid1 && t118);  /* leg.py:282 */
+    const int t120 = (!t109);  /* leg.py:283 */
+    const int t121 = (u_acc_valid0 && t120);  /* leg.py:283 */
+    const int t122 = (!t115);  /* leg.py:283 */
+    const int t123 = (u_acc_valid1 && t122);  /* leg.py:283 */
+    const float p_sigma_gyr = s->params.sigma_gyr;
+    const float t124 = (p_sigma_gyr * p_sigma_gyr);  /* leg.py:287 */
+    const float p_sigma_acc = s->params.sigma_acc;
+    const float t125 = (p_sigma_acc * p_sigma_acc);  /* leg.py:287 */
+    const float u_foot0 = in->foot[0];
+    const float t126 = fabsf(u_foot0);  /* leg.py:289 */
+    const int t128 = (t126 <= 0x1.388p+12f);  /* leg.py:289 */
+    const float u_foot1 = in->foot[1];
+    const float t129 = fabsf(u_foot1);  /* leg.py:289 */
+    const int t130 = (t129 <= 0x1.388p+12f);  /* leg.py:289 */
+    const int u_foot_valid = (in->foot_valid != 0u);
+    const int t131 = (u_foot_valid && t128);  /* leg.py:289 */
+    const int t132 = (t131 && t130);  /* leg.py:289 */
+    const int t133 = (!t132);  /* leg.py:290 */
+    const int t134 = (u_foot_valid && t133);  /* leg.py:290 */
+    const float p_sigma_foot = s->params.sigma_foot;
+    const float t135 = (p_sigma_foot * p_sigma_foot);  /* leg.py:293 */
+    const int32_t x_rejected = s->rejected;
+    const int32_t t136 = kf_inc_if(x_rejected, t117);  /* leg.py:296 */
+    const int32_t t137 = kf_inc_if(t136, t119);  /* leg.py:296 */
+    const int32_t t138 = kf_inc_if(t137, t121);  /* leg.py:296 */
+    const int32_t t139 = kf_inc_if(t138, t123);  /* leg.py:296 */
+    const int32_t t140 = kf_inc_if(t139, t134);  /* leg.py:296 */
+    const int t141 = (!t95);  /* leg.py:297 */
+    const int x_initialised = (s->initialised != 0u);
+    const int t142 = (x_initialised && t141);  /* leg.py:297 */
+    const int32_t t143 = kf_inc_if(t140, t142);  /* leg.py:297 */
+    const int t144 = (t99 && t102);  /* leg.py:302 */
+    const int t145 = (t144 && t95);  /* leg.py:304 */
+    const int x_hist_ok0 = (s->hist_ok[0] != 0u);
+    const int t146 = (t145 && x_hist_ok0);  /* leg.py:304 */
+    const int x_hist_ok1 = (s->hist_ok[1] != 0u);
+    const int t147 = (t146 && x_hist_ok1);  /* leg.py:304 */
+    const int t148 = (!x_initialised);  /* leg.py:305 */
+    const int t149 = (t148 && t109);  /* leg.py:305 */
+    const int t150 = (t149 && t115);  /* leg.py:305 */
+    const int t151 = (t150 && t147);  /* leg.py:305 */
+    const int t152 = (x_initialised && t95);  /* leg.py:306 */
     const float p_m1 = s->params.m1;
     const float p_m2 = s->params.m2;
     const float p_L1 = s->params.L1;
@@ -212,15 +276,8 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
     const float p_b1 = s->params.b1;
     const float p_a2 = s->params.a2;
     const float p_b2 = s->params.b2;
-    const float p_sigma_gyr = s->params.sigma_gyr;
-    const float p_sigma_acc = s->params.sigma_acc;
     const float p_q_torque = s->params.q_torque;
-    const float p_p0_angle = s->params.p0_angle;
-    const float p_p0_rate = s->params.p0_rate;
-    const float p_p0_torque = s->params.p0_torque;
-    const float p_sigma_foot = s->params.sigma_foot;
     const float p_q_force = s->params.q_force;
-    const float p_p0_force = s->params.p0_force;
     const float p_L2 = s->params.L2;
     const float x_z0 = s->z[0];
     const float x_z1 = s->z[1];
@@ -266,74 +323,6 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
     const float x_P33 = s->P[33];
     const float x_P34 = s->P[34];
     const float x_P35 = s->P[35];
-    const int x_initialised = (s->initialised != 0u);
-    const float x_gyr_hist0 = s->gyr_hist[0];
-    const float x_gyr_hist1 = s->gyr_hist[1];
-    const float x_gyr_hist2 = s->gyr_hist[2];
-    const float x_gyr_hist3 = s->gyr_hist[3];
-    const float x_dt_prev = s->dt_prev;
-    const int x_hist_ok0 = (s->hist_ok[0] != 0u);
-    const int x_hist_ok1 = (s->hist_ok[1] != 0u);
-    const int32_t x_rejected = s->rejected;
-    const int32_t x_skipped = s->skipped;
-    const int32_t x_resets = s->resets;
-    const int t92 = (0.0f < u_dt);  /* leg.py:276 */
-    const int t94 = (u_dt <= 0x1.99999ap-4f);  /* leg.py:276 */
-    const int t95 = (t92 && t94);  /* leg.py:276 */
-    const float t96 = fabsf(u_gyr0);  /* leg.py:279 */
-    const int t98 = (t96 <= 0x1.1740bp+5f);  /* leg.py:279 */
-    const int t99 = (u_gyr_valid0 && t98);  /* leg.py:279 */
-    const float t100 = fabsf(u_gyr1);  /* leg.py:279 */
-    const int t101 = (t100 <= 0x1.1740bp+5f);  /* leg.py:279 */
-    const int t102 = (u_gyr_valid1 && t101);  /* leg.py:279 */
-    const float t103 = fabsf(u_acc0);  /* leg.py:280 */
-    const int t105 = (t103 <= 0x1.39d014p+7f);  /* leg.py:280 */
-    const float t106 = fabsf(u_acc1);  /* leg.py:281 */
-    const int t107 = (t106 <= 0x1.39d014p+7f);  /* leg.py:281 */
-    const int t108 = (u_acc_valid0 && t105);  /* leg.py:280 */
-    const int t109 = (t108 && t107);  /* leg.py:280 */
-    const float t110 = fabsf(u_acc2);  /* leg.py:280 */
-    const int t111 = (t110 <= 0x1.39d014p+7f);  /* leg.py:280 */
-    const float t112 = fabsf(u_acc3);  /* leg.py:281 */
-    const int t113 = (t112 <= 0x1.39d014p+7f);  /* leg.py:281 */
-    const int t114 = (u_acc_valid1 && t111);  /* leg.py:280 */
-    const int t115 = (t114 && t113);  /* leg.py:280 */
-    const int t116 = (!t99);  /* leg.py:282 */
-    const int t117 = (u_gyr_valid0 && t116);  /* leg.py:282 */
-    const int t118 = (!t102);  /* leg.py:282 */
-    const int t119 = (u_gyr_valid1 && t118);  /* leg.py:282 */
-    const int t120 = (!t109);  /* leg.py:283 */
-    const int t121 = (u_acc_valid0 && t120);  /* leg.py:283 */
-    const int t122 = (!t115);  /* leg.py:283 */
-    const int t123 = (u_acc_valid1 && t122);  /* leg.py:283 */
-    const float t124 = (p_sigma_gyr * p_sigma_gyr);  /* leg.py:287 */
-    const float t125 = (p_sigma_acc * p_sigma_acc);  /* leg.py:287 */
-    const float t126 = fabsf(u_foot0);  /* leg.py:289 */
-    const int t128 = (t126 <= 0x1.388p+12f);  /* leg.py:289 */
-    const float t129 = fabsf(u_foot1);  /* leg.py:289 */
-    const int t130 = (t129 <= 0x1.388p+12f);  /* leg.py:289 */
-    const int t131 = (u_foot_valid && t128);  /* leg.py:289 */
-    const int t132 = (t131 && t130);  /* leg.py:289 */
-    const int t133 = (!t132);  /* leg.py:290 */
-    const int t134 = (u_foot_valid && t133);  /* leg.py:290 */
-    const float t135 = (p_sigma_foot * p_sigma_foot);  /* leg.py:293 */
-    const int32_t t136 = kf_inc_if(x_rejected, t117);  /* leg.py:296 */
-    const int32_t t137 = kf_inc_if(t136, t119);  /* leg.py:296 */
-    const int32_t t138 = kf_inc_if(t137, t121);  /* leg.py:296 */
-    const int32_t t139 = kf_inc_if(t138, t123);  /* leg.py:296 */
-    const int32_t t140 = kf_inc_if(t139, t134);  /* leg.py:296 */
-    const int t141 = (!t95);  /* leg.py:297 */
-    const int t142 = (x_initialised && t141);  /* leg.py:297 */
-    const int32_t t143 = kf_inc_if(t140, t142);  /* leg.py:297 */
-    const int t144 = (t99 && t102);  /* leg.py:302 */
-    const int t145 = (t144 && t95);  /* leg.py:304 */
-    const int t146 = (t145 && x_hist_ok0);  /* leg.py:304 */
-    const int t147 = (t146 && x_hist_ok1);  /* leg.py:304 */
-    const int t148 = (!x_initialised);  /* leg.py:305 */
-    const int t149 = (t148 && t109);  /* leg.py:305 */
-    const int t150 = (t149 && t115);  /* leg.py:305 */
-    const int t151 = (t150 && t147);  /* leg.py:305 */
-    const int t152 = (x_initialised && t95);  /* leg.py:306 */
     int t4787 = 0;
     float t4808 = 0.0f;
     float t4810 = 0.0f;
@@ -5217,6 +5206,11 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         const float t4981 = (t4779 * t4805);  /* ekf.py:411 */
         t4982 = (t4980 - t4981);  /* ekf.py:411 */
     }
+    const float x_gyr_hist0 = s->gyr_hist[0];
+    const float x_gyr_hist1 = s->gyr_hist[1];
+    const float x_gyr_hist2 = s->gyr_hist[2];
+    const float x_gyr_hist3 = s->gyr_hist[3];
+    const float x_dt_prev = s->dt_prev;
     float t5075 = 0.0f;
     float t5184 = 0.0f;
     float t5185 = 0.0f;
@@ -5569,9 +5563,13 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
         t5336 = (t5334 - t5335);  /* mbs.py:221 */
         t5337 = (t5333 - t5332);  /* mbs.py:222 */
     }
+    const float p_p0_angle = s->params.p0_angle;
     const float t5338 = (p_p0_angle * p_p0_angle);  /* leg.py:195 */
+    const float p_p0_rate = s->params.p0_rate;
     const float t5339 = (p_p0_rate * p_p0_rate);  /* leg.py:195 */
+    const float p_p0_torque = s->params.p0_torque;
     const float t5340 = (p_p0_torque * p_p0_torque);  /* leg.py:195 */
+    const float p_p0_force = s->params.p0_force;
     const float t5341 = (p_p0_force * p_p0_force);  /* leg.py:198 */
     const float t5342 = (t152 ? t4808 : x_z0);  /* ekf.py:430 */
     const float t5343 = (t151 ? t5075 : t5342);  /* ekf.py:430 */
@@ -5766,7 +5764,9 @@ void leg_foot_f32_update(leg_foot_f32_state *s, const kf_leg_input_f32 *in, leg_
     const int t5535 = (!t5490);  /* ekf.py:449 */
     const int t5536 = (t5430 && t5535);  /* ekf.py:449 */
     const int t5537 = (t152 && t4787);  /* leg.py:328 */
+    const int32_t x_skipped = s->skipped;
     const int32_t t5538 = kf_inc_if(x_skipped, t5537);  /* leg.py:329 */
+    const int32_t x_resets = s->resets;
     const int32_t t5539 = kf_inc_if(x_resets, t5490);  /* leg.py:330 */
     const float t5540 = ((0.0f < t5525) ? t5525 : 0.0f);  /* leg.py:332 */
     const float t5541 = sqrtf(t5540);  /* leg.py:332 */

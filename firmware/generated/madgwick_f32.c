@@ -62,42 +62,28 @@ int madgwick_f32_init(madgwick_f32_state *s, const madgwick_f32_params *p)
 
 void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madgwick_f32_output *out)
 {
-    const float u_gyr0 = in->gyr[0];
-    const float u_gyr1 = in->gyr[1];
-    const float u_gyr2 = in->gyr[2];
-    const float u_acc0 = in->acc[0];
-    const float u_acc1 = in->acc[1];
-    const float u_acc2 = in->acc[2];
-    const float u_mag0 = in->mag[0];
-    const float u_mag1 = in->mag[1];
-    const float u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
-    const float u_dt = in->dt;
-    const float p_beta = s->params.beta;
-    const float p_beta_start = s->params.beta_start;
-    const float p_start_time = s->params.start_time;
-    const float x_q0 = s->q[0];
     const float x_q1 = s->q[1];
-    const float x_q2 = s->q[2];
-    const float x_q3 = s->q[3];
-    const int x_initialised = (s->initialised != 0u);
-    const float x_t_run = s->t_run;
-    const int32_t x_rejected = s->rejected;
     const float t21 = (x_q1 + x_q1);  /* madgwick.py:83 */
+    const float x_q2 = s->q[2];
     const float t22 = (x_q2 + x_q2);  /* madgwick.py:83 */
+    const float x_q3 = s->q[3];
     const float t23 = (x_q3 + x_q3);  /* madgwick.py:83 */
     const float t24 = (t21 * x_q1);  /* madgwick.py:86 */
     const float t25 = (t22 * x_q2);  /* madgwick.py:86 */
     const float t26 = (t24 + t25);  /* madgwick.py:86 */
     const float t28 = (t21 * x_q3);  /* madgwick.py:87 */
+    const float x_q0 = s->q[0];
     const float t29 = (t22 * x_q0);  /* madgwick.py:87 */
     const float t30 = (t28 - t29);  /* madgwick.py:87 */
     const float t32 = (t21 * x_q0);  /* madgwick.py:87 */
     const float t33 = (t22 * x_q3);  /* madgwick.py:87 */
     const float t34 = (t32 + t33);  /* madgwick.py:87 */
     const float t37 = (0x1p+0f - t26);  /* madgwick.py:88 */
+    const float u_acc0 = in->acc[0];
     const float t38 = (u_acc0 * u_acc0);  /* madgwick.py:93 */
+    const float u_acc1 = in->acc[1];
     const float t39 = (u_acc1 * u_acc1);  /* madgwick.py:93 */
+    const float u_acc2 = in->acc[2];
     const float t40 = (u_acc2 * u_acc2);  /* madgwick.py:93 */
     const float t41 = (t38 + t39);  /* madgwick.py:93 */
     const float t42 = (t41 + t40);  /* madgwick.py:93 */
@@ -122,6 +108,10 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const float t65 = (t34 * t46);  /* madgwick.py:95 */
     const float t66 = (t64 + t65);  /* madgwick.py:95 */
     const float t67 = (t63 - t66);  /* madgwick.py:95 */
+    const float u_mag0 = in->mag[0];
+    const float u_mag1 = in->mag[1];
+    const float u_mag2 = in->mag[2];
+    const int u_mag_valid = (in->mag_valid != 0u);
     float t76 = 0.0f;
     float t123 = 0.0f;
     float t126 = 0.0f;
@@ -209,9 +199,14 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const float t165 = (t143 ? t67 : 0.0f);  /* madgwick.py:120 */
     const float t166 = (t155 ? t141 : 0.0f);  /* madgwick.py:120 */
     const float t167 = (t165 + t166);  /* madgwick.py:120 */
+    const float u_dt = in->dt;
     const float t168 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* madgwick.py:124 */
     const float t169 = ((t168 < 0x1p+0f) ? t168 : 0x1p+0f);  /* madgwick.py:124 */
+    const float p_start_time = s->params.start_time;
+    const float x_t_run = s->t_run;
     const int t170 = (x_t_run < p_start_time);  /* madgwick.py:125 */
+    const float p_beta = s->params.beta;
+    const float p_beta_start = s->params.beta_start;
     const float t171 = (t170 ? p_beta_start : p_beta);  /* madgwick.py:125 */
     const float t172 = (t171 * t169);  /* madgwick.py:168 */
     const float t174 = (t167 * t167);  /* madgwick.py:169 */
@@ -230,8 +225,11 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const float t186 = (t163 * t181);  /* madgwick.py:170 */
     const float t188 = (t164 * t181);  /* madgwick.py:170 */
     const float t191 = (0x1p-1f * t169);  /* madgwick.py:171 */
+    const float u_gyr0 = in->gyr[0];
     const float t192 = (u_gyr0 * t191);  /* madgwick.py:171 */
+    const float u_gyr1 = in->gyr[1];
     const float t193 = (u_gyr1 * t191);  /* madgwick.py:171 */
+    const float u_gyr2 = in->gyr[2];
     const float t194 = (u_gyr2 * t191);  /* madgwick.py:171 */
     const float t198 = (0x1p+0f - t182);  /* madgwick.py:172 */
     const float t200 = (t192 - t184);  /* madgwick.py:172 */
@@ -397,6 +395,7 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const int t370 = (!t369);  /* common.py:68 */
     const int t371 = (t365 && t370);  /* common.py:68 */
     const int t372 = (!t371);  /* common.py:68 */
+    const int x_initialised = (s->initialised != 0u);
     const int t373 = (!x_initialised);  /* madgwick.py:132 */
     const int t374 = (t365 && t373);  /* madgwick.py:132 */
     int t507 = 0;
@@ -553,6 +552,7 @@ void madgwick_f32_update(madgwick_f32_state *s, const kf_imu_input_f32 *in, madg
     const float t531 = (x_t_run + t169);  /* madgwick.py:141 */
     const float t533 = ((t531 < 0x1.ep+5f) ? t531 : 0x1.ep+5f);  /* madgwick.py:141 */
     const float t534 = (t522 ? t533 : x_t_run);  /* madgwick.py:141 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t535 = kf_inc_if(x_rejected, t372);  /* madgwick.py:142 */
     const int t536 = (x_initialised || t521);  /* madgwick.py:143 */
     const float t537 = (t527 - t530);  /* madgwick.py:194 */

@@ -56,42 +56,28 @@ int madgwick_q_init(madgwick_q_state *s, const madgwick_q_params *p)
 
 void madgwick_q_update(madgwick_q_state *s, const kf_imu_input_q *in, madgwick_q_output *out)
 {
-    const int32_t u_gyr0 = in->gyr[0];
-    const int32_t u_gyr1 = in->gyr[1];
-    const int32_t u_gyr2 = in->gyr[2];
-    const int32_t u_acc0 = in->acc[0];
-    const int32_t u_acc1 = in->acc[1];
-    const int32_t u_acc2 = in->acc[2];
-    const int32_t u_mag0 = in->mag[0];
-    const int32_t u_mag1 = in->mag[1];
-    const int32_t u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
-    const int32_t u_dt = in->dt;
-    const int32_t p_beta = s->params.beta;
-    const int32_t p_beta_start = s->params.beta_start;
-    const int32_t p_start_time = s->params.start_time;
-    const int32_t x_q0 = s->q[0];
     const int32_t x_q1 = s->q[1];
-    const int32_t x_q2 = s->q[2];
-    const int32_t x_q3 = s->q[3];
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_t_run = s->t_run;
-    const int32_t x_rejected = s->rejected;
     const int32_t t21 = ((int32_t)(((((int64_t)x_q1) + ((int64_t)x_q1)) + 1) >> 1));  /* madgwick.py:83 Q2.29 */
+    const int32_t x_q2 = s->q[2];
     const int32_t t22 = ((int32_t)(((((int64_t)x_q2) + ((int64_t)x_q2)) + 1) >> 1));  /* madgwick.py:83 Q2.29 */
+    const int32_t x_q3 = s->q[3];
     const int32_t t23 = ((int32_t)(((((int64_t)x_q3) + ((int64_t)x_q3)) + 1) >> 1));  /* madgwick.py:83 Q2.29 */
     const int32_t t24 = ((int32_t)((kf_smull(t21, x_q1) + 536870912) >> 30));  /* madgwick.py:86 Q2.29 */
     const int32_t t25 = ((int32_t)((kf_smull(t22, x_q2) + 536870912) >> 30));  /* madgwick.py:86 Q2.29 */
     const int32_t t26 = kf_sat((((int64_t)t24) + ((int64_t)t25)), 0, 1073741824);  /* madgwick.py:86 Q2.29 */
     const int32_t t28 = ((int32_t)((kf_smull(t21, x_q3) + 536870912) >> 30));  /* madgwick.py:87 Q2.29 */
+    const int32_t x_q0 = s->q[0];
     const int32_t t29 = ((int32_t)((kf_smull(t22, x_q0) + 536870912) >> 30));  /* madgwick.py:87 Q2.29 */
     const int32_t t30 = kf_lsh_sat((((int64_t)t28) - ((int64_t)t29)), 1, -1073741824, 1073741824);  /* madgwick.py:87 Q1.30 */
     const int32_t t32 = ((int32_t)((kf_smull(t21, x_q0) + 536870912) >> 30));  /* madgwick.py:87 Q2.29 */
     const int32_t t33 = ((int32_t)((kf_smull(t22, x_q3) + 536870912) >> 30));  /* madgwick.py:87 Q2.29 */
     const int32_t t34 = kf_lsh_sat((((int64_t)t32) + ((int64_t)t33)), 1, -1073741824, 1073741824);  /* madgwick.py:87 Q1.30 */
     const int32_t t37 = ((int32_t)(((int64_t)1073741824) - (((int64_t)t26) * 2)));  /* madgwick.py:88 Q1.30 */
+    const int32_t u_acc0 = in->acc[0];
     const int32_t t38 = ((int32_t)((kf_smull(u_acc0, u_acc0) + INT64_C(2147483648)) >> 32));  /* madgwick.py:93 Q19.12 */
+    const int32_t u_acc1 = in->acc[1];
     const int32_t t39 = ((int32_t)((kf_smull(u_acc1, u_acc1) + INT64_C(2147483648)) >> 32));  /* madgwick.py:93 Q19.12 */
+    const int32_t u_acc2 = in->acc[2];
     const int32_t t40 = ((int32_t)((kf_smull(u_acc2, u_acc2) + INT64_C(2147483648)) >> 32));  /* madgwick.py:93 Q19.12 */
     const int32_t t41 = ((int32_t)(((((int64_t)t38) + ((int64_t)t39)) + 1) >> 1));  /* madgwick.py:93 Q20.11 */
     const int32_t t42 = ((int32_t)((((((int64_t)t41) * 2) + ((int64_t)t40)) + 1) >> 1));  /* madgwick.py:93 Q20.11 */
@@ -114,6 +100,10 @@ void madgwick_q_update(madgwick_q_state *s, const kf_imu_input_q *in, madgwick_q
     const int32_t t65 = ((int32_t)((kf_smull(t34, t46) + 536870912) >> 30));  /* madgwick.py:95 Q1.30 */
     const int32_t t66 = ((int32_t)(((((int64_t)t64) + ((int64_t)t65)) + 1) >> 1));  /* madgwick.py:95 Q2.29 */
     const int32_t t67 = kf_sat(((((((int64_t)t63) * 2) - ((int64_t)t66)) + 1) >> 1), -536870912, 1073741824);  /* madgwick.py:95 Q3.28 */
+    const int32_t u_mag0 = in->mag[0];
+    const int32_t u_mag1 = in->mag[1];
+    const int32_t u_mag2 = in->mag[2];
+    const int u_mag_valid = (in->mag_valid != 0u);
     int32_t t76 = 0;
     int32_t t123 = 0;
     int32_t t126 = 0;
@@ -205,12 +195,17 @@ void madgwick_q_update(madgwick_q_state *s, const kf_imu_input_q *in, madgwick_q
     const int32_t t165 = (t143 ? t67 : 0);  /* madgwick.py:120 Q3.28 */
     const int32_t t166 = (t155 ? t141 : 0);  /* madgwick.py:120 Q3.28 */
     const int32_t t167 = ((int32_t)(((((int64_t)t165) + ((int64_t)t166)) + 1) >> 1));  /* madgwick.py:120 Q4.27 */
+    const int32_t u_dt = in->dt;
     const int32_t t168_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t168 = ((0 < t168_0) ? t168_0 : 0);  /* madgwick.py:124 Q3.28 */
     const int32_t t169_0 = kf_sat((((int64_t)t168) * 4), 0, 1073741824);
     const int32_t t169 = ((t169_0 < 1073741824) ? t169_0 : 1073741824);  /* madgwick.py:124 Q1.30 */
+    const int32_t p_start_time = s->params.start_time;
+    const int32_t x_t_run = s->t_run;
     const int t170 = (((int64_t)x_t_run) < ((int64_t)p_start_time));  /* madgwick.py:125 */
+    const int32_t p_beta = s->params.beta;
     const int32_t t171_1 = ((int32_t)((((int64_t)p_beta) + 2) >> 2));
+    const int32_t p_beta_start = s->params.beta_start;
     const int32_t t171 = (t170 ? p_beta_start : t171_1);  /* madgwick.py:125 Q5.26 */
     const int32_t t172 = kf_sat(((kf_smull(t171, t169) + 33554432) >> 26), 0, 1073741824);  /* madgwick.py:168 Q1.30 */
     const int32_t t181_1 = ((int32_t)((((int64_t)t162) + 2) >> 2));
@@ -223,8 +218,11 @@ void madgwick_q_update(madgwick_q_state *s, const kf_imu_input_q *in, madgwick_q
     const int32_t t186 = kf_mul_dyn(t163, t181, -1, -1073741824, 1073741824);  /* madgwick.py:170 Q1.30 */
     const int32_t t188 = kf_mul_dyn(t164, t181, -1, -1073741824, 1073741824);  /* madgwick.py:170 Q1.30 */
     const int32_t t191 = ((int32_t)((kf_smull(1073741824, t169) + 536870912) >> 30));  /* madgwick.py:171 Q0.31 */
+    const int32_t u_gyr0 = in->gyr[0];
     const int32_t t192 = ((int32_t)((kf_smull(u_gyr0, t191) + 1073741824) >> 31));  /* madgwick.py:171 Q7.24 */
+    const int32_t u_gyr1 = in->gyr[1];
     const int32_t t193 = ((int32_t)((kf_smull(u_gyr1, t191) + 1073741824) >> 31));  /* madgwick.py:171 Q7.24 */
+    const int32_t u_gyr2 = in->gyr[2];
     const int32_t t194 = ((int32_t)((kf_smull(u_gyr2, t191) + 1073741824) >> 31));  /* madgwick.py:171 Q7.24 */
     const int32_t t195_0 = kf_sat((((int64_t)t192) * 32), -1073741824, 1073741824);
     const int32_t t195 = t195_0;  /* madgwick.py:167 Q2.29 */
@@ -378,6 +376,7 @@ void madgwick_q_update(madgwick_q_state *s, const kf_imu_input_q *in, madgwick_q
     const int t370 = (!t369);  /* common.py:68 */
     const int t371 = (t365 && t370);  /* common.py:68 */
     const int t372 = (!t371);  /* common.py:68 */
+    const int x_initialised = (s->initialised != 0u);
     const int t373 = (!x_initialised);  /* madgwick.py:132 */
     const int t374 = (t365 && t373);  /* madgwick.py:132 */
     int t507 = 0;
@@ -532,6 +531,7 @@ void madgwick_q_update(madgwick_q_state *s, const kf_imu_input_q *in, madgwick_q
     const int32_t t531 = ((int32_t)((((((int64_t)x_t_run) * 32) + ((int64_t)t169)) + 16) >> 5));  /* madgwick.py:141 Q6.25 */
     const int32_t t533 = ((t531 < 2013265920) ? t531 : 2013265920);  /* madgwick.py:141 Q6.25 */
     const int32_t t534 = (t522 ? t533 : x_t_run);  /* madgwick.py:141 Q6.25 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t535 = kf_inc_if(x_rejected, t372);  /* madgwick.py:142 */
     const int t536 = (x_initialised || t521);  /* madgwick.py:143 */
     const int32_t t537 = ((int32_t)(((((int64_t)t527) - ((int64_t)t530)) + 1) >> 1));  /* madgwick.py:194 Q2.29 */

@@ -64,43 +64,27 @@ int mahony_f32_init(mahony_f32_state *s, const mahony_f32_params *p)
 
 void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f32_output *out)
 {
-    const float u_gyr0 = in->gyr[0];
-    const float u_gyr1 = in->gyr[1];
-    const float u_gyr2 = in->gyr[2];
-    const float u_acc0 = in->acc[0];
-    const float u_acc1 = in->acc[1];
-    const float u_acc2 = in->acc[2];
-    const float u_mag0 = in->mag[0];
-    const float u_mag1 = in->mag[1];
-    const float u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
     const float u_dt = in->dt;
-    const float p_kp = s->params.kp;
-    const float p_ki = s->params.ki;
-    const float p_acc_gate = s->params.acc_gate;
-    const float x_q0 = s->q[0];
-    const float x_q1 = s->q[1];
-    const float x_q2 = s->q[2];
-    const float x_q3 = s->q[3];
-    const float x_bias0 = s->bias[0];
-    const float x_bias1 = s->bias[1];
-    const float x_bias2 = s->bias[2];
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
     const float t24 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* common.py:62 */
     const float t26 = ((t24 < 0x1p+0f) ? t24 : 0x1p+0f);  /* common.py:62 */
+    const float u_gyr0 = in->gyr[0];
     const float t27 = fabsf(u_gyr0);  /* common.py:50 */
     const int t29 = (t27 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr1 = in->gyr[1];
     const float t30 = fabsf(u_gyr1);  /* common.py:50 */
     const int t31 = (t30 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr2 = in->gyr[2];
     const float t32 = fabsf(u_gyr2);  /* common.py:50 */
     const int t33 = (t32 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t34 = (t29 && t31);  /* common.py:50 */
     const int t35 = (t34 && t33);  /* common.py:50 */
+    const float u_acc0 = in->acc[0];
     const float t36 = fabsf(u_acc0);  /* common.py:50 */
     const int t38 = (t36 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc1 = in->acc[1];
     const float t39 = fabsf(u_acc1);  /* common.py:50 */
     const int t40 = (t39 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc2 = in->acc[2];
     const float t41 = fabsf(u_acc2);  /* common.py:50 */
     const int t42 = (t41 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t43 = (t38 && t40);  /* common.py:50 */
@@ -110,14 +94,18 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const int t47 = (t35 && t44);  /* common.py:63 */
     const int t48 = (t47 && t45);  /* common.py:63 */
     const int t49 = (t48 && t46);  /* common.py:63 */
+    const float u_mag0 = in->mag[0];
     const float t50 = fabsf(u_mag0);  /* common.py:50 */
     const int t52 = (t50 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag1 = in->mag[1];
     const float t53 = fabsf(u_mag1);  /* common.py:50 */
     const int t54 = (t53 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag2 = in->mag[2];
     const float t55 = fabsf(u_mag2);  /* common.py:50 */
     const int t56 = (t55 <= 0x1.324p+12f);  /* common.py:50 */
     const int t57 = (t52 && t54);  /* common.py:50 */
     const int t58 = (t57 && t56);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t59 = (t49 && u_mag_valid);  /* common.py:67 */
     const int t60 = (t59 && t58);  /* common.py:67 */
     const int t61 = (!t58);  /* common.py:69 */
@@ -136,7 +124,11 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const float t72 = (u_acc0 * t71);  /* mahony.py:78 */
     const float t74 = (u_acc1 * t71);  /* mahony.py:78 */
     const float t76 = (u_acc2 * t71);  /* mahony.py:78 */
+    const float x_q1 = s->q[1];
+    const float x_q3 = s->q[3];
     const float t78 = (x_q1 * x_q3);  /* mahony.py:79 */
+    const float x_q0 = s->q[0];
+    const float x_q2 = s->q[2];
     const float t79 = (x_q0 * x_q2);  /* mahony.py:79 */
     const float t80 = (t78 - t79);  /* mahony.py:79 */
     const float t82 = (0x1p+1f * t80);  /* mahony.py:79 */
@@ -151,6 +143,7 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const float t91 = (t89 - t90);  /* mahony.py:79 */
     const float t92 = (x_q3 * x_q3);  /* mahony.py:79 */
     const float t93 = (t91 + t92);  /* mahony.py:79 */
+    const float p_acc_gate = s->params.acc_gate;
     const float t98 = (0x1.39eb86p+3f - p_acc_gate);  /* mahony.py:81 */
     const float t99 = (t98 * t98);  /* mahony.py:81 */
     const float t100 = (0x1.39eb86p+3f + p_acc_gate);  /* mahony.py:82 */
@@ -245,23 +238,28 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const float t186 = (u_gyr2 * u_gyr2);  /* mahony.py:106 */
     const float t187 = (t185 + t186);  /* mahony.py:106 */
     const int t189 = (t187 < 0x1.f5c29p-6f);  /* mahony.py:106 */
+    const float p_ki = s->params.ki;
     const float t190 = (p_ki * t26);  /* mahony.py:107 */
     const float t191 = (t189 ? t190 : 0.0f);  /* mahony.py:107 */
     const float t192 = (t191 * t180);  /* mahony.py:108 */
+    const float x_bias0 = s->bias[0];
     const float t193 = (x_bias0 - t192);  /* mahony.py:108 */
     const float t195 = ((-0x1p-1f < t193) ? t193 : -0x1p-1f);  /* mahony.py:108 */
     const float t197 = ((t195 < 0x1p-1f) ? t195 : 0x1p-1f);  /* mahony.py:108 */
     const float t198 = (t191 * t181);  /* mahony.py:108 */
+    const float x_bias1 = s->bias[1];
     const float t199 = (x_bias1 - t198);  /* mahony.py:108 */
     const float t200 = ((-0x1p-1f < t199) ? t199 : -0x1p-1f);  /* mahony.py:108 */
     const float t201 = ((t200 < 0x1p-1f) ? t200 : 0x1p-1f);  /* mahony.py:108 */
     const float t202 = (t191 * t182);  /* mahony.py:108 */
+    const float x_bias2 = s->bias[2];
     const float t203 = (x_bias2 - t202);  /* mahony.py:108 */
     const float t204 = ((-0x1p-1f < t203) ? t203 : -0x1p-1f);  /* mahony.py:108 */
     const float t205 = ((t204 < 0x1p-1f) ? t204 : 0x1p-1f);  /* mahony.py:108 */
     const float t206 = (u_gyr0 - t197);  /* mahony.py:109 */
     const float t207 = (u_gyr1 - t201);  /* mahony.py:109 */
     const float t208 = (u_gyr2 - t205);  /* mahony.py:109 */
+    const float p_kp = s->params.kp;
     const float t209 = (t180 * p_kp);  /* mahony.py:109 */
     const float t210 = (t181 * p_kp);  /* mahony.py:109 */
     const float t211 = (t182 * p_kp);  /* mahony.py:109 */
@@ -316,6 +314,7 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const float t258 = (t245 * t255);  /* common.py:177 */
     const float t260 = (t246 * t255);  /* common.py:177 */
     const float t262 = (t247 * t255);  /* common.py:177 */
+    const int x_initialised = (s->initialised != 0u);
     const int t264 = (!x_initialised);  /* mahony.py:112 */
     const int t265 = (t49 && t264);  /* mahony.py:112 */
     float t389 = 0.0f;
@@ -464,6 +463,7 @@ void mahony_f32_update(mahony_f32_state *s, const kf_imu_input_f32 *in, mahony_f
     const float t409 = (t400 ? t197 : x_bias0);  /* mahony.py:118 */
     const float t410 = (t400 ? t201 : x_bias1);  /* mahony.py:118 */
     const float t411 = (t400 ? t205 : x_bias2);  /* mahony.py:118 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t412 = kf_inc_if(x_rejected, t65);  /* mahony.py:119 */
     const int t413 = (x_initialised || t399);  /* mahony.py:120 */
     s->q[0] = t405;

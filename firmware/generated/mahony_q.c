@@ -58,45 +58,29 @@ int mahony_q_init(mahony_q_state *s, const mahony_q_params *p)
 
 void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_output *out)
 {
-    const int32_t u_gyr0 = in->gyr[0];
-    const int32_t u_gyr1 = in->gyr[1];
-    const int32_t u_gyr2 = in->gyr[2];
-    const int32_t u_acc0 = in->acc[0];
-    const int32_t u_acc1 = in->acc[1];
-    const int32_t u_acc2 = in->acc[2];
-    const int32_t u_mag0 = in->mag[0];
-    const int32_t u_mag1 = in->mag[1];
-    const int32_t u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
     const int32_t u_dt = in->dt;
-    const int32_t p_kp = s->params.kp;
-    const int32_t p_ki = s->params.ki;
-    const int32_t p_acc_gate = s->params.acc_gate;
-    const int32_t x_q0 = s->q[0];
-    const int32_t x_q1 = s->q[1];
-    const int32_t x_q2 = s->q[2];
-    const int32_t x_q3 = s->q[3];
-    const int32_t x_bias0 = s->bias[0];
-    const int32_t x_bias1 = s->bias[1];
-    const int32_t x_bias2 = s->bias[2];
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
     const int32_t t24_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t24 = ((0 < t24_0) ? t24_0 : 0);  /* common.py:62 Q3.28 */
     const int32_t t26_0 = kf_sat((((int64_t)t24) * 4), 0, 1073741824);
     const int32_t t26 = ((t26_0 < 1073741824) ? t26_0 : 1073741824);  /* common.py:62 Q1.30 */
+    const int32_t u_gyr0 = in->gyr[0];
     const int32_t t27 = ((int32_t)((((int64_t)u_gyr0) < 0) ? (-((int64_t)u_gyr0)) : ((int64_t)u_gyr0)));  /* common.py:50 Q7.24 */
     const int t29 = ((((int64_t)t27) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr1 = in->gyr[1];
     const int32_t t30 = ((int32_t)((((int64_t)u_gyr1) < 0) ? (-((int64_t)u_gyr1)) : ((int64_t)u_gyr1)));  /* common.py:50 Q7.24 */
     const int t31 = ((((int64_t)t30) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr2 = in->gyr[2];
     const int32_t t32 = ((int32_t)((((int64_t)u_gyr2) < 0) ? (-((int64_t)u_gyr2)) : ((int64_t)u_gyr2)));  /* common.py:50 Q7.24 */
     const int t33 = ((((int64_t)t32) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
     const int t34 = (t29 && t31);  /* common.py:50 */
     const int t35 = (t34 && t33);  /* common.py:50 */
+    const int32_t u_acc0 = in->acc[0];
     const int32_t t36 = ((int32_t)((((int64_t)u_acc0) < 0) ? (-((int64_t)u_acc0)) : ((int64_t)u_acc0)));  /* common.py:50 Q9.22 */
     const int t38 = ((((int64_t)t36) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc1 = in->acc[1];
     const int32_t t39 = ((int32_t)((((int64_t)u_acc1) < 0) ? (-((int64_t)u_acc1)) : ((int64_t)u_acc1)));  /* common.py:50 Q9.22 */
     const int t40 = ((((int64_t)t39) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc2 = in->acc[2];
     const int32_t t41 = ((int32_t)((((int64_t)u_acc2) < 0) ? (-((int64_t)u_acc2)) : ((int64_t)u_acc2)));  /* common.py:50 Q9.22 */
     const int t42 = ((((int64_t)t41) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
     const int t43 = (t38 && t40);  /* common.py:50 */
@@ -106,14 +90,18 @@ void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_outpu
     const int t47 = (t35 && t44);  /* common.py:63 */
     const int t48 = (t47 && t45);  /* common.py:63 */
     const int t49 = (t48 && t46);  /* common.py:63 */
+    const int32_t u_mag0 = in->mag[0];
     const int32_t t50 = ((int32_t)((((int64_t)u_mag0) < 0) ? (-((int64_t)u_mag0)) : ((int64_t)u_mag0)));  /* common.py:50 Q14.17 */
     const int t52 = ((((int64_t)t50) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag1 = in->mag[1];
     const int32_t t53 = ((int32_t)((((int64_t)u_mag1) < 0) ? (-((int64_t)u_mag1)) : ((int64_t)u_mag1)));  /* common.py:50 Q14.17 */
     const int t54 = ((((int64_t)t53) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag2 = in->mag[2];
     const int32_t t55 = ((int32_t)((((int64_t)u_mag2) < 0) ? (-((int64_t)u_mag2)) : ((int64_t)u_mag2)));  /* common.py:50 Q14.17 */
     const int t56 = ((((int64_t)t55) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
     const int t57 = (t52 && t54);  /* common.py:50 */
     const int t58 = (t57 && t56);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t59 = (t49 && u_mag_valid);  /* common.py:67 */
     const int t60 = (t59 && t58);  /* common.py:67 */
     const int t61 = (!t58);  /* common.py:69 */
@@ -130,7 +118,11 @@ void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_outpu
     const int32_t t72 = kf_mul_dyn(u_acc0, t71, -8, -1073741824, 1073741824);  /* mahony.py:78 Q1.30 */
     const int32_t t74 = kf_mul_dyn(u_acc1, t71, -8, -1073741824, 1073741824);  /* mahony.py:78 Q1.30 */
     const int32_t t76 = kf_mul_dyn(u_acc2, t71, -8, -1073741824, 1073741824);  /* mahony.py:78 Q1.30 */
+    const int32_t x_q1 = s->q[1];
+    const int32_t x_q3 = s->q[3];
     const int32_t t78 = ((int32_t)((kf_smull(x_q1, x_q3) + 536870912) >> 30));  /* mahony.py:79 Q1.30 */
+    const int32_t x_q0 = s->q[0];
+    const int32_t x_q2 = s->q[2];
     const int32_t t79 = ((int32_t)((kf_smull(x_q0, x_q2) + 536870912) >> 30));  /* mahony.py:79 Q1.30 */
     const int32_t t80 = ((int32_t)(((((int64_t)t78) - ((int64_t)t79)) + 1) >> 1));  /* mahony.py:79 Q2.29 */
     const int32_t t82 = kf_sat(((kf_smull(1073741824, t80) + 134217728) >> 28), -1073741824, 1073741824);  /* mahony.py:79 Q1.30 */
@@ -145,6 +137,7 @@ void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_outpu
     const int32_t t91 = ((int32_t)(((((int64_t)t89) - ((int64_t)t90)) + 1) >> 1));  /* mahony.py:79 Q2.29 */
     const int32_t t92 = ((int32_t)((kf_smull(x_q3, x_q3) + 536870912) >> 30));  /* mahony.py:79 Q1.30 */
     const int32_t t93 = kf_sat(((((int64_t)t91) * 2) + ((int64_t)t92)), -1073741824, 1073741824);  /* mahony.py:79 Q1.30 */
+    const int32_t p_acc_gate = s->params.acc_gate;
     const int32_t t98 = ((int32_t)(((((int64_t)1316675912) - (((int64_t)p_acc_gate) * 8)) + 4) >> 3));  /* mahony.py:81 Q7.24 */
     const int32_t t99 = ((int32_t)((kf_smull(t98, t98) + 536870912) >> 30));  /* mahony.py:81 Q13.18 */
     const int32_t t100 = ((int32_t)(((((int64_t)1316675912) + (((int64_t)p_acc_gate) * 8)) + 4) >> 3));  /* mahony.py:82 Q7.24 */
@@ -237,19 +230,23 @@ void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_outpu
     const int32_t t186 = ((int32_t)((kf_smull(u_gyr2, u_gyr2) + INT64_C(2147483648)) >> 32));  /* mahony.py:106 Q15.16 */
     const int32_t t187 = ((int32_t)((((((int64_t)t185) * 2) + ((int64_t)t186)) + 1) >> 1));  /* mahony.py:106 Q16.15 */
     const int t189 = ((((int64_t)t187) * 2097152) < ((int64_t)2104533975));  /* mahony.py:106 */
+    const int32_t p_ki = s->params.ki;
     const int32_t t190 = ((int32_t)((kf_smull(p_ki, t26) + 536870912) >> 30));  /* mahony.py:107 Q3.28 */
     const int32_t t191 = (t189 ? t190 : 0);  /* mahony.py:107 Q3.28 */
     const int32_t t192 = ((int32_t)((kf_smull(t191, t180) + 536870912) >> 30));  /* mahony.py:108 Q5.26 */
+    const int32_t x_bias0 = s->bias[0];
     const int32_t t193 = ((int32_t)(((((int64_t)x_bias0) - (((int64_t)t192) * 32)) + 16) >> 5));  /* mahony.py:108 Q5.26 */
     const int32_t t195 = ((-33554432 < t193) ? t193 : -33554432);  /* mahony.py:108 Q5.26 */
     const int32_t t197_0 = kf_sat((((int64_t)t195) * 32), -1073741824, 1073741824);
     const int32_t t197 = ((t197_0 < 1073741824) ? t197_0 : 1073741824);  /* mahony.py:108 Q0.31 */
     const int32_t t198 = ((int32_t)((kf_smull(t191, t181) + 536870912) >> 30));  /* mahony.py:108 Q5.26 */
+    const int32_t x_bias1 = s->bias[1];
     const int32_t t199 = ((int32_t)(((((int64_t)x_bias1) - (((int64_t)t198) * 32)) + 16) >> 5));  /* mahony.py:108 Q5.26 */
     const int32_t t200 = ((-33554432 < t199) ? t199 : -33554432);  /* mahony.py:108 Q5.26 */
     const int32_t t201_0 = kf_sat((((int64_t)t200) * 32), -1073741824, 1073741824);
     const int32_t t201 = ((t201_0 < 1073741824) ? t201_0 : 1073741824);  /* mahony.py:108 Q0.31 */
     const int32_t t202 = ((int32_t)((kf_smull(t191, t182) + 536870912) >> 30));  /* mahony.py:108 Q5.26 */
+    const int32_t x_bias2 = s->bias[2];
     const int32_t t203 = ((int32_t)(((((int64_t)x_bias2) - (((int64_t)t202) * 32)) + 16) >> 5));  /* mahony.py:108 Q5.26 */
     const int32_t t204 = ((-33554432 < t203) ? t203 : -33554432);  /* mahony.py:108 Q5.26 */
     const int32_t t205_0 = kf_sat((((int64_t)t204) * 32), -1073741824, 1073741824);
@@ -257,6 +254,7 @@ void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_outpu
     const int32_t t206 = ((int32_t)((((((int64_t)u_gyr0) * 128) - ((int64_t)t197)) + 128) >> 8));  /* mahony.py:109 Q8.23 */
     const int32_t t207 = ((int32_t)((((((int64_t)u_gyr1) * 128) - ((int64_t)t201)) + 128) >> 8));  /* mahony.py:109 Q8.23 */
     const int32_t t208 = ((int32_t)((((((int64_t)u_gyr2) * 128) - ((int64_t)t205)) + 128) >> 8));  /* mahony.py:109 Q8.23 */
+    const int32_t p_kp = s->params.kp;
     const int32_t t209 = ((int32_t)((kf_smull(t180, p_kp) + 536870912) >> 30));  /* mahony.py:109 Q7.24 */
     const int32_t t210 = ((int32_t)((kf_smull(t181, p_kp) + 536870912) >> 30));  /* mahony.py:109 Q7.24 */
     const int32_t t211 = ((int32_t)((kf_smull(t182, p_kp) + 536870912) >> 30));  /* mahony.py:109 Q7.24 */
@@ -301,6 +299,7 @@ void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_outpu
     const int32_t t258 = kf_mul_dyn(t245, t255, -8, -1073741824, 1073741824);  /* common.py:177 Q1.30 */
     const int32_t t260 = kf_mul_dyn(t246, t255, -8, -1073741824, 1073741824);  /* common.py:177 Q1.30 */
     const int32_t t262 = kf_mul_dyn(t247, t255, -8, -1073741824, 1073741824);  /* common.py:177 Q1.30 */
+    const int x_initialised = (s->initialised != 0u);
     const int t264 = (!x_initialised);  /* mahony.py:112 */
     const int t265 = (t49 && t264);  /* mahony.py:112 */
     int32_t t389 = 0;
@@ -447,6 +446,7 @@ void mahony_q_update(mahony_q_state *s, const kf_imu_input_q *in, mahony_q_outpu
     const int32_t t409 = (t400 ? t197 : x_bias0);  /* mahony.py:118 Q0.31 */
     const int32_t t410 = (t400 ? t201 : x_bias1);  /* mahony.py:118 Q0.31 */
     const int32_t t411 = (t400 ? t205 : x_bias2);  /* mahony.py:118 Q0.31 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t412 = kf_inc_if(x_rejected, t65);  /* mahony.py:119 */
     const int t413 = (x_initialised || t399);  /* mahony.py:120 */
     s->q[0] = t405;

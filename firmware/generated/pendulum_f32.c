@@ -189,40 +189,113 @@ int pendulum_f32_init(pendulum_f32_state *s, const pendulum_f32_params *p)
 
 void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in, pendulum_f32_output *out)
 {
-    const float u_markers0 = in->markers[0];
-    const float u_markers1 = in->markers[1];
-    const float u_markers2 = in->markers[2];
-    const float u_markers3 = in->markers[3];
-    const float u_markers4 = in->markers[4];
-    const float u_markers5 = in->markers[5];
-    const float u_markers6 = in->markers[6];
-    const float u_markers7 = in->markers[7];
-    const int u_marker_valid0 = (in->marker_valid[0] != 0u);
-    const int u_marker_valid1 = (in->marker_valid[1] != 0u);
-    const int u_marker_valid2 = (in->marker_valid[2] != 0u);
-    const int u_marker_valid3 = (in->marker_valid[3] != 0u);
-    const float u_efforts0 = in->efforts[0];
-    const float u_efforts1 = in->efforts[1];
-    const float u_efforts2 = in->efforts[2];
-    const float u_efforts3 = in->efforts[3];
-    const int u_effort_valid0 = (in->effort_valid[0] != 0u);
-    const int u_effort_valid1 = (in->effort_valid[1] != 0u);
-    const int u_effort_valid2 = (in->effort_valid[2] != 0u);
-    const int u_effort_valid3 = (in->effort_valid[3] != 0u);
     const float u_dt = in->dt;
+    const int t129 = (0.0f < u_dt);  /* pendulum.py:213 */
+    const int t131 = (u_dt <= 0x1.99999ap-4f);  /* pendulum.py:213 */
+    const int t132 = (t129 && t131);  /* pendulum.py:213 */
+    const float u_markers0 = in->markers[0];
+    const float t133 = fabsf(u_markers0);  /* pendulum.py:217 */
+    const int t135 = (t133 <= 0x1.4p+3f);  /* pendulum.py:217 */
+    const float u_markers1 = in->markers[1];
+    const float t136 = fabsf(u_markers1);  /* pendulum.py:218 */
+    const int t137 = (t136 <= 0x1.4p+3f);  /* pendulum.py:218 */
+    const int u_marker_valid0 = (in->marker_valid[0] != 0u);
+    const int t138 = (u_marker_valid0 && t135);  /* pendulum.py:217 */
+    const int t139 = (t138 && t137);  /* pendulum.py:217 */
+    const float u_markers2 = in->markers[2];
+    const float t140 = fabsf(u_markers2);  /* pendulum.py:217 */
+    const int t141 = (t140 <= 0x1.4p+3f);  /* pendulum.py:217 */
+    const float u_markers3 = in->markers[3];
+    const float t142 = fabsf(u_markers3);  /* pendulum.py:218 */
+    const int t143 = (t142 <= 0x1.4p+3f);  /* pendulum.py:218 */
+    const int u_marker_valid1 = (in->marker_valid[1] != 0u);
+    const int t144 = (u_marker_valid1 && t141);  /* pendulum.py:217 */
+    const int t145 = (t144 && t143);  /* pendulum.py:217 */
+    const float u_markers4 = in->markers[4];
+    const float t146 = fabsf(u_markers4);  /* pendulum.py:217 */
+    const int t147 = (t146 <= 0x1.4p+3f);  /* pendulum.py:217 */
+    const float u_markers5 = in->markers[5];
+    const float t148 = fabsf(u_markers5);  /* pendulum.py:218 */
+    const int t149 = (t148 <= 0x1.4p+3f);  /* pendulum.py:218 */
+    const int u_marker_valid2 = (in->marker_valid[2] != 0u);
+    const int t150 = (u_marker_valid2 && t147);  /* pendulum.py:217 */
+    const int t151 = (t150 && t149);  /* pendulum.py:217 */
+    const float u_markers6 = in->markers[6];
+    const float t152 = fabsf(u_markers6);  /* pendulum.py:217 */
+    const int t153 = (t152 <= 0x1.4p+3f);  /* pendulum.py:217 */
+    const float u_markers7 = in->markers[7];
+    const float t154 = fabsf(u_markers7);  /* pendulum.py:218 */
+    const int t155 = (t154 <= 0x1.4p+3f);  /* pendulum.py:218 */
+    const int u_marker_valid3 = (in->marker_valid[3] != 0u);
+    const int t156 = (u_marker_valid3 && t153);  /* pendulum.py:217 */
+    const int t157 = (t156 && t155);  /* pendulum.py:217 */
+    const float u_efforts0 = in->efforts[0];
+    const float t158 = fabsf(u_efforts0);  /* pendulum.py:219 */
+    const int t160 = (t158 <= 0x1.388p+14f);  /* pendulum.py:219 */
+    const int u_effort_valid0 = (in->effort_valid[0] != 0u);
+    const int t161 = (u_effort_valid0 && t160);  /* pendulum.py:219 */
+    const float u_efforts1 = in->efforts[1];
+    const float t162 = fabsf(u_efforts1);  /* pendulum.py:219 */
+    const int t163 = (t162 <= 0x1.388p+14f);  /* pendulum.py:219 */
+    const int u_effort_valid1 = (in->effort_valid[1] != 0u);
+    const int t164 = (u_effort_valid1 && t163);  /* pendulum.py:219 */
+    const float u_efforts2 = in->efforts[2];
+    const float t165 = fabsf(u_efforts2);  /* pendulum.py:219 */
+    const int t166 = (t165 <= 0x1.388p+14f);  /* pendulum.py:219 */
+    const int u_effort_valid2 = (in->effort_valid[2] != 0u);
+    const int t167 = (u_effort_valid2 && t166);  /* pendulum.py:219 */
+    const float u_efforts3 = in->efforts[3];
+    const float t168 = fabsf(u_efforts3);  /* pendulum.py:219 */
+    const int t169 = (t168 <= 0x1.388p+14f);  /* pendulum.py:219 */
+    const int u_effort_valid3 = (in->effort_valid[3] != 0u);
+    const int t170 = (u_effort_valid3 && t169);  /* pendulum.py:219 */
+    const int t171 = (!t139);  /* pendulum.py:220 */
+    const int t172 = (u_marker_valid0 && t171);  /* pendulum.py:220 */
+    const int t173 = (!t145);  /* pendulum.py:220 */
+    const int t174 = (u_marker_valid1 && t173);  /* pendulum.py:220 */
+    const int t175 = (!t151);  /* pendulum.py:220 */
+    const int t176 = (u_marker_valid2 && t175);  /* pendulum.py:220 */
+    const int t177 = (!t157);  /* pendulum.py:220 */
+    const int t178 = (u_marker_valid3 && t177);  /* pendulum.py:220 */
+    const int t179 = (!t161);  /* pendulum.py:221 */
+    const int t180 = (u_effort_valid0 && t179);  /* pendulum.py:221 */
+    const int t181 = (!t164);  /* pendulum.py:221 */
+    const int t182 = (u_effort_valid1 && t181);  /* pendulum.py:221 */
+    const int t183 = (!t167);  /* pendulum.py:221 */
+    const int t184 = (u_effort_valid2 && t183);  /* pendulum.py:221 */
+    const int t185 = (!t170);  /* pendulum.py:221 */
+    const int t186 = (u_effort_valid3 && t185);  /* pendulum.py:221 */
+    const int32_t x_rejected = s->rejected;
+    const int32_t t187 = kf_inc_if(x_rejected, t172);  /* pendulum.py:224 */
+    const int32_t t188 = kf_inc_if(t187, t174);  /* pendulum.py:224 */
+    const int32_t t189 = kf_inc_if(t188, t176);  /* pendulum.py:224 */
+    const int32_t t190 = kf_inc_if(t189, t178);  /* pendulum.py:224 */
+    const int32_t t191 = kf_inc_if(t190, t180);  /* pendulum.py:224 */
+    const int32_t t192 = kf_inc_if(t191, t182);  /* pendulum.py:224 */
+    const int32_t t193 = kf_inc_if(t192, t184);  /* pendulum.py:224 */
+    const int32_t t194 = kf_inc_if(t193, t186);  /* pendulum.py:224 */
+    const int t195 = (!t132);  /* pendulum.py:225 */
+    const int x_initialised = (s->initialised != 0u);
+    const int t196 = (x_initialised && t195);  /* pendulum.py:225 */
+    const int32_t t197 = kf_inc_if(t194, t196);  /* pendulum.py:225 */
+    const int t198 = (!x_initialised);  /* pendulum.py:227 */
+    const int t199 = (t139 && t145);  /* pendulum.py:227 */
+    const int t200 = (t199 && t151);  /* pendulum.py:227 */
+    const int t201 = (t200 && t157);  /* pendulum.py:227 */
+    const int t202 = (t198 && t201);  /* pendulum.py:227 */
+    const int t203 = (x_initialised && t132);  /* pendulum.py:228 */
+    const float p_sigma_marker = s->params.sigma_marker;
+    const float t204 = (p_sigma_marker * p_sigma_marker);  /* pendulum.py:230 */
+    const float p_sigma_torque = s->params.sigma_torque;
+    const float t205 = (p_sigma_torque * p_sigma_torque);  /* pendulum.py:230 */
+    const float p_sigma_force = s->params.sigma_force;
+    const float t206 = (p_sigma_force * p_sigma_force);  /* pendulum.py:230 */
     const float p_m1 = s->params.m1;
     const float p_m2 = s->params.m2;
     const float p_L = s->params.L;
     const float p_g = s->params.g;
-    const float p_sigma_marker = s->params.sigma_marker;
-    const float p_sigma_force = s->params.sigma_force;
-    const float p_sigma_torque = s->params.sigma_torque;
     const float p_q_force = s->params.q_force;
     const float p_q_torque = s->params.q_torque;
-    const float p_p0_pos = s->params.p0_pos;
-    const float p_p0_vel = s->params.p0_vel;
-    const float p_p0_force = s->params.p0_force;
-    const float p_p0_torque = s->params.p0_torque;
     const float x_z0 = s->z[0];
     const float x_z1 = s->z[1];
     const float x_z2 = s->z[2];
@@ -313,85 +386,6 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
     const float x_P75 = s->P[75];
     const float x_P76 = s->P[76];
     const float x_P77 = s->P[77];
-    const int x_initialised = (s->initialised != 0u);
-    const int32_t x_rejected = s->rejected;
-    const int32_t x_skipped = s->skipped;
-    const int32_t x_resets = s->resets;
-    const int t129 = (0.0f < u_dt);  /* pendulum.py:213 */
-    const int t131 = (u_dt <= 0x1.99999ap-4f);  /* pendulum.py:213 */
-    const int t132 = (t129 && t131);  /* pendulum.py:213 */
-    const float t133 = fabsf(u_markers0);  /* pendulum.py:217 */
-    const int t135 = (t133 <= 0x1.4p+3f);  /* pendulum.py:217 */
-    const float t136 = fabsf(u_markers1);  /* pendulum.py:218 */
-    const int t137 = (t136 <= 0x1.4p+3f);  /* pendulum.py:218 */
-    const int t138 = (u_marker_valid0 && t135);  /* pendulum.py:217 */
-    const int t139 = (t138 && t137);  /* pendulum.py:217 */
-    const float t140 = fabsf(u_markers2);  /* pendulum.py:217 */
-    const int t141 = (t140 <= 0x1.4p+3f);  /* pendulum.py:217 */
-    const float t142 = fabsf(u_markers3);  /* pendulum.py:218 */
-    const int t143 = (t142 <= 0x1.4p+3f);  /* pendulum.py:218 */
-    const int t144 = (u_marker_valid1 && t141);  /* pendulum.py:217 */
-    const int t145 = (t144 && t143);  /* pendulum.py:217 */
-    const float t146 = fabsf(u_markers4);  /* pendulum.py:217 */
-    const int t147 = (t146 <= 0x1.4p+3f);  /* pendulum.py:217 */
-    const float t148 = fabsf(u_markers5);  /* pendulum.py:218 */
-    const int t149 = (t148 <= 0x1.4p+3f);  /* pendulum.py:218 */
-    const int t150 = (u_marker_valid2 && t147);  /* pendulum.py:217 */
-    const int t151 = (t150 && t149);  /* pendulum.py:217 */
-    const float t152 = fabsf(u_markers6);  /* pendulum.py:217 */
-    const int t153 = (t152 <= 0x1.4p+3f);  /* pendulum.py:217 */
-    const float t154 = fabsf(u_markers7);  /* pendulum.py:218 */
-    const int t155 = (t154 <= 0x1.4p+3f);  /* pendulum.py:218 */
-    const int t156 = (u_marker_valid3 && t153);  /* pendulum.py:217 */
-    const int t157 = (t156 && t155);  /* pendulum.py:217 */
-    const float t158 = fabsf(u_efforts0);  /* pendulum.py:219 */
-    const int t160 = (t158 <= 0x1.388p+14f);  /* pendulum.py:219 */
-    const int t161 = (u_effort_valid0 && t160);  /* pendulum.py:219 */
-    const float t162 = fabsf(u_efforts1);  /* pendulum.py:219 */
-    const int t163 = (t162 <= 0x1.388p+14f);  /* pendulum.py:219 */
-    const int t164 = (u_effort_valid1 && t163);  /* pendulum.py:219 */
-    const float t165 = fabsf(u_efforts2);  /* pendulum.py:219 */
-    const int t166 = (t165 <= 0x1.388p+14f);  /* pendulum.py:219 */
-    const int t167 = (u_effort_valid2 && t166);  /* pendulum.py:219 */
-    const float t168 = fabsf(u_efforts3);  /* pendulum.py:219 */
-    const int t169 = (t168 <= 0x1.388p+14f);  /* pendulum.py:219 */
-    const int t170 = (u_effort_valid3 && t169);  /* pendulum.py:219 */
-    const int t171 = (!t139);  /* pendulum.py:220 */
-    const int t172 = (u_marker_valid0 && t171);  /* pendulum.py:220 */
-    const int t173 = (!t145);  /* pendulum.py:220 */
-    const int t174 = (u_marker_valid1 && t173);  /* pendulum.py:220 */
-    const int t175 = (!t151);  /* pendulum.py:220 */
-    const int t176 = (u_marker_valid2 && t175);  /* pendulum.py:220 */
-    const int t177 = (!t157);  /* pendulum.py:220 */
-    const int t178 = (u_marker_valid3 && t177);  /* pendulum.py:220 */
-    const int t179 = (!t161);  /* pendulum.py:221 */
-    const int t180 = (u_effort_valid0 && t179);  /* pendulum.py:221 */
-    const int t181 = (!t164);  /* pendulum.py:221 */
-    const int t182 = (u_effort_valid1 && t181);  /* pendulum.py:221 */
-    const int t183 = (!t167);  /* pendulum.py:221 */
-    const int t184 = (u_effort_valid2 && t183);  /* pendulum.py:221 */
-    const int t185 = (!t170);  /* pendulum.py:221 */
-    const int t186 = (u_effort_valid3 && t185);  /* pendulum.py:221 */
-    const int32_t t187 = kf_inc_if(x_rejected, t172);  /* pendulum.py:224 */
-    const int32_t t188 = kf_inc_if(t187, t174);  /* pendulum.py:224 */
-    const int32_t t189 = kf_inc_if(t188, t176);  /* pendulum.py:224 */
-    const int32_t t190 = kf_inc_if(t189, t178);  /* pendulum.py:224 */
-    const int32_t t191 = kf_inc_if(t190, t180);  /* pendulum.py:224 */
-    const int32_t t192 = kf_inc_if(t191, t182);  /* pendulum.py:224 */
-    const int32_t t193 = kf_inc_if(t192, t184);  /* pendulum.py:224 */
-    const int32_t t194 = kf_inc_if(t193, t186);  /* pendulum.py:224 */
-    const int t195 = (!t132);  /* pendulum.py:225 */
-    const int t196 = (x_initialised && t195);  /* pendulum.py:225 */
-    const int32_t t197 = kf_inc_if(t194, t196);  /* pendulum.py:225 */
-    const int t198 = (!x_initialised);  /* pendulum.py:227 */
-    const int t199 = (t139 && t145);  /* pendulum.py:227 */
-    const int t200 = (t199 && t151);  /* pendulum.py:227 */
-    const int t201 = (t200 && t157);  /* pendulum.py:227 */
-    const int t202 = (t198 && t201);  /* pendulum.py:227 */
-    const int t203 = (x_initialised && t132);  /* pendulum.py:228 */
-    const float t204 = (p_sigma_marker * p_sigma_marker);  /* pendulum.py:230 */
-    const float t205 = (p_sigma_torque * p_sigma_torque);  /* pendulum.py:230 */
-    const float t206 = (p_sigma_force * p_sigma_force);  /* pendulum.py:230 */
     int t8287 = 0;
     float t8316 = 0.0f;
     float t8318 = 0.0f;
@@ -9276,9 +9270,13 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
         const float t9014 = (t9013 * 0x1p-1f);  /* mbs.py:217 */
         t9015 = (t161 ? u_efforts0 : t9014);  /* pendulum.py:246 */
     }
+    const float p_p0_pos = s->params.p0_pos;
     const float t9016 = (p_p0_pos * p_p0_pos);  /* pendulum.py:160 */
+    const float p_p0_vel = s->params.p0_vel;
     const float t9017 = (p_p0_vel * p_p0_vel);  /* pendulum.py:161 */
+    const float p_p0_force = s->params.p0_force;
     const float t9018 = (p_p0_force * p_p0_force);  /* pendulum.py:162 */
+    const float p_p0_torque = s->params.p0_torque;
     const float t9019 = (p_p0_torque * p_p0_torque);  /* pendulum.py:163 */
     const float t9020 = (t203 ? t8316 : x_z0);  /* ekf.py:430 */
     const float t9021 = (t202 ? t8880 : t9020);  /* ekf.py:430 */
@@ -9639,7 +9637,9 @@ void pendulum_f32_update(pendulum_f32_state *s, const kf_pendulum_input_f32 *in,
     const int t9380 = (!t9289);  /* ekf.py:449 */
     const int t9381 = (t9200 && t9380);  /* ekf.py:449 */
     const int t9382 = (t203 && t8287);  /* pendulum.py:252 */
+    const int32_t x_skipped = s->skipped;
     const int32_t t9383 = kf_inc_if(x_skipped, t9382);  /* pendulum.py:253 */
+    const int32_t x_resets = s->resets;
     const int32_t t9384 = kf_inc_if(x_resets, t9289);  /* pendulum.py:254 */
     const float t9385 = ((0.0f < t9370) ? t9370 : 0.0f);  /* pendulum.py:257 */
     const float t9386 = sqrtf(t9385);  /* pendulum.py:257 */

@@ -62,54 +62,45 @@ int triad_f32_init(triad_f32_state *s, const triad_f32_params *p)
 void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_output *out)
 {
     const float u_gyr0 = in->gyr[0];
-    const float u_gyr1 = in->gyr[1];
-    const float u_gyr2 = in->gyr[2];
-    const float u_acc0 = in->acc[0];
-    const float u_acc1 = in->acc[1];
-    const float u_acc2 = in->acc[2];
-    const float u_mag0 = in->mag[0];
-    const float u_mag1 = in->mag[1];
-    const float u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
-    const float u_dt = in->dt;
-    const float p_primary = s->params.primary;
-    const float p_dip_deg = s->params.dip_deg;
-    const float p_min_angle_deg = s->params.min_angle_deg;
-    const float x_q0 = s->q[0];
-    const float x_q1 = s->q[1];
-    const float x_q2 = s->q[2];
-    const float x_q3 = s->q[3];
-    const int x_valid = (s->valid != 0u);
-    const int32_t x_rejected = s->rejected;
     const float t22 = fabsf(u_gyr0);  /* common.py:50 */
     const int t24 = (t22 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr1 = in->gyr[1];
     const float t25 = fabsf(u_gyr1);  /* common.py:50 */
     const int t26 = (t25 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr2 = in->gyr[2];
     const float t27 = fabsf(u_gyr2);  /* common.py:50 */
     const int t28 = (t27 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t29 = (t24 && t26);  /* common.py:50 */
     const int t30 = (t29 && t28);  /* common.py:50 */
+    const float u_acc0 = in->acc[0];
     const float t31 = fabsf(u_acc0);  /* common.py:50 */
     const int t33 = (t31 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc1 = in->acc[1];
     const float t34 = fabsf(u_acc1);  /* common.py:50 */
     const int t35 = (t34 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc2 = in->acc[2];
     const float t36 = fabsf(u_acc2);  /* common.py:50 */
     const int t37 = (t36 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t38 = (t33 && t35);  /* common.py:50 */
     const int t39 = (t38 && t37);  /* common.py:50 */
+    const float u_dt = in->dt;
     const int t40 = (0.0f < u_dt);  /* common.py:64 */
     const int t41 = (u_dt <= 0x1p+0f);  /* common.py:64 */
     const int t42 = (t30 && t39);  /* common.py:63 */
     const int t43 = (t42 && t40);  /* common.py:63 */
     const int t44 = (t43 && t41);  /* common.py:63 */
+    const float u_mag0 = in->mag[0];
     const float t45 = fabsf(u_mag0);  /* common.py:50 */
     const int t47 = (t45 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag1 = in->mag[1];
     const float t48 = fabsf(u_mag1);  /* common.py:50 */
     const int t49 = (t48 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag2 = in->mag[2];
     const float t50 = fabsf(u_mag2);  /* common.py:50 */
     const int t51 = (t50 <= 0x1.324p+12f);  /* common.py:50 */
     const int t52 = (t47 && t49);  /* common.py:50 */
     const int t53 = (t52 && t51);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t54 = (t44 && u_mag_valid);  /* common.py:67 */
     const int t55 = (t54 && t53);  /* common.py:67 */
     const int t56 = (!t53);  /* common.py:69 */
@@ -139,6 +130,7 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t79 = (u_mag0 * t78);  /* triad.py:76 */
     const float t81 = (u_mag1 * t78);  /* triad.py:76 */
     const float t83 = (u_mag2 * t78);  /* triad.py:76 */
+    const float p_dip_deg = s->params.dip_deg;
     const float t86 = (p_dip_deg * 0x1.1df46ap-6f);  /* triad.py:78 */
     const float t88 = (t86 * 0x1.45f306p-1f);  /* triad.py:78 */
     const float t90 = (t88 + 0x1p-1f);  /* triad.py:78 */
@@ -194,6 +186,7 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t151 = (t142 ? t145 : t150);  /* triad.py:78 */
     const float t152 = (t140 ? t139 : t151);  /* triad.py:78 */
     const float t155 = (-t149);  /* triad.py:79 */
+    const float p_primary = s->params.primary;
     const int t156 = (0x1p-1f < p_primary);  /* triad.py:80 */
     const float t157 = (t156 ? t79 : t67);  /* triad.py:81 */
     const float t158 = (t156 ? t81 : t69);  /* triad.py:81 */
@@ -378,6 +371,7 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const float t357 = (t351 ? t356 : t343);  /* common.py:138 */
     const float t358 = (-t346);  /* common.py:138 */
     const float t359 = (t351 ? t358 : t346);  /* common.py:138 */
+    const float p_min_angle_deg = s->params.min_angle_deg;
     const float t360 = (p_min_angle_deg * 0x1.1df46ap-6f);  /* triad.py:87 */
     const float t361 = (t360 * 0x1.45f306p-1f);  /* triad.py:87 */
     const float t362 = (t361 + 0x1p-1f);  /* triad.py:87 */
@@ -438,11 +432,17 @@ void triad_f32_update(triad_f32_state *s, const kf_imu_input_f32 *in, triad_f32_
     const int t413 = (t410 && t412);  /* triad.py:89 */
     const int t414 = (!t413);  /* triad.py:90 */
     const int t415 = (t410 && t414);  /* triad.py:90 */
+    const float x_q0 = s->q[0];
     const float t416 = (t415 ? t353 : x_q0);  /* triad.py:91 */
+    const float x_q1 = s->q[1];
     const float t417 = (t415 ? t355 : x_q1);  /* triad.py:91 */
+    const float x_q2 = s->q[2];
     const float t418 = (t415 ? t357 : x_q2);  /* triad.py:91 */
+    const float x_q3 = s->q[3];
     const float t419 = (t415 ? t359 : x_q3);  /* triad.py:91 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t420 = kf_inc_if(x_rejected, t60);  /* triad.py:92 */
+    const int x_valid = (s->valid != 0u);
     const int t421 = (x_valid || t415);  /* triad.py:93 */
     const int t422 = (!t415);  /* triad.py:94 */
     s->q[0] = t416;

@@ -56,54 +56,45 @@ int triad_q_init(triad_q_state *s, const triad_q_params *p)
 void triad_q_update(triad_q_state *s, const kf_imu_input_q *in, triad_q_output *out)
 {
     const int32_t u_gyr0 = in->gyr[0];
-    const int32_t u_gyr1 = in->gyr[1];
-    const int32_t u_gyr2 = in->gyr[2];
-    const int32_t u_acc0 = in->acc[0];
-    const int32_t u_acc1 = in->acc[1];
-    const int32_t u_acc2 = in->acc[2];
-    const int32_t u_mag0 = in->mag[0];
-    const int32_t u_mag1 = in->mag[1];
-    const int32_t u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
-    const int32_t u_dt = in->dt;
-    const int32_t p_primary = s->params.primary;
-    const int32_t p_dip_deg = s->params.dip_deg;
-    const int32_t p_min_angle_deg = s->params.min_angle_deg;
-    const int32_t x_q0 = s->q[0];
-    const int32_t x_q1 = s->q[1];
-    const int32_t x_q2 = s->q[2];
-    const int32_t x_q3 = s->q[3];
-    const int x_valid = (s->valid != 0u);
-    const int32_t x_rejected = s->rejected;
     const int32_t t22 = ((int32_t)((((int64_t)u_gyr0) < 0) ? (-((int64_t)u_gyr0)) : ((int64_t)u_gyr0)));  /* common.py:50 Q7.24 */
     const int t24 = ((((int64_t)t22) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr1 = in->gyr[1];
     const int32_t t25 = ((int32_t)((((int64_t)u_gyr1) < 0) ? (-((int64_t)u_gyr1)) : ((int64_t)u_gyr1)));  /* common.py:50 Q7.24 */
     const int t26 = ((((int64_t)t25) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr2 = in->gyr[2];
     const int32_t t27 = ((int32_t)((((int64_t)u_gyr2) < 0) ? (-((int64_t)u_gyr2)) : ((int64_t)u_gyr2)));  /* common.py:50 Q7.24 */
     const int t28 = ((((int64_t)t27) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
     const int t29 = (t24 && t26);  /* common.py:50 */
     const int t30 = (t29 && t28);  /* common.py:50 */
+    const int32_t u_acc0 = in->acc[0];
     const int32_t t31 = ((int32_t)((((int64_t)u_acc0) < 0) ? (-((int64_t)u_acc0)) : ((int64_t)u_acc0)));  /* common.py:50 Q9.22 */
     const int t33 = ((((int64_t)t31) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc1 = in->acc[1];
     const int32_t t34 = ((int32_t)((((int64_t)u_acc1) < 0) ? (-((int64_t)u_acc1)) : ((int64_t)u_acc1)));  /* common.py:50 Q9.22 */
     const int t35 = ((((int64_t)t34) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc2 = in->acc[2];
     const int32_t t36 = ((int32_t)((((int64_t)u_acc2) < 0) ? (-((int64_t)u_acc2)) : ((int64_t)u_acc2)));  /* common.py:50 Q9.22 */
     const int t37 = ((((int64_t)t36) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
     const int t38 = (t33 && t35);  /* common.py:50 */
     const int t39 = (t38 && t37);  /* common.py:50 */
+    const int32_t u_dt = in->dt;
     const int t40 = (((int64_t)0) < (((int64_t)u_dt) * 2));  /* common.py:64 */
     const int t41 = ((((int64_t)u_dt) * 2) <= ((int64_t)1073741824));  /* common.py:64 */
     const int t42 = (t30 && t39);  /* common.py:63 */
     const int t43 = (t42 && t40);  /* common.py:63 */
     const int t44 = (t43 && t41);  /* common.py:63 */
+    const int32_t u_mag0 = in->mag[0];
     const int32_t t45 = ((int32_t)((((int64_t)u_mag0) < 0) ? (-((int64_t)u_mag0)) : ((int64_t)u_mag0)));  /* common.py:50 Q14.17 */
     const int t47 = ((((int64_t)t45) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag1 = in->mag[1];
     const int32_t t48 = ((int32_t)((((int64_t)u_mag1) < 0) ? (-((int64_t)u_mag1)) : ((int64_t)u_mag1)));  /* common.py:50 Q14.17 */
     const int t49 = ((((int64_t)t48) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag2 = in->mag[2];
     const int32_t t50 = ((int32_t)((((int64_t)u_mag2) < 0) ? (-((int64_t)u_mag2)) : ((int64_t)u_mag2)));  /* common.py:50 Q14.17 */
     const int t51 = ((((int64_t)t50) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
     const int t52 = (t47 && t49);  /* common.py:50 */
     const int t53 = (t52 && t51);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t54 = (t44 && u_mag_valid);  /* common.py:67 */
     const int t55 = (t54 && t53);  /* common.py:67 */
     const int t56 = (!t53);  /* common.py:69 */
@@ -129,6 +120,7 @@ void triad_q_update(triad_q_state *s, const kf_imu_input_q *in, triad_q_output *
     const int32_t t79 = kf_mul_dyn(u_mag0, t78, -13, -1073741824, 1073741824);  /* triad.py:76 Q1.30 */
     const int32_t t81 = kf_mul_dyn(u_mag1, t78, -13, -1073741824, 1073741824);  /* triad.py:76 Q1.30 */
     const int32_t t83 = kf_mul_dyn(u_mag2, t78, -13, -1073741824, 1073741824);  /* triad.py:76 Q1.30 */
+    const int32_t p_dip_deg = s->params.dip_deg;
     const int32_t t86 = ((int32_t)((kf_smull(p_dip_deg, 1199381129) + 536870912) >> 30));  /* triad.py:78 Q1.30 */
     const int32_t t88 = ((int32_t)((kf_smull(t86, 1367130551) + 1073741824) >> 31));  /* triad.py:78 Q1.30 */
     const int32_t t90 = ((int32_t)((((((int64_t)t88) * 2) + ((int64_t)1073741824)) + 1) >> 1));  /* triad.py:78 Q1.30 */
@@ -185,6 +177,7 @@ void triad_q_update(triad_q_state *s, const kf_imu_input_q *in, triad_q_output *
     const int32_t t152_1 = kf_sat(((int64_t)t151), -1073741824, 1073741824);
     const int32_t t152 = (t140 ? t152_0 : t152_1);  /* triad.py:78 Q1.30 */
     const int32_t t155 = ((int32_t)(-((int64_t)t149)));  /* triad.py:79 Q1.30 */
+    const int32_t p_primary = s->params.primary;
     const int t156 = (((int64_t)1073741824) < (((int64_t)p_primary) * 2));  /* triad.py:80 */
     const int32_t t157 = (t156 ? t79 : t67);  /* triad.py:81 Q1.30 */
     const int32_t t158 = (t156 ? t81 : t69);  /* triad.py:81 Q1.30 */
@@ -367,6 +360,7 @@ void triad_q_update(triad_q_state *s, const kf_imu_input_q *in, triad_q_output *
     const int32_t t357 = (t351 ? t356 : t343);  /* common.py:138 Q1.30 */
     const int32_t t358 = ((int32_t)(-((int64_t)t346)));  /* common.py:138 Q1.30 */
     const int32_t t359 = (t351 ? t358 : t346);  /* common.py:138 Q1.30 */
+    const int32_t p_min_angle_deg = s->params.min_angle_deg;
     const int32_t t360 = ((int32_t)((kf_smull(p_min_angle_deg, 1199381129) + 536870912) >> 30));  /* triad.py:87 Q0.31 */
     const int32_t t361 = ((int32_t)((kf_smull(t360, 1367130551) + 1073741824) >> 31));  /* triad.py:87 Q0.31 */
     const int32_t t362 = ((int32_t)(((((int64_t)t361) + ((int64_t)1073741824)) + 1) >> 1));  /* triad.py:87 Q1.30 */
@@ -424,11 +418,17 @@ void triad_q_update(triad_q_state *s, const kf_imu_input_q *in, triad_q_output *
     const int t413 = (t410 && t412);  /* triad.py:89 */
     const int t414 = (!t413);  /* triad.py:90 */
     const int t415 = (t410 && t414);  /* triad.py:90 */
+    const int32_t x_q0 = s->q[0];
     const int32_t t416 = (t415 ? t353 : x_q0);  /* triad.py:91 Q1.30 */
+    const int32_t x_q1 = s->q[1];
     const int32_t t417 = (t415 ? t355 : x_q1);  /* triad.py:91 Q1.30 */
+    const int32_t x_q2 = s->q[2];
     const int32_t t418 = (t415 ? t357 : x_q2);  /* triad.py:91 Q1.30 */
+    const int32_t x_q3 = s->q[3];
     const int32_t t419 = (t415 ? t359 : x_q3);  /* triad.py:91 Q1.30 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t420 = kf_inc_if(x_rejected, t60);  /* triad.py:92 */
+    const int x_valid = (s->valid != 0u);
     const int t421 = (x_valid || t415);  /* triad.py:93 */
     const int t422 = (!t415);  /* triad.py:94 */
     s->q[0] = t416;

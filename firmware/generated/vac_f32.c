@@ -78,45 +78,27 @@ int vac_f32_init(vac_f32_state *s, const vac_f32_params *p)
 
 void vac_f32_update(vac_f32_state *s, const kf_imu_input_f32 *in, vac_f32_output *out)
 {
-    const float u_gyr0 = in->gyr[0];
-    const float u_gyr1 = in->gyr[1];
-    const float u_gyr2 = in->gyr[2];
-    const float u_acc0 = in->acc[0];
-    const float u_acc1 = in->acc[1];
-    const float u_acc2 = in->acc[2];
-    const float u_mag0 = in->mag[0];
-    const float u_mag1 = in->mag[1];
-    const float u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
     const float u_dt = in->dt;
-    const float p_gain_acc = s->params.gain_acc;
-    const float p_gain_mag = s->params.gain_mag;
-    const float p_adaptive = s->params.adaptive;
-    const float p_t1 = s->params.t1;
-    const float p_t2 = s->params.t2;
-    const float p_slerp_threshold = s->params.slerp_threshold;
-    const float p_gravity = s->params.gravity;
-    const float x_q0 = s->q[0];
-    const float x_q1 = s->q[1];
-    const float x_q2 = s->q[2];
-    const float x_q3 = s->q[3];
-    const int x_initialised = (s->initialised != 0u);
-    const int x_heading_set = (s->heading_set != 0u);
-    const int32_t x_rejected = s->rejected;
     const float t26 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* common.py:62 */
     const float t28 = ((t26 < 0x1p+0f) ? t26 : 0x1p+0f);  /* common.py:62 */
+    const float u_gyr0 = in->gyr[0];
     const float t29 = fabsf(u_gyr0);  /* common.py:50 */
     const int t31 = (t29 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr1 = in->gyr[1];
     const float t32 = fabsf(u_gyr1);  /* common.py:50 */
     const int t33 = (t32 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr2 = in->gyr[2];
     const float t34 = fabsf(u_gyr2);  /* common.py:50 */
     const int t35 = (t34 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t36 = (t31 && t33);  /* common.py:50 */
     const int t37 = (t36 && t35);  /* common.py:50 */
+    const float u_acc0 = in->acc[0];
     const float t38 = fabsf(u_acc0);  /* common.py:50 */
     const int t40 = (t38 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc1 = in->acc[1];
     const float t41 = fabsf(u_acc1);  /* common.py:50 */
     const int t42 = (t41 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc2 = in->acc[2];
     const float t43 = fabsf(u_acc2);  /* common.py:50 */
     const int t44 = (t43 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t45 = (t40 && t42);  /* common.py:50 */
@@ -126,14 +108,18 @@ void vac_f32_update(vac_f32_state *s, const kf_imu_input_f32 *in, vac_f32_output
     const int t49 = (t37 && t46);  /* common.py:63 */
     const int t50 = (t49 && t47);  /* common.py:63 */
     const int t51 = (t50 && t48);  /* common.py:63 */
+    const float u_mag0 = in->mag[0];
     const float t52 = fabsf(u_mag0);  /* common.py:50 */
     const int t54 = (t52 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag1 = in->mag[1];
     const float t55 = fabsf(u_mag1);  /* common.py:50 */
     const int t56 = (t55 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag2 = in->mag[2];
     const float t57 = fabsf(u_mag2);  /* common.py:50 */
     const int t58 = (t57 <= 0x1.324p+12f);  /* common.py:50 */
     const int t59 = (t54 && t56);  /* common.py:50 */
     const int t60 = (t59 && t58);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t61 = (t51 && u_mag_valid);  /* common.py:67 */
     const int t62 = (t61 && t60);  /* common.py:67 */
     const int t63 = (!t60);  /* common.py:69 */
@@ -141,12 +127,16 @@ void vac_f32_update(vac_f32_state *s, const kf_imu_input_f32 *in, vac_f32_output
     const int t65 = (!t64);  /* common.py:68 */
     const int t66 = (t51 && t65);  /* common.py:68 */
     const int t67 = (!t66);  /* common.py:68 */
+    const float x_q1 = s->q[1];
     const float t68 = (x_q1 * u_gyr0);  /* vac.py:100 */
     const float t69 = (-t68);  /* vac.py:100 */
+    const float x_q2 = s->q[2];
     const float t70 = (x_q2 * u_gyr1);  /* vac.py:100 */
     const float t71 = (t69 - t70);  /* vac.py:100 */
+    const float x_q3 = s->q[3];
     const float t72 = (x_q3 * u_gyr2);  /* vac.py:100 */
     const float t73 = (t71 - t72);  /* vac.py:100 */
+    const float x_q0 = s->q[0];
     const float t74 = (x_q0 * u_gyr0);  /* vac.py:100 */
     const float t75 = (x_q2 * u_gyr2);  /* vac.py:100 */
     const float t76 = (t74 + t75);  /* vac.py:100 */
@@ -248,16 +238,21 @@ void vac_f32_update(vac_f32_state *s, const kf_imu_input_f32 *in, vac_f32_output
     const float t183 = (t179 ? t176 : 0.0f);  /* algebraic.py:72 */
     const float t184 = ((0.0f < t119) ? t119 : 0.0f);  /* vac.py:106 */
     const float t185 = sqrtf(t184);  /* vac.py:106 */
+    const float p_gravity = s->params.gravity;
     const float t186 = (t185 - p_gravity);  /* vac.py:54 */
     const float t187 = fabsf(t186);  /* vac.py:54 */
     const float t188 = (t187 / p_gravity);  /* vac.py:54 */
+    const float p_t2 = s->params.t2;
     const float t189 = (p_t2 - t188);  /* vac.py:55 */
+    const float p_t1 = s->params.t1;
     const float t190 = (p_t2 - p_t1);  /* vac.py:55 */
     const float t192 = ((0x1.0624dep-10f < t190) ? t190 : 0x1.0624dep-10f);  /* vac.py:55 */
     const float t193 = (t189 / t192);  /* vac.py:55 */
     const float t194 = ((0.0f < t193) ? t193 : 0.0f);  /* vac.py:55 */
     const float t195 = ((t194 < 0x1p+0f) ? t194 : 0x1p+0f);  /* vac.py:55 */
+    const float p_adaptive = s->params.adaptive;
     const int t196 = (0x1p-1f < p_adaptive);  /* vac.py:108 */
+    const float p_gain_acc = s->params.gain_acc;
     const float t197 = (p_gain_acc * t195);  /* vac.py:108 */
     const float t198 = (t196 ? t197 : p_gain_acc);  /* vac.py:108 */
     const int t199 = (0x1p+0f <= t119);  /* vac.py:109 */
@@ -490,6 +485,7 @@ void vac_f32_update(vac_f32_state *s, const kf_imu_input_f32 *in, vac_f32_output
     const float t451 = (t447 * t181);  /* algebraic.py:129 */
     const float t453 = (t447 * t182);  /* algebraic.py:130 */
     const float t455 = (t447 * t183);  /* algebraic.py:130 */
+    const float p_slerp_threshold = s->params.slerp_threshold;
     const int t457 = (p_slerp_threshold < t180);  /* algebraic.py:131 */
     const float t458 = (t457 ? t215 : t449);  /* algebraic.py:131 */
     const float t459 = (t457 ? t217 : t451);  /* algebraic.py:131 */
@@ -588,6 +584,8 @@ void vac_f32_update(vac_f32_state *s, const kf_imu_input_f32 *in, vac_f32_output
     const int t559 = (0x1.f1d1cep-8f <= t530);  /* vac.py:117 */
     const int t560 = (t62 && t557);  /* vac.py:117 */
     const int t561 = (t560 && t559);  /* vac.py:117 */
+    const float p_gain_mag = s->params.gain_mag;
+    const int x_heading_set = (s->heading_set != 0u);
     const float t562 = (x_heading_set ? p_gain_mag : 0x1p+0f);  /* vac.py:118 */
     const int t563 = (t555 < 0.0f);  /* vac.py:60 */
     const float t564 = (-t555);  /* vac.py:61 */
@@ -976,6 +974,7 @@ void vac_f32_update(vac_f32_state *s, const kf_imu_input_f32 *in, vac_f32_output
     const float t953 = (t947 ? t952 : t945);  /* vac.py:61 */
     const float t954 = (-t946);  /* vac.py:61 */
     const float t955 = (t947 ? t954 : t946);  /* vac.py:61 */
+    const int x_initialised = (s->initialised != 0u);
     const int t956 = (!x_initialised);  /* vac.py:127 */
     const int t957 = (t51 && t956);  /* vac.py:127 */
     const int t958 = (t957 && t199);  /* vac.py:127 */
@@ -992,6 +991,7 @@ void vac_f32_update(vac_f32_state *s, const kf_imu_input_f32 *in, vac_f32_output
     const int t969 = (t959 && t561);  /* vac.py:131 */
     const int t970 = (t968 || t969);  /* vac.py:131 */
     const int t971 = (x_heading_set || t970);  /* vac.py:130 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t972 = kf_inc_if(x_rejected, t67);  /* vac.py:132 */
     const int t973 = (x_initialised || t958);  /* vac.py:133 */
     s->q[0] = t964;

@@ -72,47 +72,29 @@ int vac_q_init(vac_q_state *s, const vac_q_params *p)
 
 void vac_q_update(vac_q_state *s, const kf_imu_input_q *in, vac_q_output *out)
 {
-    const int32_t u_gyr0 = in->gyr[0];
-    const int32_t u_gyr1 = in->gyr[1];
-    const int32_t u_gyr2 = in->gyr[2];
-    const int32_t u_acc0 = in->acc[0];
-    const int32_t u_acc1 = in->acc[1];
-    const int32_t u_acc2 = in->acc[2];
-    const int32_t u_mag0 = in->mag[0];
-    const int32_t u_mag1 = in->mag[1];
-    const int32_t u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
     const int32_t u_dt = in->dt;
-    const int32_t p_gain_acc = s->params.gain_acc;
-    const int32_t p_gain_mag = s->params.gain_mag;
-    const int32_t p_adaptive = s->params.adaptive;
-    const int32_t p_t1 = s->params.t1;
-    const int32_t p_t2 = s->params.t2;
-    const int32_t p_slerp_threshold = s->params.slerp_threshold;
-    const int32_t p_gravity = s->params.gravity;
-    const int32_t x_q0 = s->q[0];
-    const int32_t x_q1 = s->q[1];
-    const int32_t x_q2 = s->q[2];
-    const int32_t x_q3 = s->q[3];
-    const int x_initialised = (s->initialised != 0u);
-    const int x_heading_set = (s->heading_set != 0u);
-    const int32_t x_rejected = s->rejected;
     const int32_t t26_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t26 = ((0 < t26_0) ? t26_0 : 0);  /* common.py:62 Q3.28 */
     const int32_t t28_0 = kf_sat((((int64_t)t26) * 4), 0, 1073741824);
     const int32_t t28 = ((t28_0 < 1073741824) ? t28_0 : 1073741824);  /* common.py:62 Q1.30 */
+    const int32_t u_gyr0 = in->gyr[0];
     const int32_t t29 = ((int32_t)((((int64_t)u_gyr0) < 0) ? (-((int64_t)u_gyr0)) : ((int64_t)u_gyr0)));  /* common.py:50 Q7.24 */
     const int t31 = ((((int64_t)t29) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr1 = in->gyr[1];
     const int32_t t32 = ((int32_t)((((int64_t)u_gyr1) < 0) ? (-((int64_t)u_gyr1)) : ((int64_t)u_gyr1)));  /* common.py:50 Q7.24 */
     const int t33 = ((((int64_t)t32) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr2 = in->gyr[2];
     const int32_t t34 = ((int32_t)((((int64_t)u_gyr2) < 0) ? (-((int64_t)u_gyr2)) : ((int64_t)u_gyr2)));  /* common.py:50 Q7.24 */
     const int t35 = ((((int64_t)t34) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
     const int t36 = (t31 && t33);  /* common.py:50 */
     const int t37 = (t36 && t35);  /* common.py:50 */
+    const int32_t u_acc0 = in->acc[0];
     const int32_t t38 = ((int32_t)((((int64_t)u_acc0) < 0) ? (-((int64_t)u_acc0)) : ((int64_t)u_acc0)));  /* common.py:50 Q9.22 */
     const int t40 = ((((int64_t)t38) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc1 = in->acc[1];
     const int32_t t41 = ((int32_t)((((int64_t)u_acc1) < 0) ? (-((int64_t)u_acc1)) : ((int64_t)u_acc1)));  /* common.py:50 Q9.22 */
     const int t42 = ((((int64_t)t41) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc2 = in->acc[2];
     const int32_t t43 = ((int32_t)((((int64_t)u_acc2) < 0) ? (-((int64_t)u_acc2)) : ((int64_t)u_acc2)));  /* common.py:50 Q9.22 */
     const int t44 = ((((int64_t)t43) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
     const int t45 = (t40 && t42);  /* common.py:50 */
@@ -122,14 +104,18 @@ void vac_q_update(vac_q_state *s, const kf_imu_input_q *in, vac_q_output *out)
     const int t49 = (t37 && t46);  /* common.py:63 */
     const int t50 = (t49 && t47);  /* common.py:63 */
     const int t51 = (t50 && t48);  /* common.py:63 */
+    const int32_t u_mag0 = in->mag[0];
     const int32_t t52 = ((int32_t)((((int64_t)u_mag0) < 0) ? (-((int64_t)u_mag0)) : ((int64_t)u_mag0)));  /* common.py:50 Q14.17 */
     const int t54 = ((((int64_t)t52) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag1 = in->mag[1];
     const int32_t t55 = ((int32_t)((((int64_t)u_mag1) < 0) ? (-((int64_t)u_mag1)) : ((int64_t)u_mag1)));  /* common.py:50 Q14.17 */
     const int t56 = ((((int64_t)t55) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag2 = in->mag[2];
     const int32_t t57 = ((int32_t)((((int64_t)u_mag2) < 0) ? (-((int64_t)u_mag2)) : ((int64_t)u_mag2)));  /* common.py:50 Q14.17 */
     const int t58 = ((((int64_t)t57) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
     const int t59 = (t54 && t56);  /* common.py:50 */
     const int t60 = (t59 && t58);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t61 = (t51 && u_mag_valid);  /* common.py:67 */
     const int t62 = (t61 && t60);  /* common.py:67 */
     const int t63 = (!t60);  /* common.py:69 */
@@ -137,12 +123,16 @@ void vac_q_update(vac_q_state *s, const kf_imu_input_q *in, vac_q_output *out)
     const int t65 = (!t64);  /* common.py:68 */
     const int t66 = (t51 && t65);  /* common.py:68 */
     const int t67 = (!t66);  /* common.py:68 */
+    const int32_t x_q1 = s->q[1];
     const int32_t t68 = ((int32_t)((kf_smull(x_q1, u_gyr0) + 1073741824) >> 31));  /* vac.py:100 Q8.23 */
     const int32_t t69 = ((int32_t)(-((int64_t)t68)));  /* vac.py:100 Q8.23 */
+    const int32_t x_q2 = s->q[2];
     const int32_t t70 = ((int32_t)((kf_smull(x_q2, u_gyr1) + 1073741824) >> 31));  /* vac.py:100 Q8.23 */
     const int32_t t71 = ((int32_t)(((((int64_t)t69) - ((int64_t)t70)) + 1) >> 1));  /* vac.py:100 Q9.22 */
+    const int32_t x_q3 = s->q[3];
     const int32_t t72 = ((int32_t)((kf_smull(x_q3, u_gyr2) + 1073741824) >> 31));  /* vac.py:100 Q8.23 */
     const int32_t t73 = ((int32_t)((((((int64_t)t71) * 2) - ((int64_t)t72)) + 1) >> 1));  /* vac.py:100 Q9.22 */
+    const int32_t x_q0 = s->q[0];
     const int32_t t74 = ((int32_t)((kf_smull(x_q0, u_gyr0) + 1073741824) >> 31));  /* vac.py:100 Q8.23 */
     const int32_t t75 = ((int32_t)((kf_smull(x_q2, u_gyr2) + 1073741824) >> 31));  /* vac.py:100 Q8.23 */
     const int32_t t76 = ((int32_t)(((((int64_t)t74) + ((int64_t)t75)) + 1) >> 1));  /* vac.py:100 Q9.22 */
@@ -233,10 +223,13 @@ void vac_q_update(vac_q_state *s, const kf_imu_input_q *in, vac_q_output *out)
     const int32_t t183 = (t179 ? t176 : 0);  /* algebraic.py:72 Q1.30 */
     const int32_t t184 = ((0 < t119) ? t119 : 0);  /* vac.py:106 Q20.11 */
     const int32_t t185 = ((int32_t)kf_isqrt_rnd((((int64_t)t184) * INT64_C(2147483648))));  /* vac.py:106 Q10.21 */
+    const int32_t p_gravity = s->params.gravity;
     const int32_t t186 = ((int32_t)((((((int64_t)t185) * 64) - ((int64_t)p_gravity)) + 32) >> 6));  /* vac.py:54 Q10.21 */
     const int32_t t187 = ((int32_t)((((int64_t)t186) < 0) ? (-((int64_t)t186)) : ((int64_t)t186)));  /* vac.py:54 Q10.21 */
     const int32_t t188 = kf_div_rnd((((int64_t)t187) * 1073741824), ((int64_t)p_gravity), 0, 1517058159);  /* vac.py:54 Q7.24 */
+    const int32_t p_t2 = s->params.t2;
     const int32_t t189 = ((int32_t)(((((int64_t)p_t2) - (((int64_t)t188) * 32)) + 16) >> 5));  /* vac.py:55 Q7.24 */
+    const int32_t p_t1 = s->params.t1;
     const int32_t t190 = ((int32_t)((((((int64_t)p_t2) * 2) - ((int64_t)p_t1)) + 1) >> 1));  /* vac.py:55 Q2.29 */
     const int32_t t192 = ((536871 < t190) ? t190 : 536871);  /* vac.py:55 Q2.29 */
     const int32_t t193 = kf_div_rnd((((int64_t)t189) * 524288), ((int64_t)t192), -1481502109, 32768000);  /* vac.py:55 Q17.14 */
@@ -244,7 +237,9 @@ void vac_q_update(vac_q_state *s, const kf_imu_input_q *in, vac_q_output *out)
     const int32_t t194 = ((0 < t194_0) ? t194_0 : 0);  /* vac.py:55 Q11.20 */
     const int32_t t195_0 = kf_sat((((int64_t)t194) * 1024), 0, 1073741824);
     const int32_t t195 = ((t195_0 < 1073741824) ? t195_0 : 1073741824);  /* vac.py:55 Q1.30 */
+    const int32_t p_adaptive = s->params.adaptive;
     const int t196 = (((int64_t)1073741824) < (((int64_t)p_adaptive) * 2));  /* vac.py:108 */
+    const int32_t p_gain_acc = s->params.gain_acc;
     const int32_t t197 = ((int32_t)((kf_smull(p_gain_acc, t195) + 536870912) >> 30));  /* vac.py:108 Q1.30 */
     const int32_t t198 = (t196 ? t197 : p_gain_acc);  /* vac.py:108 Q1.30 */
     const int t199 = (((int64_t)1073741824) <= (((int64_t)t119) * 524288));  /* vac.py:109 */
@@ -466,6 +461,7 @@ void vac_q_update(vac_q_state *s, const kf_imu_input_q *in, vac_q_output *out)
     const int32_t t451 = kf_sat(((kf_smull(t447, t181) + 268435456) >> 29), -1073741824, 1073741824);  /* algebraic.py:129 Q1.30 */
     const int32_t t453 = kf_sat(((kf_smull(t447, t182) + 268435456) >> 29), -1073741824, 1073741824);  /* algebraic.py:130 Q1.30 */
     const int32_t t455 = kf_sat(((kf_smull(t447, t183) + 268435456) >> 29), 0, 0);  /* algebraic.py:130 Q1.30 */
+    const int32_t p_slerp_threshold = s->params.slerp_threshold;
     const int t457 = (((int64_t)p_slerp_threshold) < (((int64_t)t180) * 2));  /* algebraic.py:131 */
     const int32_t t458 = (t457 ? t215 : t449);  /* algebraic.py:131 Q1.30 */
     const int32_t t459 = (t457 ? t217 : t451);  /* algebraic.py:131 Q1.30 */
@@ -562,6 +558,8 @@ void vac_q_update(vac_q_state *s, const kf_imu_input_q *in, vac_q_output *out)
     const int t559 = (((int64_t)2088006527) <= (((int64_t)t530) * 512));  /* vac.py:117 */
     const int t560 = (t62 && t557);  /* vac.py:117 */
     const int t561 = (t560 && t559);  /* vac.py:117 */
+    const int32_t p_gain_mag = s->params.gain_mag;
+    const int x_heading_set = (s->heading_set != 0u);
     const int32_t t562 = (x_heading_set ? p_gain_mag : 1073741824);  /* vac.py:118 Q1.30 */
     const int t563 = (((int64_t)t555) < ((int64_t)0));  /* vac.py:60 */
     const int32_t t564 = ((int32_t)(-((int64_t)t555)));  /* vac.py:61 Q1.30 */
@@ -941,6 +939,7 @@ void vac_q_update(vac_q_state *s, const kf_imu_input_q *in, vac_q_output *out)
     const int32_t t953 = (t947 ? t952 : t945);  /* vac.py:61 Q1.30 */
     const int32_t t954 = ((int32_t)(-((int64_t)t946)));  /* vac.py:61 Q1.30 */
     const int32_t t955 = (t947 ? t954 : t946);  /* vac.py:61 Q1.30 */
+    const int x_initialised = (s->initialised != 0u);
     const int t956 = (!x_initialised);  /* vac.py:127 */
     const int t957 = (t51 && t956);  /* vac.py:127 */
     const int t958 = (t957 && t199);  /* vac.py:127 */
@@ -957,6 +956,7 @@ void vac_q_update(vac_q_state *s, const kf_imu_input_q *in, vac_q_output *out)
     const int t969 = (t959 && t561);  /* vac.py:131 */
     const int t970 = (t968 || t969);  /* vac.py:131 */
     const int t971 = (x_heading_set || t970);  /* vac.py:130 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t972 = kf_inc_if(x_rejected, t67);  /* vac.py:132 */
     const int t973 = (x_initialised || t958);  /* vac.py:133 */
     s->q[0] = kf_sat(((int64_t)t964), -1073741824, 1073741824);

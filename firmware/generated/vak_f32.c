@@ -80,53 +80,27 @@ int vak_f32_init(vak_f32_state *s, const vak_f32_params *p)
 
 void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output *out)
 {
-    const float u_gyr0 = in->gyr[0];
-    const float u_gyr1 = in->gyr[1];
-    const float u_gyr2 = in->gyr[2];
-    const float u_acc0 = in->acc[0];
-    const float u_acc1 = in->acc[1];
-    const float u_acc2 = in->acc[2];
-    const float u_mag0 = in->mag[0];
-    const float u_mag1 = in->mag[1];
-    const float u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
     const float u_dt = in->dt;
-    const float p_sigma_acc = s->params.sigma_acc;
-    const float p_sigma_gyr = s->params.sigma_gyr;
-    const float p_sigma_mag = s->params.sigma_mag;
-    const float p_coupling = s->params.coupling;
-    const float p_gravity = s->params.gravity;
-    const float x_q0 = s->q[0];
-    const float x_q1 = s->q[1];
-    const float x_q2 = s->q[2];
-    const float x_q3 = s->q[3];
-    const float x_S0 = s->S[0];
-    const float x_S1 = s->S[1];
-    const float x_S2 = s->S[2];
-    const float x_S3 = s->S[3];
-    const float x_S4 = s->S[4];
-    const float x_S5 = s->S[5];
-    const float x_S6 = s->S[6];
-    const float x_S7 = s->S[7];
-    const float x_S8 = s->S[8];
-    const float x_S9 = s->S[9];
-    const int x_initialised = (s->initialised != 0u);
-    const int x_heading_set = (s->heading_set != 0u);
-    const int32_t x_rejected = s->rejected;
     const float t34 = ((0.0f < u_dt) ? u_dt : 0.0f);  /* common.py:62 */
     const float t36 = ((t34 < 0x1p+0f) ? t34 : 0x1p+0f);  /* common.py:62 */
+    const float u_gyr0 = in->gyr[0];
     const float t37 = fabsf(u_gyr0);  /* common.py:50 */
     const int t39 = (t37 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr1 = in->gyr[1];
     const float t40 = fabsf(u_gyr1);  /* common.py:50 */
     const int t41 = (t40 <= 0x1.1740bp+5f);  /* common.py:50 */
+    const float u_gyr2 = in->gyr[2];
     const float t42 = fabsf(u_gyr2);  /* common.py:50 */
     const int t43 = (t42 <= 0x1.1740bp+5f);  /* common.py:50 */
     const int t44 = (t39 && t41);  /* common.py:50 */
     const int t45 = (t44 && t43);  /* common.py:50 */
+    const float u_acc0 = in->acc[0];
     const float t46 = fabsf(u_acc0);  /* common.py:50 */
     const int t48 = (t46 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc1 = in->acc[1];
     const float t49 = fabsf(u_acc1);  /* common.py:50 */
     const int t50 = (t49 <= 0x1.39d014p+7f);  /* common.py:50 */
+    const float u_acc2 = in->acc[2];
     const float t51 = fabsf(u_acc2);  /* common.py:50 */
     const int t52 = (t51 <= 0x1.39d014p+7f);  /* common.py:50 */
     const int t53 = (t48 && t50);  /* common.py:50 */
@@ -136,14 +110,18 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const int t57 = (t45 && t54);  /* common.py:63 */
     const int t58 = (t57 && t55);  /* common.py:63 */
     const int t59 = (t58 && t56);  /* common.py:63 */
+    const float u_mag0 = in->mag[0];
     const float t60 = fabsf(u_mag0);  /* common.py:50 */
     const int t62 = (t60 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag1 = in->mag[1];
     const float t63 = fabsf(u_mag1);  /* common.py:50 */
     const int t64 = (t63 <= 0x1.324p+12f);  /* common.py:50 */
+    const float u_mag2 = in->mag[2];
     const float t65 = fabsf(u_mag2);  /* common.py:50 */
     const int t66 = (t65 <= 0x1.324p+12f);  /* common.py:50 */
     const int t67 = (t62 && t64);  /* common.py:50 */
     const int t68 = (t67 && t66);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t69 = (t59 && u_mag_valid);  /* common.py:67 */
     const int t70 = (t69 && t68);  /* common.py:67 */
     const int t71 = (!t68);  /* common.py:69 */
@@ -173,9 +151,12 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t94 = (u_mag0 * t93);  /* vak.py:89 */
     const float t96 = (u_mag1 * t93);  /* vak.py:89 */
     const float t98 = (u_mag2 * t93);  /* vak.py:89 */
+    const float p_sigma_acc = s->params.sigma_acc;
+    const float p_sigma_mag = s->params.sigma_mag;
     const float t100 = (p_sigma_mag / p_sigma_acc);  /* vak.py:96 */
     const float t101 = ((0.0f < t100) ? t100 : 0.0f);  /* vak.py:96 */
     const float t103 = ((t101 < 0x1p+10f) ? t101 : 0x1p+10f);  /* vak.py:96 */
+    const float p_gravity = s->params.gravity;
     const float t105 = (p_gravity / 0x1.4p+6f);  /* vak.py:97 */
     const float t106 = (t103 * t105);  /* vak.py:97 */
     const float t107 = ((t106 < 0x1p+0f) ? 0x1p+0f : t106);  /* vak.py:97 */
@@ -200,6 +181,7 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t129 = (t128 * t128);  /* vak.py:103 */
     const float t130 = ((0x1p-10f < t129) ? t129 : 0x1p-10f);  /* vak.py:103 */
     const float t132 = ((t130 < 0x1p+7f) ? t130 : 0x1p+7f);  /* vak.py:103 */
+    const float p_sigma_gyr = s->params.sigma_gyr;
     const float t133 = (p_sigma_gyr / p_sigma_acc);  /* vak.py:105 */
     const float t134 = (p_gravity * t133);  /* vak.py:105 */
     const float t135 = (t36 * t134);  /* vak.py:105 */
@@ -216,12 +198,16 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t149 = (u_gyr2 * t141);  /* algebraic.py:268 */
     const float t150 = ((-0x1p-1f < t149) ? t149 : -0x1p-1f);  /* algebraic.py:268 */
     const float t151 = ((t150 < 0x1p-1f) ? t150 : 0x1p-1f);  /* algebraic.py:268 */
+    const float x_q1 = s->q[1];
     const float t152 = (x_q1 * t145);  /* algebraic.py:273 */
     const float t153 = (-t152);  /* algebraic.py:273 */
+    const float x_q2 = s->q[2];
     const float t154 = (x_q2 * t148);  /* algebraic.py:273 */
     const float t155 = (t153 - t154);  /* algebraic.py:273 */
+    const float x_q3 = s->q[3];
     const float t156 = (x_q3 * t151);  /* algebraic.py:273 */
     const float t157 = (t155 - t156);  /* algebraic.py:273 */
+    const float x_q0 = s->q[0];
     const float t158 = (x_q0 * t145);  /* algebraic.py:273 */
     const float t159 = (x_q2 * t151);  /* algebraic.py:273 */
     const float t160 = (t158 + t159);  /* algebraic.py:273 */
@@ -471,6 +457,7 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t424 = (t120 * t249);  /* algebraic.py:326 */
     const float t425 = sqrtf(t417);  /* algebraic.py:326 */
     const float t426 = (t424 * t425);  /* algebraic.py:326 */
+    const float p_coupling = s->params.coupling;
     const float t427 = (t426 * p_coupling);  /* algebraic.py:326 */
     const float t428 = (t120 * t423);  /* algebraic.py:327 */
     const float t429 = ((0.0f < t428) ? t428 : 0.0f);  /* algebraic.py:327 */
@@ -547,6 +534,7 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t510 = (t435 * t509);  /* algebraic.py:347 */
     const float t511 = (t507 + t510);  /* algebraic.py:347 */
     const float t512 = (t511 + t447);  /* algebraic.py:349 */
+    const int x_heading_set = (s->heading_set != 0u);
     const int t514 = (!x_heading_set);  /* vak.py:123 */
     const int t515 = (t311 && t514);  /* vak.py:123 */
     const int t516 = (!t515);  /* vak.py:124 */
@@ -554,20 +542,30 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t518 = (-t145);  /* algebraic.py:415 */
     const float t519 = (-t148);  /* algebraic.py:415 */
     const float t520 = (-t151);  /* algebraic.py:415 */
+    const float x_S1 = s->S[1];
     const float t521 = (t518 * x_S1);  /* algebraic.py:422 */
+    const float x_S3 = s->S[3];
     const float t522 = (t519 * x_S3);  /* algebraic.py:422 */
+    const float x_S6 = s->S[6];
     const float t523 = (t520 * x_S6);  /* algebraic.py:422 */
     const float t524 = (t521 + t522);  /* algebraic.py:192 */
     const float t525 = (t524 + t523);  /* algebraic.py:192 */
+    const float x_S0 = s->S[0];
     const float t526 = (x_S0 + t525);  /* algebraic.py:428 */
+    const float x_S2 = s->S[2];
     const float t528 = (t518 * x_S2);  /* algebraic.py:422 */
+    const float x_S4 = s->S[4];
     const float t529 = (t519 * x_S4);  /* algebraic.py:422 */
+    const float x_S7 = s->S[7];
     const float t530 = (t520 * x_S7);  /* algebraic.py:422 */
     const float t531 = (t528 + t529);  /* algebraic.py:192 */
     const float t532 = (t531 + t530);  /* algebraic.py:192 */
+    const float x_S5 = s->S[5];
     const float t534 = (t519 * x_S5);  /* algebraic.py:422 */
+    const float x_S8 = s->S[8];
     const float t535 = (t520 * x_S8);  /* algebraic.py:422 */
     const float t536 = (t534 + t535);  /* algebraic.py:192 */
+    const float x_S9 = s->S[9];
     const float t538 = (t520 * x_S9);  /* algebraic.py:422 */
     const float t540 = (t145 * x_S0);  /* algebraic.py:422 */
     const float t541 = (t151 * x_S3);  /* algebraic.py:422 */
@@ -1767,6 +1765,7 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const float t1925 = (t1919 ? t1924 : t1917);  /* vac.py:61 */
     const float t1926 = (-t1918);  /* vac.py:61 */
     const float t1927 = (t1919 ? t1926 : t1918);  /* vac.py:61 */
+    const int x_initialised = (s->initialised != 0u);
     const int t1928 = (!x_initialised);  /* vak.py:131 */
     const int t1929 = (t59 && t1928);  /* vak.py:131 */
     const int t1930 = (t1929 && t306);  /* vak.py:131 */
@@ -1954,6 +1953,7 @@ void vak_f32_update(vak_f32_state *s, const kf_imu_input_f32 *in, vak_f32_output
     const int t2135 = (t1930 || t1931);  /* vak.py:143 */
     const int t2136 = (t2135 && t311);  /* vak.py:143 */
     const int t2137 = (x_heading_set || t2136);  /* vak.py:143 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t2138 = kf_inc_if(x_rejected, t75);  /* vak.py:144 */
     const int t2139 = (x_initialised || t1930);  /* vak.py:145 */
     s->q[0] = t2111;

@@ -74,55 +74,29 @@ int vak_q_init(vak_q_state *s, const vak_q_params *p)
 
 void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
 {
-    const int32_t u_gyr0 = in->gyr[0];
-    const int32_t u_gyr1 = in->gyr[1];
-    const int32_t u_gyr2 = in->gyr[2];
-    const int32_t u_acc0 = in->acc[0];
-    const int32_t u_acc1 = in->acc[1];
-    const int32_t u_acc2 = in->acc[2];
-    const int32_t u_mag0 = in->mag[0];
-    const int32_t u_mag1 = in->mag[1];
-    const int32_t u_mag2 = in->mag[2];
-    const int u_mag_valid = (in->mag_valid != 0u);
     const int32_t u_dt = in->dt;
-    const int32_t p_sigma_acc = s->params.sigma_acc;
-    const int32_t p_sigma_gyr = s->params.sigma_gyr;
-    const int32_t p_sigma_mag = s->params.sigma_mag;
-    const int32_t p_coupling = s->params.coupling;
-    const int32_t p_gravity = s->params.gravity;
-    const int32_t x_q0 = s->q[0];
-    const int32_t x_q1 = s->q[1];
-    const int32_t x_q2 = s->q[2];
-    const int32_t x_q3 = s->q[3];
-    const int32_t x_S0 = s->S[0];
-    const int32_t x_S1 = s->S[1];
-    const int32_t x_S2 = s->S[2];
-    const int32_t x_S3 = s->S[3];
-    const int32_t x_S4 = s->S[4];
-    const int32_t x_S5 = s->S[5];
-    const int32_t x_S6 = s->S[6];
-    const int32_t x_S7 = s->S[7];
-    const int32_t x_S8 = s->S[8];
-    const int32_t x_S9 = s->S[9];
-    const int x_initialised = (s->initialised != 0u);
-    const int x_heading_set = (s->heading_set != 0u);
-    const int32_t x_rejected = s->rejected;
     const int32_t t34_0 = ((int32_t)((((int64_t)u_dt) + 1) >> 1));
     const int32_t t34 = ((0 < t34_0) ? t34_0 : 0);  /* common.py:62 Q3.28 */
     const int32_t t36_0 = kf_sat((((int64_t)t34) * 4), 0, 1073741824);
     const int32_t t36 = ((t36_0 < 1073741824) ? t36_0 : 1073741824);  /* common.py:62 Q1.30 */
+    const int32_t u_gyr0 = in->gyr[0];
     const int32_t t37 = ((int32_t)((((int64_t)u_gyr0) < 0) ? (-((int64_t)u_gyr0)) : ((int64_t)u_gyr0)));  /* common.py:50 Q7.24 */
     const int t39 = ((((int64_t)t37) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr1 = in->gyr[1];
     const int32_t t40 = ((int32_t)((((int64_t)u_gyr1) < 0) ? (-((int64_t)u_gyr1)) : ((int64_t)u_gyr1)));  /* common.py:50 Q7.24 */
     const int t41 = ((((int64_t)t40) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
+    const int32_t u_gyr2 = in->gyr[2];
     const int32_t t42 = ((int32_t)((((int64_t)u_gyr2) < 0) ? (-((int64_t)u_gyr2)) : ((int64_t)u_gyr2)));  /* common.py:50 Q7.24 */
     const int t43 = ((((int64_t)t42) * 2) <= ((int64_t)1171270634));  /* common.py:50 */
     const int t44 = (t39 && t41);  /* common.py:50 */
     const int t45 = (t44 && t43);  /* common.py:50 */
+    const int32_t u_acc0 = in->acc[0];
     const int32_t t46 = ((int32_t)((((int64_t)u_acc0) < 0) ? (-((int64_t)u_acc0)) : ((int64_t)u_acc0)));  /* common.py:50 Q9.22 */
     const int t48 = ((((int64_t)t46) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc1 = in->acc[1];
     const int32_t t49 = ((int32_t)((((int64_t)u_acc1) < 0) ? (-((int64_t)u_acc1)) : ((int64_t)u_acc1)));  /* common.py:50 Q9.22 */
     const int t50 = ((((int64_t)t49) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
+    const int32_t u_acc2 = in->acc[2];
     const int32_t t51 = ((int32_t)((((int64_t)u_acc2) < 0) ? (-((int64_t)u_acc2)) : ((int64_t)u_acc2)));  /* common.py:50 Q9.22 */
     const int t52 = ((((int64_t)t51) * 2) <= ((int64_t)1316226282));  /* common.py:50 */
     const int t53 = (t48 && t50);  /* common.py:50 */
@@ -132,14 +106,18 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int t57 = (t45 && t54);  /* common.py:63 */
     const int t58 = (t57 && t55);  /* common.py:63 */
     const int t59 = (t58 && t56);  /* common.py:63 */
+    const int32_t u_mag0 = in->mag[0];
     const int32_t t60 = ((int32_t)((((int64_t)u_mag0) < 0) ? (-((int64_t)u_mag0)) : ((int64_t)u_mag0)));  /* common.py:50 Q14.17 */
     const int t62 = ((((int64_t)t60) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag1 = in->mag[1];
     const int32_t t63 = ((int32_t)((((int64_t)u_mag1) < 0) ? (-((int64_t)u_mag1)) : ((int64_t)u_mag1)));  /* common.py:50 Q14.17 */
     const int t64 = ((((int64_t)t63) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
+    const int32_t u_mag2 = in->mag[2];
     const int32_t t65 = ((int32_t)((((int64_t)u_mag2) < 0) ? (-((int64_t)u_mag2)) : ((int64_t)u_mag2)));  /* common.py:50 Q14.17 */
     const int t66 = ((((int64_t)t65) * 2) <= ((int64_t)1284505600));  /* common.py:50 */
     const int t67 = (t62 && t64);  /* common.py:50 */
     const int t68 = (t67 && t66);  /* common.py:50 */
+    const int u_mag_valid = (in->mag_valid != 0u);
     const int t69 = (t59 && u_mag_valid);  /* common.py:67 */
     const int t70 = (t69 && t68);  /* common.py:67 */
     const int t71 = (!t68);  /* common.py:69 */
@@ -165,10 +143,13 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int32_t t94 = kf_mul_dyn(u_mag0, t93, -13, -1073741824, 1073741824);  /* vak.py:89 Q1.30 */
     const int32_t t96 = kf_mul_dyn(u_mag1, t93, -13, -1073741824, 1073741824);  /* vak.py:89 Q1.30 */
     const int32_t t98 = kf_mul_dyn(u_mag2, t93, -13, -1073741824, 1073741824);  /* vak.py:89 Q1.30 */
+    const int32_t p_sigma_acc = s->params.sigma_acc;
+    const int32_t p_sigma_mag = s->params.sigma_mag;
     const int32_t t100 = kf_div_rnd((((int64_t)p_sigma_mag) * 262144), ((int64_t)p_sigma_acc), 7, 1638400000);  /* vak.py:96 Q16.15 */
     const int32_t t101 = ((7 < t100) ? t100 : 7);  /* vak.py:96 Q16.15 */
     const int32_t t103_0 = kf_sat((((int64_t)t101) * 32), 224, 1073741824);
     const int32_t t103 = ((t103_0 < 1073741824) ? t103_0 : 1073741824);  /* vak.py:96 Q11.20 */
+    const int32_t p_gravity = s->params.gravity;
     const int32_t t105 = kf_div_rnd((((int64_t)p_gravity) * INT64_C(2147483648)), ((int64_t)1342177280), 2083059139, 2126008812);  /* vak.py:97 */
     const int32_t t106 = ((int32_t)((kf_smull(t103, t105) + 536870912) >> 30));  /* vak.py:97 Q7.24 */
     const int32_t t107 = ((t106 < 16777216) ? 16777216 : t106);  /* vak.py:97 Q7.24 */
@@ -194,6 +175,7 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int32_t t129 = ((int32_t)((kf_smull(t128, t128) + 1073741824) >> 31));  /* vak.py:103 Q8.23 */
     const int32_t t130 = ((8192 < t129) ? t129 : 8192);  /* vak.py:103 Q8.23 */
     const int32_t t132 = ((t130 < 1073741824) ? t130 : 1073741824);  /* vak.py:103 Q8.23 */
+    const int32_t p_sigma_gyr = s->params.sigma_gyr;
     const int32_t t133 = kf_div_rnd((((int64_t)p_sigma_gyr) * 524288), ((int64_t)p_sigma_acc), 42, 2097152000);  /* vak.py:105 Q10.21 */
     const int32_t t134 = ((int32_t)((kf_smull(p_gravity, t133) + 1073741824) >> 31));  /* vak.py:105 Q14.17 */
     const int32_t t135 = ((int32_t)((kf_smull(t36, t134) + 536870912) >> 30));  /* vak.py:105 Q14.17 */
@@ -214,12 +196,16 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int32_t t150 = ((-8388608 < t149) ? t149 : -8388608);  /* algebraic.py:268 Q7.24 */
     const int32_t t151_0 = kf_sat((((int64_t)t150) * 128), -1073741824, 1073741824);
     const int32_t t151 = ((t151_0 < 1073741824) ? t151_0 : 1073741824);  /* algebraic.py:268 Q0.31 */
+    const int32_t x_q1 = s->q[1];
     const int32_t t152 = ((int32_t)((kf_smull(x_q1, t145) + 536870912) >> 30));  /* algebraic.py:273 Q0.31 */
     const int32_t t153 = ((int32_t)(-((int64_t)t152)));  /* algebraic.py:273 Q0.31 */
+    const int32_t x_q2 = s->q[2];
     const int32_t t154 = ((int32_t)((kf_smull(x_q2, t148) + 536870912) >> 30));  /* algebraic.py:273 Q0.31 */
     const int32_t t155 = ((int32_t)(((((int64_t)t153) - ((int64_t)t154)) + 1) >> 1));  /* algebraic.py:273 Q1.30 */
+    const int32_t x_q3 = s->q[3];
     const int32_t t156 = ((int32_t)((kf_smull(x_q3, t151) + 536870912) >> 30));  /* algebraic.py:273 Q0.31 */
     const int32_t t157 = ((int32_t)((((((int64_t)t155) * 2) - ((int64_t)t156)) + 1) >> 1));  /* algebraic.py:273 Q1.30 */
+    const int32_t x_q0 = s->q[0];
     const int32_t t158 = ((int32_t)((kf_smull(x_q0, t145) + 536870912) >> 30));  /* algebraic.py:273 Q0.31 */
     const int32_t t159 = ((int32_t)((kf_smull(x_q2, t151) + 536870912) >> 30));  /* algebraic.py:273 Q0.31 */
     const int32_t t160 = ((int32_t)(((((int64_t)t158) + ((int64_t)t159)) + 1) >> 1));  /* algebraic.py:273 Q1.30 */
@@ -467,6 +453,7 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int32_t t424 = ((int32_t)((kf_smull(t120, t249) + 536870912) >> 30));  /* algebraic.py:326 Q5.26 */
     const int32_t t425 = ((int32_t)kf_isqrt_rnd((((int64_t)t417) * INT64_C(2147483648))));  /* algebraic.py:326 Q4.27 */
     const int32_t t426 = ((int32_t)((kf_smull(t424, t425) + 536870912) >> 30));  /* algebraic.py:326 Q8.23 */
+    const int32_t p_coupling = s->params.coupling;
     const int32_t t427 = ((int32_t)((kf_smull(t426, p_coupling) + 536870912) >> 30));  /* algebraic.py:326 Q8.23 */
     const int32_t t428 = ((int32_t)((kf_smull(t120, t423) + 536870912) >> 30));  /* algebraic.py:327 Q12.19 */
     const int32_t t429 = ((0 < t428) ? t428 : 0);  /* algebraic.py:327 Q12.19 */
@@ -545,6 +532,7 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int32_t t510 = ((int32_t)((kf_smull(t435, t509) + 536870912) >> 30));  /* algebraic.py:347 Q10.21 */
     const int32_t t511 = ((int32_t)((((((int64_t)t507) * 2) + ((int64_t)t510)) + 1) >> 1));  /* algebraic.py:347 Q11.20 */
     const int32_t t512 = kf_sat(((((((int64_t)t511) * 64) + ((int64_t)t447)) + 8) >> 4), -1073741824, 1073741824);  /* algebraic.py:349 Q9.22 */
+    const int x_heading_set = (s->heading_set != 0u);
     const int t514 = (!x_heading_set);  /* vak.py:123 */
     const int t515 = (t311 && t514);  /* vak.py:123 */
     const int t516 = (!t515);  /* vak.py:124 */
@@ -552,20 +540,30 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int32_t t518 = ((int32_t)(-((int64_t)t145)));  /* algebraic.py:415 Q0.31 */
     const int32_t t519 = ((int32_t)(-((int64_t)t148)));  /* algebraic.py:415 Q0.31 */
     const int32_t t520 = ((int32_t)(-((int64_t)t151)));  /* algebraic.py:415 Q0.31 */
+    const int32_t x_S1 = s->S[1];
     const int32_t t521 = ((int32_t)((kf_smull(t518, x_S1) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
+    const int32_t x_S3 = s->S[3];
     const int32_t t522 = ((int32_t)((kf_smull(t519, x_S3) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
+    const int32_t x_S6 = s->S[6];
     const int32_t t523 = ((int32_t)((kf_smull(t520, x_S6) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
     const int32_t t524 = ((int32_t)(((((int64_t)t521) + ((int64_t)t522)) + 1) >> 1));  /* algebraic.py:192 Q3.28 */
     const int32_t t525 = ((int32_t)((((((int64_t)t524) * 2) + ((int64_t)t523)) + 1) >> 1));  /* algebraic.py:192 Q3.28 */
+    const int32_t x_S0 = s->S[0];
     const int32_t t526 = kf_sat((((int64_t)x_S0) + ((int64_t)t525)), -1073741824, 1073741824);  /* algebraic.py:428 Q3.28 */
+    const int32_t x_S2 = s->S[2];
     const int32_t t528 = ((int32_t)((kf_smull(t518, x_S2) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
+    const int32_t x_S4 = s->S[4];
     const int32_t t529 = ((int32_t)((kf_smull(t519, x_S4) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
+    const int32_t x_S7 = s->S[7];
     const int32_t t530 = ((int32_t)((kf_smull(t520, x_S7) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
     const int32_t t531 = ((int32_t)(((((int64_t)t528) + ((int64_t)t529)) + 1) >> 1));  /* algebraic.py:192 Q3.28 */
     const int32_t t532 = kf_sat(((((((int64_t)t531) * 2) + ((int64_t)t530)) + 1) >> 1), -1073741824, 1073741824);  /* algebraic.py:192 Q3.28 */
+    const int32_t x_S5 = s->S[5];
     const int32_t t534 = ((int32_t)((kf_smull(t519, x_S5) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
+    const int32_t x_S8 = s->S[8];
     const int32_t t535 = ((int32_t)((kf_smull(t520, x_S8) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
     const int32_t t536 = kf_sat((((((int64_t)t534) + ((int64_t)t535)) + 1) >> 1), -1073741824, 1073741824);  /* algebraic.py:192 Q3.28 */
+    const int32_t x_S9 = s->S[9];
     const int32_t t538 = kf_sat(((kf_smull(t520, x_S9) + 536870912) >> 30), -1073741824, 1073741824);  /* algebraic.py:422 Q2.29 */
     const int32_t t540 = ((int32_t)((kf_smull(t145, x_S0) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
     const int32_t t541 = ((int32_t)((kf_smull(t151, x_S3) + 536870912) >> 30));  /* algebraic.py:422 Q2.29 */
@@ -1698,6 +1696,7 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int32_t t1925 = (t1919 ? t1924 : t1917);  /* vac.py:61 Q1.30 */
     const int32_t t1926 = ((int32_t)(-((int64_t)t1918)));  /* vac.py:61 Q1.30 */
     const int32_t t1927 = (t1919 ? t1926 : t1918);  /* vac.py:61 Q1.30 */
+    const int x_initialised = (s->initialised != 0u);
     const int t1928 = (!x_initialised);  /* vak.py:131 */
     const int t1929 = (t59 && t1928);  /* vak.py:131 */
     const int t1930 = (t1929 && t306);  /* vak.py:131 */
@@ -1908,6 +1907,7 @@ void vak_q_update(vak_q_state *s, const kf_imu_input_q *in, vak_q_output *out)
     const int t2135 = (t1930 || t1931);  /* vak.py:143 */
     const int t2136 = (t2135 && t311);  /* vak.py:143 */
     const int t2137 = (x_heading_set || t2136);  /* vak.py:143 */
+    const int32_t x_rejected = s->rejected;
     const int32_t t2138 = kf_inc_if(x_rejected, t75);  /* vak.py:144 */
     const int t2139 = (x_initialised || t1930);  /* vak.py:145 */
     s->q[0] = kf_sat(((int64_t)t2111), -1073741824, 1073741824);
