@@ -21,6 +21,7 @@ import time
 import numpy as np
 
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.console import print_table
 
 PARTS = ("loop", "batch", "uart", "competitors")
 
@@ -184,7 +185,7 @@ def _print_tables(result: dict) -> None:
             t.add_row(r["target"], str(r["hand_count_per_call"]), f"{r['plugin_count_per_call']:.2f}",
                       "yes" if r["exact"] else "NO", f"{r['whole_program_per_call']:.3f}",
                       f"{r['loop_overhead']:.3f}")
-        con.print(t)
+        print_table(t, con)
     if "batch" in result:
         t = Table(title="Batch driver throughput (semihosting file I/O, 16 B in / 16 B out)")
         for col in ("target", "records", "wall s", "records/s", "bit-exact", "build s"):
@@ -193,7 +194,7 @@ def _print_tables(result: dict) -> None:
             t.add_row(r["target"], str(r["records"]), f"{r['wall_s']:.2f}",
                       f"{r['records_per_s']:,.0f}", f"{r['bit_exact_outputs']}/{r['outputs']}",
                       f"{r['build_s']:.2f}")
-        con.print(t)
+        print_table(t, con)
     if "uart" in result:
         t = Table(title="UART0 over TCP loopback (echo)")
         for col in ("target", "bytes each way", "wall s", "bytes/s each way", "correct"):
@@ -201,7 +202,7 @@ def _print_tables(result: dict) -> None:
         for r in result["uart"]:
             t.add_row(r["target"], str(r["bytes_each_way"]), f"{r['wall_s']:.2f}",
                       f"{r['bytes_per_s_each_way']:,.0f}", "yes" if r["echo_correct"] else "NO")
-        con.print(t)
+        print_table(t, con)
     if "competitors" in result:
         t = Table(title="Competitors per update (instructions at -O2; bytes added; RAM = static)")
         for col in ("case", "target", "instr/update", "flash -Os", "own code -Os",
@@ -216,4 +217,4 @@ def _print_tables(result: dict) -> None:
                       str(s["-Os"]["flash"]), str(split["-Os"]["library_own_code"]),
                       str(split["-Os"]["newlib_libgcc_libstdcxx"]), str(s["-Os"]["ram"]),
                       str(s["-O2"]["flash"]), str(s["-O2"]["ram"]))
-        con.print(t)
+        print_table(t, con)

@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.console import print_table
 
 
 def register(subparsers) -> None:
@@ -54,7 +55,7 @@ def _list(args) -> int:
     t = Table("scenario", "description")
     for n, d in items.items():
         t.add_row(n, d)
-    Console().print(t)
+    print_table(t)
     return 0
 
 
@@ -122,7 +123,7 @@ def _run(args) -> int:
                   f"{s['acc_norm_min']:.2f}–{s['acc_norm_max']:.2f}",
                   "none" if s["mag_norm_min"] is None else f"{s['mag_norm_min']:.1f}–{s['mag_norm_max']:.1f}")
     con = Console()
-    con.print(t)
+    print_table(t, con)
     for name, s in summary["sensors"].items():
         if "file" in s:
             con.print(f"{name}: wrote {s['file']}")

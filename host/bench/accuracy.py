@@ -19,6 +19,7 @@ from pathlib import Path
 
 from kinefuse.host import broad, competitors, metrics
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.console import print_table
 
 IMPLS = ("ref", "f32", "q")
 
@@ -411,7 +412,7 @@ def print_tables(results: Results, console=None) -> None:
             table.add_row("[bold]group mean[/bold]",
                           *[f"[bold]{_cell(metrics.mean_score(results.scores[lab][t] for t in by_group[g]))}[/bold]"
                             for lab in labels])
-        console.print(table)
+        print_table(table, console)
     summary = Table(title="[bold]summary (mean of trials)[/bold]", title_justify="left",
                     caption=caption, caption_justify="left")
     summary.add_column("group", no_wrap=True)

@@ -25,6 +25,7 @@ import argparse
 import json
 
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.console import print_table as print_fitted
 
 COMPETITOR_CASES = ("fusion-ahrs-9d", "fusion-ahrs-6d", "vqf-9d-f32", "vqf-6d-f32")
 TARGETS = {"f32": ("m4f", "m0"), "q": ("m4f", "m0")}
@@ -205,7 +206,7 @@ def print_table(rows: list[dict]) -> None:
                   f"{r['est_us_at_64mhz']:.1f}" if cyc is not None else "-",
                   str(r["flash_bytes"]), str(r.get("own_flash_bytes", "")), str(r["ram_bytes"]),
                   str(r.get("own_ram_bytes", "")), goal)
-    Console().print(t)
+    print_fitted(t)
 
 
 def print_profiles(rows: list[dict]) -> None:
@@ -226,10 +227,10 @@ def print_profiles(rows: list[dict]) -> None:
             calls = f["calls_per_update"]
             t.add_row(f["name"], f"{f['instructions_per_update']:,.1f}",
                       "" if calls is None else f"{calls:g}")
-        con.print(t)
+        print_fitted(t, con)
         t = Table(title=head + ", by line of the reference (inlined code counts at its caller)")
         for col in ("reference line", "instr/update"):
             t.add_column(col, justify="left" if col == "reference line" else "right")
         for g in prof["reference_lines"]:
             t.add_row(g["where"], f"{g['instructions_per_update']:,.1f}")
-        con.print(t)
+        print_fitted(t, con)

@@ -20,6 +20,7 @@ import json
 import math
 
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.console import print_table
 
 PARTS = ("pendulum", "robustness", "leg")
 
@@ -107,7 +108,7 @@ def _print(r: dict) -> None:
                       _f(row["rms_fe"], "{:.3f}"), _f(row["rms_tau1"], "{:.2f}"),
                       _f(row["rt_factor_ref"], "{:.2f}"), _f(row["f32"]["rms_fe"], "{:.3f}"),
                       _f(row["rt_factor_f32_c"], "{:,.0f}"), str(row["ops"]))
-        con.print(t)
+        print_table(t, con)
         tu = r.get("pendulum_tuning")
         if tu:
             con.print(f"Plant PSD of the efforts (FDMC, f32 C), tuned on seed {tu['tuning_seed']}: "
@@ -151,7 +152,7 @@ def _print(r: dict) -> None:
             t.add_row(label, _f(oc["fd"][key], fmt),
                       f"(q={oc['q_of_fd_q_annex_a']:g}: {_f(oc['fd_q_annex_a'][key], fmt)})",
                       _f(oc["fcdi"][key], fmt))
-        con.print(t)
+        print_table(t, con)
         ob = rb["observability"]
         con.print("Observability rank: " + ", ".join(
             f"{k}: {v['rank']}/{v['n']}" for k, v in ob.items() if isinstance(v, dict)))
@@ -169,7 +170,7 @@ def _print(r: dict) -> None:
                          ("faster gait 1.4 Hz (reference)", lg["faster_gait_1p4hz"]["ref"])):
             t.add_row(label, _f(m["hip_rmse_nm"], "{:.3f}"), _f(m["knee_rmse_nm"], "{:.3f}"),
                       _f(m["hip_lag_ms"], "{:.1f}"), _f(m["knee_lag_ms"], "{:.1f}"))
-        con.print(t)
+        print_table(t, con)
         con.print("Observability rank: " + ", ".join(
             f"{k}: {v['rank']}/{v['n']}" for k, v in lg["observability"].items()))
         con.print(f"float32 C vs reference: max {lg['f32_vs_ref_max_nm']:.2e} N·m; "

@@ -32,6 +32,7 @@ import numpy as np
 
 from kinefuse.host.bench.common import progress
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.console import print_table
 
 SEED_FILTERS = ("madgwick", "vac", "vak", "guo")
 LABELS = {"madgwick": "MAD", "vac": "VAC", "vak": "VAK", "guo": "GUO", "flagship": "FLAG",
@@ -392,7 +393,7 @@ def _print(out: dict):
             tb.add_column(f"{c} (°)", justify="right")
         for name, per_unit in rows.items():
             tb.add_row(name, *[_fmt(per_unit[u][i]) for i in range(3) for u in units])
-        con.print(tb)
+        print_table(tb, con)
 
     labs = list(out["units"][units[0]]["std"])
     table("Table 7.3 — mean standard deviation, static holds",

@@ -25,6 +25,7 @@ import numpy as np
 
 from kinefuse.host.bench.common import progress
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.console import print_table
 
 FILTERS = ("angle-kf", "angle-ekf", "angle-ukf", "angle-srukf")
 LABELS = {"angle-kf": "KF", "angle-ekf": "EKF", "angle-ukf": "UKF", "angle-srukf": "SR-UKF"}
@@ -198,7 +199,7 @@ def run(args) -> int:
         tb.add_row(w, *[f"{r[c]:.2f}" for c in cols],
                    f"{ref['RAW']:.2f} / {ref['EKF']:.2f} / {ref['UKF']:.2f}" if ref else "-")
     tb.add_row("mean", *[f"{mean[c]:.2f}" for c in cols], "3.38 / 3.89 / 2.43")
-    con.print(tb)
+    print_table(tb, con)
     con.print("The seed's numbers (hardware, its own scoring) are shown for orientation only.")
     if args.bitexact:
         for n, r in out["bitexact"].items():

@@ -14,6 +14,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
+from kinefuse.host.console import print_table
 
 # the fitting modules (scipy) are imported on use: `kinefuse --help` must stay fast
 
@@ -119,14 +120,14 @@ def run(args) -> int:
               ", ".join(f"{v:.4f}" for v in we["published_sample_calibrated"]))
     for m, v in we["residual_rms"].items():
         t.add_row(f"residual RMS ({m})", f"{v:.4f} m/s²", "")
-    c.print(t)
+    print_table(t, c)
     t = Table(title=f"magnetometer, simulated ({args.runs} runs, hard iron σ 20 µT, soft iron ±5 %)")
     for col in ("model", "offset error max (µT)", "mean (µT)", "spread reduction min", "median"):
         t.add_column(col)
     for m, v in res["magnetometer_simulated"].items():
         t.add_row(m, f"{v['offset_error_uT_max']:.3f}", f"{v['offset_error_uT_mean']:.3f}",
                   f"×{v['spread_reduction_min']:.1f}", f"×{v['spread_reduction_median']:.1f}")
-    c.print(t)
+    print_table(t, c)
     ind = res["independent_simulator"]
     if ind.get("available"):
         m, a = ind["mag_calibration"], ind["six_position"]

@@ -10,6 +10,7 @@ import numpy as np
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.cli_util import console, fmt_bytes, print_json
+from kinefuse.host.console import print_table
 
 
 def register(subparsers) -> None:
@@ -102,7 +103,7 @@ def run(args) -> int:
         t = Table("message", "count", box=None)
         for name, n in s["messages"].items():
             t.add_row(name, f"{n:,}")
-        con.print(t)
+        print_table(t, con)
         for e in s["events"]:
             con.print(f"  {e.get('type')}: {e.get('text') or e.get('event')} {e.get('error') or ''}".rstrip())
     if args.show:

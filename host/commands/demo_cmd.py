@@ -11,6 +11,7 @@ from pathlib import Path
 from kinefuse.host import broad, competitors, metrics
 from kinefuse.host.bench import accuracy
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.console import print_table
 
 DEMO_COMPETITORS = ("vqf", "imufusion")
 PLOT_TRIAL = "32_disturbed_attached_magnet_1cm"   # shows magnetic disturbance handling
@@ -118,7 +119,7 @@ def run(args) -> int:
         mean = res.mean(spec.label)
         row += [_fmt(mean[k]) for k in metrics.KINDS]
         table.add_row(*row)
-    console.print(table)
+    print_table(table, console)
     console.print("trials: " + "; ".join(_short(t) for t in res.trial_names))
 
     payload = {"data": "bundled BROAD excerpt", "trials": res.trial_names,

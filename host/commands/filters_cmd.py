@@ -4,6 +4,7 @@ from __future__ import annotations
 import json
 
 from kinefuse.codegen import estimators
+from kinefuse.host.console import print_table
 
 
 def register(sub):
@@ -48,7 +49,7 @@ def run(args) -> int:
                               zip(p["choices"], p["labels"] or [""] * len(p["choices"])))
                    if p["choices"] else f"[{p['min']:g}, {p['max']:g}]")
             t.add_row(p["name"], f"{p['default']:g}", p["unit"], rng, p["doc"])
-        console.print(t)
+        print_table(t, console)
         if d["presets"]:
             console.print("  presets: " + "; ".join(
                 f"{k} ({', '.join(f'{a}={b:g}' for a, b in v.items())})" for k, v in d["presets"].items()))

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from kinefuse.host.link.cli_util import console, print_json
+from kinefuse.host.console import print_table
 
 
 def register(subparsers) -> None:
@@ -28,5 +29,5 @@ def run(args) -> int:
         t.add_row(p["device"], p["vid_pid"] or "-", p["serial_number"] or "-",
                   p["description"] or p["product"] or "-",
                   "-" if lat is None else f"{lat} ms" + ("  (set 1 ms for streaming)" if lat > 2 else ""))
-    con.print(t)
+    print_table(t, con)
     return 0

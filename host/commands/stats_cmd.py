@@ -10,6 +10,7 @@ above the minimum, latency from TIMESYNC round trips.
 from __future__ import annotations
 
 from kinefuse.host.link.cli_util import console, fmt_rate, print_json
+from kinefuse.host.console import print_table
 
 
 def register(subparsers) -> None:
@@ -57,7 +58,7 @@ def run(args) -> int:
                           "-" if ratio is None else f"{ratio:.3f}", str(m.get("samples_lost", "-")),
                           "-" if "loss_fraction" not in m else f"{100 * m['loss_fraction']:.3f}",
                           str(m.get("resets", "-")), style=style)
-            con.print(t)
+            print_table(t, con)
             c = u.get("clock")
             if c:
                 dm = c["delay_above_min_ms"]

@@ -23,6 +23,7 @@ import numpy as np
 
 from kinefuse.host.kinematics import alignment, joint, misalignment
 from kinefuse.host.kinematics import quat as Q
+from kinefuse.host.console import print_table
 # report and simulate (scipy) are imported on use: `kinefuse --help` must stay fast
 
 PUBLISHED = {60: {"a": 0.01389, "c": 0.05043, "r2": 0.9995}, 70: {"a": 0.02013, "c": 0.1497, "r2": 0.9979}}
@@ -146,7 +147,7 @@ def run(args) -> int:
         p = r["published"]
         t.add_row(lam + "°", f"{r['a']:.5f}", f"{p['a']:.5f}", f"{r['c']:.5f}", f"{p['c']:.5f}",
                   f"{r['r2']:.4f}", f"{p['r2']:.4f}")
-    c.print(t)
+    print_table(t, c)
     ms = res["misalignment_study"]
     c.print(f"about Y: max | |error| − |δ| | = {ms['Y_axis_max_abs(err-|delta|)']:.2e}°; "
             f"about Z: max |error| = {ms['Z_axis_max_err']:.2e}°")
@@ -163,7 +164,7 @@ def run(args) -> int:
         a, f, b = k["rmse_two_posture_deg"][n], k["rmse_functional_deg"][n], k["rmse_uncalibrated_deg"][n]
         t.add_row(n, f"{a['mean']:.2f}", f"{a['max']:.2f}", f"{f['mean']:.2f}", f"{f['max']:.2f}",
                   f"{b['mean']:.2f}", f"{b['max']:.2f}")
-    c.print(t)
+    print_table(t, c)
     c.print(f"two-posture mounting estimate error: mean {k['mounting_error_deg']['mean']:.2f}°, "
             f"max {k['mounting_error_deg']['max']:.2f}°")
     gi = res["independent_gait"]

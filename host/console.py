@@ -1,0 +1,54 @@
+"""Tables on the console: never cut.
+
+rich squeezes a table into the console width and cuts what still does not fit with "…" — a
+figure like 1,939 becomes "1,9…".  A file or pipe counts as 80 columns, so results redirected
+to a log would be cut too.  `print_table` widens the console, only as far as needed, to the
+narrowest layout that cuts nothing (long text cells may still wrap at spaces).
+"""
+from __future__ import annotations
+
+import io
+
+ELLIPSIS = "…"
+
+
+def _cuts(table, width: int) -> int:
+    from rich.console import Console
+    c = Console(file=io.StringIO(), width=width, color_system=None, legacy_windows=False)
+    c.print(table)
+    return c.file.getvalue().count(ELLIPSIS)
+
+
+def fitting_width(table, width: int) -> int:
+    """The smallest width >= `width` at which the table renders uncut."""
+    from rich.console import Console
+    from rich.measure import Measurement
+    probe = Console(file=io.StringIO(), width=width, color_system=None, legacy_windows=False)
+    widest = max(width, Measurement.get(probe, probe.options.update_width(1 << 16), table).maximum)
+    uncut = _cuts(table, widest)        # "…" written by the caller itself, if any
+    if _cuts(table, width) <= uncut:
+        return width
+    lo, hi = width, widest             # cut at lo, uncut at hi
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if _cuts(table, mid) <= uncut:
+            hi = mid
+        else:
+            lo = mid
+    return hi
+
+
+def print_table(table, console=None) -> None:
+    """Print a rich Table (or any renderable) without cutting any cell."""
+    from rich.console import Console
+    con = console if console is not None else Console()
+    need = fitting_width(table, con.width)
+    if need == con.width:
+        con.print(table)
+        return
+    old = con.width
+    con.width = need
+    try:
+        con.print(table)
+    finally:
+        con.width = old
