@@ -31,8 +31,9 @@ typedef struct {
 /* 32 x 32 -> 64-bit products.  ARMv6-M / ARMv8-M Baseline (Cortex-M0/M0+/M23) have no long
  * multiply and GCC calls the 64 x 64 __aeabi_lmul (about 45 instructions with the call); four
  * 16 x 16 products and one 32-bit product give the same bits in about 20 (Hacker's Delight 8-2).
- * KF_PORTABLE_LONG_MUL selects that path, kf_rsqrt_dyn64's 32-bit division loop and the
- * digit-by-digit square root on any target (the host tests compare both paths). */
+ * KF_PORTABLE_LONG_MUL selects that path, the 32-bit division loop of kf_udiv64_32 (in C; the
+ * Thumb-1 assembly form runs only on those cores) and the digit-by-digit square root on any
+ * target (the host tests compare both paths). */
 #if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_8M_BASE__) || defined(KF_PORTABLE_LONG_MUL)
 #define KF_NO_LONG_MUL 1   /* these cores have no CLZ and (v6-M) no divider either */
 #endif
@@ -126,6 +127,52 @@ static inline int32_t kf_lsh_sat(int64_t v, int32_t k, int32_t lo, int32_t hi)
     return (int32_t)(v * ((int64_t)1 << k));
 }
 
+/* floor(n / d) and the remainder, for 0 < d <= 2^31 and n < d * 2^32 (the quotient fits 32 bits).
+ * Where there is no divider (ARMv6-M, ARMv8-M Baseline) GCC would call libgcc's 64-bit
+ * __udivmoddi4 (about 360 instructions on a Cortex-M0); 32 restoring shift-subtract steps on
+ * the 32-bit halves take about 240 (the remainder stays below d <= 2^31, so doubling it keeps it
+ * in 32 bits).  On Thumb-1 the step is written in assembly: the 64-bit shift is one adds/adcs
+ * pair, which GCC does not produce from C. */
+static inline uint32_t kf_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem)
+{
+#ifdef KF_NO_LONG_MUL
+    uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n;
+#if defined(__GNUC__) && defined(__thumb__) && !defined(__thumb2__) && !defined(KF_PORTABLE_LONG_MUL)
+    uint32_t i = 32u;
+    __asm__(".syntax unified\n"   /* GCC hands Thumb-1 inline assembly over in divided syntax */
+            "1:\n\t"
+            "adds %[lo], %[lo], %[lo]\n\t"   /* hi:lo <<= 1 */
+            "adcs %[hi], %[hi], %[hi]\n\t"
+            "cmp %[hi], %[d]\n\t"
+            "bcc 2f\n\t"
+            "subs %[hi], %[hi], %[d]\n\t"    /* quotient bit 1 into the vacated low bit */
+            "adds %[lo], %[lo], #1\n"
+            "2:\n\t"
+            "subs %[i], %[i], #1\n\t"
+            "bne 1b"
+            : [lo] "+l"(lo), [hi] "+l"(hi), [i] "+l"(i)
+            : [d] "l"(d)
+            : "cc");
+#else
+    int32_t i;
+    for (i = 0; i < 32; i++) {
+        hi = (hi << 1) | (lo >> 31);
+        lo <<= 1;
+        if (hi >= d) {
+            hi -= d;
+            lo |= 1u;
+        }
+    }
+#endif
+    *rem = hi;
+    return lo;
+#else
+    const uint64_t q = n / d;
+    *rem = (uint32_t)(n - q * d);
+    return (uint32_t)q;
+#endif
+}
+
 /* n / d rounded half away from zero, clamped to [lo, hi]; d == 0 saturates by the sign of n. */
 static inline int32_t kf_div_rnd(int64_t n, int64_t d, int32_t lo, int32_t hi)
 {
@@ -136,8 +183,14 @@ static inline int32_t kf_div_rnd(int64_t n, int64_t d, int32_t lo, int32_t hi)
     }
     un = (n < 0) ? ((uint64_t)0 - (uint64_t)n) : (uint64_t)n;
     ud = (d < 0) ? ((uint64_t)0 - (uint64_t)d) : (uint64_t)d;
-    q = un / ud;
-    r = un - q * ud;
+    if ((ud <= ((uint64_t)1 << 31)) && ((un >> 32) < ud)) {    /* the generated code's usual case */
+        uint32_t r32;
+        q = kf_udiv64_32(un, (uint32_t)ud, &r32);
+        r = r32;
+    } else {
+        q = un / ud;
+        r = un - q * ud;
+    }
     if (r >= ud - r) {
         q += 1u;
     }
@@ -263,26 +316,10 @@ static inline kf_dyn kf_rsqrt_dyn64(int64_t y, int32_t fy)
         s += k;
     }
     r = kf_isqrt_floor(n, &rem);        /* r in [2^30, 2^31) */
-#ifdef KF_NO_LONG_MUL
-    {   /* 2^61 / r rounded: (2^61 + r/2) / r by 32 restoring steps in 32 bits (r < 2^31, and
-         * the partial remainder starts at 2^29 < r), far cheaper than libgcc's 64-bit division */
-        uint32_t part = (uint32_t)1 << 29, low = (uint32_t)(r >> 1), quo = 0;
-        const uint32_t d = (uint32_t)r;
-        int32_t i;
-        for (i = 0; i < 32; i++) {
-            part = (part << 1) | (low >> 31);
-            low <<= 1;
-            quo <<= 1;
-            if (part >= d) {
-                part -= d;
-                quo |= 1u;
-            }
-        }
-        m = quo;
+    {   /* 2^61 / r rounded, in (2^30, 2^31]: (2^61 + r/2) / r, whose high word 2^29 is below r */
+        uint32_t unused;
+        m = kf_udiv64_32(((uint64_t)1 << 61) + (r >> 1), (uint32_t)r, &unused);
     }
-#else
-    m = (((uint64_t)1 << 61) + (r >> 1)) / r;   /* 2^61 / r rounded, in (2^30, 2^31] */
-#endif
     out.e = 61 - (fy + s) / 2;
     if (m >= ((uint64_t)1 << 31)) {
         m >>= 1;
