@@ -12,18 +12,21 @@ import io
 ELLIPSIS = "…"
 
 
-def _cuts(table, width: int) -> int:
+def _probe(width: int):
     from rich.console import Console
-    c = Console(file=io.StringIO(), width=width, color_system=None, legacy_windows=False)
+    return Console(file=io.StringIO(), width=width, color_system=None, legacy_windows=False)
+
+
+def _cuts(table, width: int) -> int:
+    c = _probe(width)
     c.print(table)
     return c.file.getvalue().count(ELLIPSIS)
 
 
 def fitting_width(table, width: int) -> int:
     """The smallest width >= `width` at which the table renders uncut."""
-    from rich.console import Console
     from rich.measure import Measurement
-    probe = Console(file=io.StringIO(), width=width, color_system=None, legacy_windows=False)
+    probe = _probe(width)
     widest = max(width, Measurement.get(probe, probe.options.update_width(1 << 16), table).maximum)
     uncut = _cuts(table, widest)        # "…" written by the caller itself, if any
     if _cuts(table, width) <= uncut:
@@ -42,12 +45,8 @@ def print_table(table, console=None) -> None:
     """Print a rich Table (or any renderable) without cutting any cell."""
     from rich.console import Console
     con = console if console is not None else Console()
-    need = fitting_width(table, con.width)
-    if need == con.width:
-        con.print(table)
-        return
     old = con.width
-    con.width = need
+    con.width = fitting_width(table, old)
     try:
         con.print(table)
     finally:

@@ -50,7 +50,6 @@ def _list(args) -> int:
     if args.json:
         print(json.dumps({"scenarios": items}))
         return 0
-    from rich.console import Console
     from rich.table import Table
     t = Table("scenario", "description")
     for n, d in items.items():

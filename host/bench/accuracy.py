@@ -388,13 +388,7 @@ def print_tables(results: Results, console=None) -> None:
     from rich.table import Table
 
     labels = [s.label for s in results.specs]
-    if console is None:
-        # never truncate numbers: widen past the terminal if the columns need it
-        longest = max([len(t) for t in results.trial_names] + [24])
-        needed = longest + 7 + sum(max(20, len(lab) + 3) for lab in labels)
-        console = Console()
-        if console.width < needed:
-            console = Console(width=needed)
+    console = console if console is not None else Console()   # print_table widens per table
     by_group: dict[str | None, list[str]] = {}
     for t in results.trial_names:
         by_group.setdefault(results.groups.get(t), []).append(t)
@@ -426,7 +420,7 @@ def print_tables(results: Results, console=None) -> None:
                         *[_cell(metrics.mean_score(results.scores[lab][t] for t in ts)) for lab in labels])
     summary.add_row(f"[bold]all trials ({len(results.trial_names)})[/bold]",
                     *[f"[bold]{_cell(results.mean(lab))}[/bold]" for lab in labels])
-    console.print(summary)
+    print_table(summary, console)
     not_north = [s.name for s in results.specs
                  if s.kind == "competitor" and not competitors.get(s.name).nine_d]
     if not_north:

@@ -183,7 +183,6 @@ def run(args: argparse.Namespace) -> int:
 
 
 def print_table(rows: list[dict]) -> None:
-    from rich.console import Console
     from rich.table import Table
 
     t = Table(title="Cost per update (instructions exact under QEMU; cycles/µs estimated at 64 MHz; "

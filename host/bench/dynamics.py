@@ -94,8 +94,6 @@ def _print(r: dict) -> None:
     from rich.console import Console
     from rich.table import Table
     con = Console()
-    if not con.is_terminal:           # a pipe or file: do not squeeze the tables into 80 columns
-        con = Console(width=150)
     if "pendulum" in r:
         t = Table(title="Double pendulum, seed 000 Annex A (Table A.1 trial, 3 s at 100 Hz): "
                         "reference (float64 Python) | generated float32 C")
