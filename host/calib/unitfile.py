@@ -12,13 +12,15 @@ Layout (``format`` = ``"kinefuse-calibration"``, ``version`` = 1)::
                   "residual_rms": ..., "n_poses": ..., "n_samples": ..., "date": ...},
         "gyro":  {"M": 3×3, "b": 3, "units": "rad/s", ...},
         "mag":   {"M": 3×3, "b": 3, "units": "uT", ...}
-      }
+      },
+      "history": {"accel": [earlier entries, oldest first], ...}   # optional
     }
 
 Each sensor entry is the affine map cal = M · (raw − b) (:func:`..affine.apply_affine`), with
 ``raw`` already converted to SI-derived units by the reader (m/s², rad/s, µT).  Validation
 checks the structure, shapes, finiteness, det M > 0, a sane condition number and units, and
-reports the first problem in one line naming the file.
+reports the first problem in one line naming the file.  A new calibration of a sensor moves
+the one it replaces to ``history`` (recordings made before stay reproducible).
 """
 from __future__ import annotations
 
@@ -52,7 +54,8 @@ def new(serial: str, sensor_ranges: dict | None = None) -> dict:
 
 
 def set_sensor(doc: dict, sensor: str, M, b, *, method: str, **extra) -> dict:
-    """Insert/replace one sensor's parameters (M, b) and provenance in ``doc``."""
+    """Insert/replace one sensor's parameters (M, b) and provenance in ``doc``; a replaced entry
+    is appended to ``doc["history"][sensor]``."""
     if sensor not in UNITS:
         raise KinefuseError(f"unknown sensor {sensor!r} (accel|gyro|mag)")
     M = np.asarray(M, dtype=float)
@@ -60,6 +63,9 @@ def set_sensor(doc: dict, sensor: str, M, b, *, method: str, **extra) -> dict:
     entry = {"M": M.tolist(), "b": b.tolist(), "units": UNITS[sensor], "method": method,
              "date": now_iso()}
     entry.update({k: _jsonable(v) for k, v in extra.items()})
+    old = doc["sensors"].get(sensor)
+    if old is not None:
+        doc.setdefault("history", {}).setdefault(sensor, []).append(old)
     doc["sensors"][sensor] = entry
     doc["date"] = entry["date"]
     return doc
@@ -122,6 +128,14 @@ def validate(doc, source: str = "calibration") -> dict:
             bad(f"sensors.{name}: M is ill-conditioned (cond {np.linalg.cond(M):.3g} > {MAX_COND:g})")
         if not isinstance(e.get("method"), str):
             bad(f"sensors.{name}: 'method' must be a string")
+    history = doc.get("history", {})
+    if not isinstance(history, dict):
+        bad("'history' must be an object")
+    for name, entries in history.items():
+        if name not in UNITS:
+            bad(f"history: unknown sensor {name!r} (accel|gyro|mag)")
+        if not isinstance(entries, list) or not all(isinstance(e, dict) for e in entries):
+            bad(f"history.{name} must be a list of calibration entries")
     return doc
 
 

@@ -181,10 +181,13 @@ def _save(args, sensor: str, M, b, **extra) -> None:
         return
     from kinefuse.host.calib import unitfile
     doc = unitfile.load_or_new(args.out, args.serial, _ranges(args))
+    old = doc["sensors"].get(sensor)
     unitfile.set_sensor(doc, sensor, M, b, **extra)
     unitfile.save(doc, args.out)
     if not args.json:
-        print(f"wrote {sensor} calibration to {args.out}")
+        kept = (f" (the previous one, of {old.get('date', 'unknown date')}, kept under history.{sensor})"
+                if old is not None else "")
+        print(f"wrote {sensor} calibration to {args.out}{kept}")
 
 
 # ----------------------------------------------------------------------------- accel

@@ -8,6 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from kinefuse.host.link.cli_util import console, print_json
+from kinefuse.host.outputs import add_force_arg, check_output_dir
 
 
 def register(subparsers) -> None:
@@ -18,6 +19,7 @@ def register(subparsers) -> None:
     p.add_argument("--messages", metavar="LIST", help="comma-separated message names (default: all)")
     p.add_argument("--raw", action="store_true", help="FILE is a plain MAVLink byte capture")
     p.add_argument("--json", action="store_true", help="print one JSON object listing the files")
+    add_force_arg(p, "CSV files an earlier export left in DIR")
     p.set_defaults(func=run)
 
 
@@ -27,6 +29,7 @@ def run(args) -> int:
     from kinefuse.host.link.frames import decode_file
     con = console(args.json)
     messages = [m.strip() for m in args.messages.split(",") if m.strip()] if args.messages else None
+    check_output_dir(args.out, args.force, pattern="*.csv")
     with Progress(console=con, transient=True, disable=not con.is_terminal) as prog:   # piped: no blank line
         task = prog.add_task("decoding", total=None)
         df = decode_file(args.file, raw=args.raw)

@@ -16,11 +16,10 @@ from __future__ import annotations
 
 import signal
 import threading
-from pathlib import Path
-
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.cli_util import console, fmt_bytes, print_json
 from kinefuse.host.link.signing import add_key_args, key_from_args
+from kinefuse.host.outputs import add_force_arg, check_new_file
 
 
 def register(subparsers) -> None:
@@ -41,7 +40,7 @@ def register(subparsers) -> None:
     p.add_argument("--no-timesync", action="store_true", help="do not send TIMESYNC requests (1 Hz, for latency)")
     p.add_argument("--note", help="free text stored in the header")
     add_key_args(p, "the commands sent (--start, --rate)")
-    p.add_argument("--force", action="store_true", help="overwrite FILE if it exists")
+    add_force_arg(p, "FILE")
     p.add_argument("--json", action="store_true", help="print the summary as one JSON object")
     p.set_defaults(func=run)
 
@@ -49,11 +48,7 @@ def register(subparsers) -> None:
 def run(args) -> int:
     from kinefuse.host.link.connection import parse_baud
     from kinefuse.host.link.recorder import Recorder
-    out = Path(args.out)
-    if out.exists() and not args.force:
-        raise KinefuseError(f"{out} exists (use --force to overwrite)")
-    if out.parent and not out.parent.exists():
-        raise KinefuseError(f"folder {out.parent} does not exist")
+    out = check_new_file(args.out, args.force)
     if args.duration is not None and not args.duration > 0:   # NaN too (it recorded until Ctrl-C)
         raise KinefuseError("--duration must be positive")
     if args.rate is not None and not 0 < args.rate <= 100_000:

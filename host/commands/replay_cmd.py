@@ -15,7 +15,6 @@ the magnetometer is used on the samples that carry a new reading.
 """
 from __future__ import annotations
 
-import os
 import sys
 from pathlib import Path
 
@@ -23,6 +22,7 @@ import numpy as np
 
 from kinefuse.host import runner
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.outputs import add_force_arg, check_new_file
 
 BROAD_SUFFIXES = (".mat", ".npz")
 MSG_ORI = 52501
@@ -51,6 +51,7 @@ def register(subparsers) -> None:
                    help="earth frame of the written quaternions (default enu)")
     p.add_argument("--compare-unit", action="store_true",
                    help="(.kfr) angle between the unit's own KF_ORIENTATION and the replayed orientation")
+    add_force_arg(p, "the output CSV")
     p.set_defaults(func=run)
 
 
@@ -60,8 +61,7 @@ def run(args) -> int:
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
     prm = runner.parse_params(args.param)
     path = str(args.rec)
-    if os.path.exists(args.out) and os.path.exists(path) and os.path.samefile(args.out, path):
-        raise KinefuseError(f"--out {args.out} is the recording itself: choose another output file")
+    check_new_file(args.out, args.force, inputs=[path])
     broad = Path(path).suffix.lower() in BROAD_SUFFIXES
     rec = None
     if broad:

@@ -26,6 +26,7 @@ import sys
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.kinematics import joint   # light (numpy); the heavy modules load on use
+from kinefuse.host.outputs import add_force_arg, check_output_dir
 
 
 UNIT_HELP = ("unit of the {seg} sensor in .kfr recordings holding several units: its unit (MAVLink "
@@ -53,6 +54,7 @@ def register(subparsers) -> None:
         sp.add_argument("--max-cycle-rmse", type=float, default=10.0, metavar="DEG",
                         help="reject cycles deviating more than this from the mean flexion curve")
         sp.add_argument("--json", action="store_true", help="print the summary as one JSON object")
+        add_force_arg(sp, "an earlier report of the same joint in DIR")
         from kinefuse.host.calib.static import StaticConfig
         g = sp.add_argument_group("static detection (postures, gyroscope bias, heading alignment)")
         d = StaticConfig()
@@ -190,9 +192,10 @@ def _check_cycle_args(args) -> None:
 
 
 def run_knee(args) -> int:
-    from kinefuse.host.calib import static, unitfile
+    from kinefuse.host.calib import unitfile
     from kinefuse.host.kinematics import report
     _check_cycle_args(args)
+    check_output_dir(args.out, args.force, report.report_files("knee"))
     if args.calib_functional is not None:
         if args.calib_lying is not None:
             raise KinefuseError("give --calib-lying (two-posture) or --calib-functional, not both")
@@ -229,6 +232,7 @@ def run_elbow(args) -> int:
     from kinefuse.host.calib import unitfile
     from kinefuse.host.kinematics import report
     _check_cycle_args(args)
+    check_output_dir(args.out, args.force, report.report_files("elbow"))
     read = _reader(args)
     units = None
     if args.unit_cal:

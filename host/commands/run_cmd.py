@@ -7,6 +7,7 @@ import numpy as np
 
 from kinefuse.host import runner
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.outputs import add_force_arg, check_new_file
 
 
 def register(sub):
@@ -30,23 +31,13 @@ def register(sub):
                    help="earth frame of the written quaternions (default enu, as BROAD)")
     p.add_argument("--fs", type=float, default=None, metavar="HZ",
                    help="sampling rate of a seed-004 Arduino CSV (it has no time column; default 35)")
+    add_force_arg(p, "the output CSV")
     p.set_defaults(func=run)
-
-
-def _refuse_overwriting_the_input(args) -> None:
-    from pathlib import Path
-    try:
-        same = Path(args.out).samefile(args.input)
-    except OSError:   # either does not exist (a missing input is reported by its reader)
-        same = False
-    if same:
-        raise KinefuseError(f"--out {args.out} is the input recording; give another file name "
-                            f"(the recording would be overwritten by the estimates)")
 
 
 def run(args) -> int:
     from kinefuse.host.broad import load_trial
-    _refuse_overwriting_the_input(args)
+    check_new_file(args.out, args.force, inputs=[args.input])
     name = args.filter or runner.default_filter()
     if name not in runner.filter_names():
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")

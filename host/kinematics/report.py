@@ -422,6 +422,14 @@ def _csv(path: str, header_comment: str, cols: list[str], data: np.ndarray, fmt=
         np.savetxt(f, data, delimiter=",", fmt=fmt)
 
 
+REPORT_FILES = ("angles.png", "timeseries.csv", "cycles.csv", "mean_sd.csv", "summary.md")
+
+
+def report_files(kind: str) -> list[str]:
+    """The files :func:`write_report` writes for ``kind`` ('knee' or 'elbow')."""
+    return [f"{kind}_{name}" for name in REPORT_FILES]
+
+
 def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet, *,
                  title: str, inputs: dict, max_cycle_rmse_deg: float = 10.0) -> dict:
     """Write PNG, CSVs and Markdown for ``kind`` ('knee' or 'elbow'); returns the summary.
@@ -458,8 +466,7 @@ def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet,
                                     "max_mean": float(rom["max_mean"][j]),
                                     "min_mean": float(rom["min_mean"][j])} for j, c in enumerate(cols)},
         "processing": res.info, "warnings": list(res.warnings),
-        "files": [os.path.basename(p(x)) for x in ("angles.png", "timeseries.csv", "cycles.csv",
-                                                    "mean_sd.csv", "summary.md")],
+        "files": report_files(kind),
     }
     _markdown(p("summary.md"), summary)
     return summary

@@ -134,7 +134,17 @@ def test_accel_from_recording_and_unit_file(run, tmp_path):
     assert code == 0, err
     g = json.loads(out)
     assert g["n_windows"] == 6 and g["units"] == "rad/s"
-    assert set(json.loads(out_json.read_text())["sensors"]) == {"accel", "gyro"}
+    first = json.loads(out_json.read_text())
+    assert set(first["sensors"]) == {"accel", "gyro"} and "history" not in first
+    # a new gyro calibration replaced the current one without trace; now the earlier one is kept
+    code, out, err = run("calibrate", "gyro", "--input", tmp_path / "six.csv", "--out", out_json)
+    assert code == 0 and "kept under history.gyro" in out, (out, err)
+    second = json.loads(out_json.read_text())
+    assert second["history"] == {"gyro": [first["sensors"]["gyro"]]}
+    assert second["sensors"]["accel"] == first["sensors"]["accel"]
+    code, out, err = run("calibrate", "gyro", "--input", tmp_path / "six.csv", "--out", out_json)
+    third = json.loads(out_json.read_text())
+    assert third["history"]["gyro"] == [first["sensors"]["gyro"], second["sensors"]["gyro"]]
 
 
 def test_mag_cli(run, tmp_path):

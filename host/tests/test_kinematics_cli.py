@@ -79,3 +79,26 @@ def test_report_elbow(run, tmp_path):
     assert code == 0, err
     assert "6 of 6 cycles" in out and "X-Y'-Z''" in out
     assert os.path.exists(tmp_path / "e" / "elbow_angles.png")
+
+
+def test_report_keeps_an_earlier_report_unless_forced(run, tmp_path):
+    """A second report into the same folder replaced the first patient's files without a word:
+    refused before any work unless --force; another joint's report may share the folder."""
+    arm, fore, _ = simulate.elbow_flexion()
+    kinefuse_csv.write(str(tmp_path / "arm.csv"), arm)
+    kinefuse_csv.write(str(tmp_path / "fore.csv"), fore)
+    out = tmp_path / "e"
+    argv = ("report", "elbow", "--arm", tmp_path / "arm.csv", "--forearm", tmp_path / "fore.csv", "--out", out)
+    assert run(*argv)[0] == 0
+    before = {f.name: f.read_bytes() for f in out.iterdir()}
+    assert len(before) == 5
+    (out / "knee_notes.txt").write_text("not ours")
+    code, stdout, err = run(*argv)
+    assert code == 2 and stdout == "" and err.count("\n") == 1
+    assert f"{out} already holds elbow_angles.png, elbow_cycles.csv, elbow_mean_sd.csv and 2 more" in err
+    assert {f.name: f.read_bytes() for f in out.iterdir() if f.name != "knee_notes.txt"} == before
+    code, _, err = run(*argv, "--force")
+    assert code == 0, err
+    code, _, err = run("report", "elbow", "--arm", tmp_path / "arm.csv", "--forearm", tmp_path / "fore.csv",
+                       "--out", tmp_path / "arm.csv")
+    assert code == 2 and "is a file, not a folder" in err

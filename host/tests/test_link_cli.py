@@ -196,20 +196,24 @@ def test_ctrl_c_while_the_commands_are_imported_is_one_line(monkeypatch, capsys)
 
 
 def test_export_into_a_folder_of_an_earlier_export_warns(run, tmp_path):
-    """Exporting into a folder holding another recording's CSVs mixed the two without a word;
-    a refused export (unknown --messages) left an empty folder; piped, an unusable file
-    printed a blank line on stdout before the one-line error."""
+    """Exporting into a folder holding another recording's CSVs replaced and mixed them without a
+    word: now refused without --force (nothing touched), and with --force the files it did not
+    write are named; a refused export (unknown --messages) left an empty folder; piped, an
+    unusable file printed a blank line on stdout before the one-line error."""
     from kinefuse.host.link.recorder import Recorder
     one, two = tmp_path / "one.kfr", tmp_path / "two.kfr"
     Recorder(one, ["fake:rate=200"]).run(0.4)
     Recorder(two, ["fake:rate=200", "fake:unit=2,rate=200"]).run(0.4)
     out = tmp_path / "csv"
     assert run("export", two, "--out", out)[0] == 0
-    code, stdout, _ = run("export", one, "--out", out, "--json")
+    before = {f.name: f.read_bytes() for f in out.iterdir()}
+    _one_line_error(*run("export", one, "--out", out), f"{out} already holds")
+    assert {f.name: f.read_bytes() for f in out.iterdir()} == before     # nothing replaced
+    code, stdout, _ = run("export", one, "--out", out, "--json", "--force")
     res = json.loads(stdout)
     assert code == 0 and any("6 CSV file(s) this export did not write" in w and "KF_RAW_SAMPLE_s0_u1.csv" in w
                              for w in res["warnings"]), res["warnings"]
-    code, stdout, _ = run("export", one, "--out", out, "--json")   # its own files are not counted
+    code, stdout, _ = run("export", one, "--out", out, "--json", "--force")   # its own files are not counted
     assert code == 0 and any("6 CSV file(s)" in w for w in json.loads(stdout)["warnings"])
     _one_line_error(*run("export", one, "--out", tmp_path / "new", "--messages", "NOPE"), "unknown message")
     assert not (tmp_path / "new").exists()

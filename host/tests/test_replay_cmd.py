@@ -128,7 +128,7 @@ def test_gap_longer_than_a_second_is_rejected_and_reported(run, tmp_path):
     (["replay", "{trial}", "--out", "{tmp}/o.csv", "--param", "beta"], "expects name=value"),
     (["replay", "{trial}", "--out", "{tmp}/o.csv", "--unit", "2"], "--unit applies to .kfr"),
     (["replay", "{trial}", "--out", "{tmp}/o.csv", "--compare-unit"], "needs a .kfr"),
-    (["replay", "{trial}", "--out", "{tmp}/no/such/dir/o.csv"], "cannot write"),
+    (["replay", "{trial}", "--out", "{tmp}/no/such/dir/o.csv"], "does not exist"),
     (["replay", "{tmp}/junk.kfr", "--out", "{tmp}/o.csv"], "not a kinefuse recording"),
 ])
 def test_bad_input_gives_one_line(run, tmp_path, argv, text):
@@ -147,8 +147,8 @@ def test_out_naming_the_recording_itself_is_refused(run, kfr_files, tmp_path):
     rec = tmp_path / "walk.kfr"
     shutil.copy(kfr_files[0], rec)
     data = rec.read_bytes()
-    _one_line_error(*run("replay", rec, "--out", rec), "is the recording itself")
-    _one_line_error(*run("replay", rec, "--out", tmp_path / "." / "walk.kfr"), "is the recording itself")
+    _one_line_error(*run("replay", rec, "--out", rec), "is the input")
+    _one_line_error(*run("replay", rec, "--out", tmp_path / "." / "walk.kfr"), "is the input")
     assert rec.read_bytes() == data
 
 
@@ -168,3 +168,28 @@ def test_unit_recording_steps_come_from_the_unit_clock_and_host_steps_bridge_a_r
         and np.isclose(dt[6], 0.001)
     rec_no_clock = Recording(t=host, acc=np.zeros((n, 3)), gyr=np.zeros((n, 3)), fmt="csv")
     assert np.allclose(runner.recording_inputs(rec_no_clock).dt[1:], np.diff(host))
+
+
+def test_an_existing_output_is_kept_unless_forced(run, tmp_path):
+    """`run` and `replay` wrote over an earlier result without a word; now an existing --out is
+    refused (left as it was) unless --force, a folder is refused, and the input is refused even
+    with --force."""
+    import shutil
+    trial = tmp_path / TRIAL.name
+    shutil.copy(TRIAL, trial)
+    data = trial.read_bytes()
+    out = tmp_path / "est.csv"
+    out.write_text("earlier results\n")
+    for argv in (("run", "--input", trial, "--out", out), ("replay", trial, "--out", out)):
+        _one_line_error(*run(*argv), f"{out} exists (use --force")
+        assert out.read_text() == "earlier results\n"
+        code, _, err = run(*argv, "--force")
+        assert code == 0, err
+        _, header, x = _csv(out)
+        assert header[:5] == ["t", "w", "x", "y", "z"] and len(x) > 100
+        out.write_text("earlier results\n")
+    _one_line_error(*run("run", "--input", trial, "--out", tmp_path, "--force"), "is a folder")
+    _one_line_error(*run("replay", trial, "--out", tmp_path, "--force"), "is a folder")
+    _one_line_error(*run("run", "--input", trial, "--out", trial, "--force"), "is the input")
+    _one_line_error(*run("replay", trial, "--out", trial, "--force"), "is the input")
+    assert trial.read_bytes() == data

@@ -108,7 +108,8 @@ def test_fs_sets_the_seed004_time_base(run, files, tmp_path):
     assert run("run", "--filter", "angle-kf", "--input", s004, "--out", out, "--fs", "20")[0] == 0
     _, _, x = _csv(out)
     assert np.allclose(x[:, 0], np.arange(len(z)) / 20.0)
-    _one_line_error(*run("run", "--filter", "angle-kf", "--input", plain, "--out", out, "--fs", "20"),
+    _one_line_error(*run("run", "--filter", "angle-kf", "--input", plain, "--out", out, "--fs", "20",
+                         "--force"),
                     "--fs applies to the seed-004 Arduino CSV")
 
 
@@ -140,10 +141,10 @@ def test_out_naming_the_input_is_refused_and_the_input_kept(run, files, tmp_path
     before = src.read_bytes()
     for out in (src, tmp_path / "." / "plain.csv"):
         code, out_txt, err = run("run", "--filter", "angle-kf", "--input", src, "--out", out)
-        _one_line_error(code, out_txt, err, "is the input recording")
+        _one_line_error(code, out_txt, err, "is the input")
     monkeypatch.chdir(tmp_path)        # a relative name for the same file
     code, out_txt, err = run("run", "--filter", "angle-kf", "--input", "plain.csv", "--out", src)
-    _one_line_error(code, out_txt, err, "is the input recording")
+    _one_line_error(code, out_txt, err, "is the input")
     assert src.read_bytes() == before
 
 
