@@ -59,6 +59,10 @@ def run(args) -> int:
                           "-" if "loss_fraction" not in m else f"{100 * m['loss_fraction']:.3f}",
                           str(m.get("resets", "-")), style=style)
             print_table(t, con)
+            for name, m in u["messages"].items():
+                if m.get("requested_changes"):
+                    con.print(f"  {name}: the requested rate changed {m['requested_changes']} time(s); "
+                              f"its rate is that from unit time {m['rate_from_device_s']:.1f} s on")
             c = u.get("clock")
             if c:
                 dm = c["delay_above_min_ms"]

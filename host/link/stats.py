@@ -1,7 +1,9 @@
 """Link statistics of a recording: per stream and unit, rates, loss, errors, clock fit, latency.
 
 - rate achieved: frames received per second of the unit's clock, vs the rate requested (from
-  KF_UNIT_STATUS, else the recording header);
+  KF_UNIT_STATUS, else the recording header); where the unit's status shows the requested rate
+  changing during the recording, the achieved rate is taken from its last change on (it was the
+  average of the old and the new rate) and the number of changes is reported;
 - samples lost: from the 32-bit ``sample_counter`` (wrap-safe; the usual step between frames
   is taken as the stride, so a decimated stream is not counted as loss); resets (reboots) and
   duplicates are counted separately;
@@ -230,15 +232,31 @@ def _last_segment(t_us: np.ndarray, counter=None) -> slice:
     return slice(int(max(cuts)) if cuts else 0, None)
 
 
+def _rate_change(status_rows, field: str) -> tuple[int | None, int]:
+    """(device time in µs from which the last requested rate holds, number of changes) from a
+    unit's KF_UNIT_STATUS rows; statuses before the unit's last reboot (its clock went back) are
+    not compared with those after."""
+    t = status_rows["time_boot_us"].astype(np.int64)
+    back = np.flatnonzero(np.diff(t) < 0)
+    rows = status_rows[int(back[-1]) + 1:] if back.size else status_rows
+    r = rows[field].astype(np.float64)
+    changed = np.flatnonzero(r[1:] != r[:-1]) + 1
+    if not changed.size:
+        return None, 0
+    # the change happened between the two statuses: from the first one with the new value, the
+    # stream surely runs at it
+    return int(rows["time_boot_us"][changed[-1]]), int(changed.size)
+
+
 def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dict) -> dict:
     d = kinefuse_dialect()
     out: dict = {"sysid": sysid, "messages": {}}
-    status = None
+    status = statuses = None
     if MSG_STATUS in ds.arrays:
         st = ds.arrays[MSG_STATUS]
         st = st[st["_sysid"] == sysid]
         if st.size:
-            status = st[-1]
+            status, statuses = st[-1], st
             v = int(status["firmware_version"])
             out["firmware_version"] = f"{v >> 24}.{(v >> 16) & 0xFF}.{(v >> 8) & 0xFF}"
             out["dialect_hash"] = f"0x{int(status['dialect_hash']):08X}"
@@ -260,8 +278,14 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
         if "time_boot_us" in a.dtype.names and a.size >= 2:
             counter = a["sample_counter"] if "sample_counter" in a.dtype.names else None
             seg = a[_last_segment(a["time_boot_us"], counter)]
+            if statuses is not None and mid in REQUESTED_FIELD:
+                since_us, changes = _rate_change(statuses, REQUESTED_FIELD[mid])
+                if changes:
+                    m["requested_changes"] = changes
+                    m["rate_from_device_s"] = since_us / 1e6
+                    seg = seg[seg["time_boot_us"].astype(np.int64) >= since_us]
             t = seg["time_boot_us"].astype(np.int64)
-            span = (t[-1] - t[0]) / 1e6
+            span = (t[-1] - t[0]) / 1e6 if t.size >= 2 else 0.0
             if span > 0:
                 m["rate_hz"] = (seg.size - 1) / span
                 m["device_span_s"] = span

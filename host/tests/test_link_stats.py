@@ -98,3 +98,31 @@ def test_stats_recover_known_values(synthetic):
     assert 3.0 <= lat["timesync_rtt_ms"]["min"] < 3.1 and lat["timesync_rtt_ms"]["count"] == ticks
     assert lat["one_way_estimate_ms"] == pytest.approx(1.5 + clock["delay_above_min_ms"]["median"], abs=0.05)
     assert u["unit_reported"]["frames_dropped"] == 3
+
+
+def test_rate_after_a_requested_rate_change(tmp_path):
+    """A unit asked for 100 Hz, then 400 Hz after 10 s: stats compared the 10 + 10 s average
+    (250 Hz) with 400 Hz and flagged a 0.62 ratio; the rate now holds from the change on."""
+    path = tmp_path / "c.kfr"
+    head = make_header([{"id": 0, "connection": "synthetic"}])
+    t0 = head["start_monotonic_ns"]
+    enc = Encoder(sysid=4, compid=200)
+    reads, dev_us, k = [], 0, 0
+    last_status = -1
+    while dev_us < 20_000_000:
+        req = 100.0 if dev_us < 10_000_000 else 400.0
+        frame = enc.encode("KF_RAW_SAMPLE", time_boot_us=dev_us, sample_counter=k, acc_z=1000, flags=8)
+        if dev_us // 1_000_000 != last_status:          # one status a second, with the rate asked
+            last_status = dev_us // 1_000_000
+            frame += enc.encode("KF_UNIT_STATUS", time_boot_us=dev_us, raw_rate_requested=req, dialect_hash=0)
+        reads.append((t0 + 1000 * dev_us + 2_000_000, frame))
+        dev_us += int(1e6 / req)
+        k += 1
+    with RecordingWriter(path, head) as w:
+        for a in range(0, len(reads), 50):
+            w.rx(0, reads[a:a + 50])
+    r = stats.compute(decode_file(path))
+    m = r["streams"][0]["units"][0]["messages"]["KF_RAW_SAMPLE"]
+    assert m["requested_hz"] == 400.0 and m["requested_changes"] == 1 and m["rate_from_device_s"] == 10.0
+    assert m["rate_hz"] == pytest.approx(400.0, rel=1e-9) and m["rate_ratio"] == pytest.approx(1.0, rel=1e-9)
+    assert m["count"] == 1000 + 4000
