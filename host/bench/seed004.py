@@ -60,11 +60,7 @@ def register_bench(sub):
 
 
 def make_take(omega: float, take: int, args):
-    """(t, truth, measured) of one take, radians."""
-    if not (args.rate_hz > 0 and args.duration_s > WARMUP_S + 1 and args.noise_deg >= 0
-            and args.latency_ms >= 0 and args.takes >= 1):
-        raise KinefuseError("seed004: rate, duration (> 3 s), takes (>= 1), noise and latency "
-                            "must be positive")
+    """(t, truth, measured) of one take, radians (``args`` checked by :func:`check_protocol`)."""
     rng = np.random.default_rng([int(args.seed), int(round(omega * 1000)), int(take)])
     n = int(round(args.duration_s * args.rate_hz))
     t = np.arange(n) / args.rate_hz
@@ -139,6 +135,35 @@ def bitexact(name: str, inp: dict) -> dict:
     return out
 
 
+def check_protocol(args) -> list[float]:
+    """One-line errors for a protocol that cannot be simulated (NaN, a non-positive rate, no
+    take, a duration within the warm-up); returns the angular frequencies."""
+    import math
+    try:
+        omegas = [float(w) for w in args.omegas.split(",")]
+    except ValueError:
+        raise KinefuseError(f"--omegas: expected numbers, got {args.omegas!r}") from None
+
+    def need(ok: bool, msg: str):
+        if not ok:
+            raise KinefuseError(msg)
+    need(0 < args.rate_hz <= 10_000, f"--rate-hz {args.rate_hz:g}: must be in (0, 10000] Hz")
+    nyquist = math.pi * args.rate_hz
+    need(bool(omegas) and all(0 < w < nyquist for w in omegas),
+         f"--omegas {args.omegas}: each must be a positive angular frequency below the sampling "
+         f"limit π·rate = {nyquist:.4g} rad/s")
+    need(0 < args.amplitude_deg <= 180, f"--amplitude-deg {args.amplitude_deg:g}: must be in (0, 180]")
+    need(WARMUP_S + 1 < args.duration_s <= 3600,
+         f"--duration-s {args.duration_s:g}: must be in ({WARMUP_S + 1:g}, 3600] s (the first "
+         f"{WARMUP_S:g} s are warm-up)")
+    need(1 <= args.takes <= 1000, f"--takes {args.takes}: must be 1 to 1000")
+    need(0 <= args.noise_deg <= 90, f"--noise-deg {args.noise_deg:g}: must be in [0, 90]")
+    need(0 <= args.latency_ms < 1000 * WARMUP_S,
+         f"--latency-ms {args.latency_ms:g}: must be in [0, {1000 * WARMUP_S:g}) ms (within the warm-up)")
+    need(args.seed >= 0, f"--seed {args.seed}: must be 0 or more")
+    return omegas
+
+
 def run(args) -> int:
     from kinefuse.codegen import estimators, runner
     names = [s.strip() for s in args.filters.split(",") if s.strip()]
@@ -147,10 +172,7 @@ def run(args) -> int:
             raise KinefuseError(f"unknown filter {n!r} (available: {', '.join(estimators.ESTIMATORS)})")
         if estimators.ESTIMATORS[n].inputs.name != "angle":
             raise KinefuseError(f"filter {n!r} does not take an angle series")
-    try:
-        omegas = [float(w) for w in args.omegas.split(",")]
-    except ValueError:
-        raise KinefuseError(f"--omegas: expected numbers, got {args.omegas!r}") from None
+    omegas = check_protocol(args)
     model = {"amplitude_deg": args.amplitude_deg, "rate_hz": args.rate_hz,
              "duration_s": args.duration_s, "takes": args.takes, "noise_deg": args.noise_deg,
              "latency_ms": args.latency_ms, "warmup_s": WARMUP_S, "seed": args.seed,

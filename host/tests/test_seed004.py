@@ -8,6 +8,7 @@ import math
 from contextlib import redirect_stdout
 
 import numpy as np
+import pytest
 
 from kinefuse.host import cli
 from kinefuse.host.bench import seed004
@@ -71,3 +72,22 @@ def test_bad_arguments_are_one_line_errors(capsys):
     assert cli.main(["bench", "seed004", "--filters", "vac"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 2 and all(e.startswith("kinefuse: error:") for e in err)
+
+
+@pytest.mark.parametrize("argv, text", [
+    (["--omegas", "-1"], "--omegas -1: each must be a positive angular frequency"),   # was a ValueError
+    (["--omegas", "nan"], "--omegas nan:"),                                          # was a ValueError
+    (["--omegas", "200"], "below the sampling limit π·rate = 110"),
+    (["--seed", "-1"], "--seed -1: must be 0 or more"),                              # was a ValueError
+    (["--takes", "0"], "--takes 0: must be 1 to 1000"),                              # was NaN RMSEs
+    (["--rate-hz", "nan"], "--rate-hz nan"),
+    (["--amplitude-deg", "0"], "--amplitude-deg 0"),
+    (["--duration-s", "2.5"], "the first 2 s are warm-up"),
+    (["--noise-deg", "inf"], "--noise-deg inf"),
+    (["--latency-ms", "5000"], "within the warm-up"),
+])
+def test_bad_protocols_are_one_line_errors_before_any_work(capsys, argv, text):
+    assert cli.main(["bench", "seed004", "--json", *argv]) == 2
+    out, err = capsys.readouterr()
+    lines = err.strip().splitlines()
+    assert out == "" and len(lines) == 1 and lines[0].startswith("kinefuse: error:") and text in lines[0], err
