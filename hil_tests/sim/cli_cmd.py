@@ -19,6 +19,7 @@ import numpy as np
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.console import print_table
+from kinefuse.host import argtypes
 
 
 def register(subparsers) -> None:
@@ -33,7 +34,7 @@ def register(subparsers) -> None:
     sh.set_defaults(func=_show)
     rn = sub.add_parser("run", help="simulate a scenario (name or JSON file)")
     rn.add_argument("scenario", help="library name or path to a scenario .json")
-    rn.add_argument("--seed", type=int, default=None, help="random seed (default: the scenario's)")
+    rn.add_argument("--seed", type=argtypes.seed, default=None, help="random seed (default: the scenario's)")
     rn.add_argument("--preset", default=None, help="sensor preset: xsens_dot, matrix, metamotionr, ideal")
     rn.add_argument("--rate", type=float, default=None, help="acc/gyro output rate, Hz")
     rn.add_argument("--mag-rate", type=float, default=None, help="magnetometer rate, Hz")

@@ -15,6 +15,7 @@ import numpy as np
 
 from kinefuse.host import runner
 from kinefuse.host.bench.common import eprint, progress, quat_angle_deg, trial_files
+from kinefuse.host import argtypes
 
 
 def register_bench(sub):
@@ -22,7 +23,7 @@ def register_bench(sub):
     p.add_argument("--data", help="BROAD folder or trial file (default: shared BROAD, else bundled)")
     p.add_argument("--filter", default=None, help="filter name (default: the default filter)")
     p.add_argument("--param", action="append", metavar="NAME=VALUE")
-    p.add_argument("--jobs", type=int, default=2, help="parallel processes (default 2)")
+    p.add_argument("--jobs", type=argtypes.integer(1, 256), default=2, help="parallel processes (default 2)")
     p.add_argument("--no-ref", action="store_true",
                    help="bits only: skip the float64 reference (the slowest part; no deviation)")
     p.add_argument("--json", action="store_true")

@@ -26,6 +26,7 @@ import json
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.console import print_table as print_fitted
+from kinefuse.host import argtypes
 
 COMPETITOR_CASES = ("fusion-ahrs-9d", "fusion-ahrs-6d", "vqf-9d-f32", "vqf-6d-f32")
 TARGETS = {"f32": ("m4f", "m0"), "q": ("m4f", "m0")}
@@ -49,7 +50,7 @@ def register_bench(bench_subparsers) -> None:
                    help="also show where each of our updates spends its instructions: by function "
                         "(libgcc, libm, runtime helpers) and by line of the Python reference")
     p.add_argument("--top", type=int, default=12, help="profile entries shown (default 12)")
-    p.add_argument("--jobs", type=int, default=2, help="parallel measurements (default 2)")
+    p.add_argument("--jobs", type=argtypes.integer(1, 256), default=2, help="parallel measurements (default 2)")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
     p.set_defaults(func=run)
 

@@ -21,6 +21,7 @@ import os
 import time
 
 import numpy as np
+from kinefuse.host import argtypes
 
 
 def register_bench(bench_subparsers) -> None:
@@ -33,7 +34,7 @@ def register_bench(bench_subparsers) -> None:
     p.add_argument("--fake-magic-frames", type=int, default=20_000, help="frames of the fake-magic test (default 20000)")
     p.add_argument("--fake-magic-message", choices=("KF_RAW_SAMPLE", "HIGHRES_IMU"), default="KF_RAW_SAMPLE",
                    help="frames of the fake-magic figure in --json (default KF_RAW_SAMPLE)")
-    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--seed", type=argtypes.seed, default=1)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=run)
 

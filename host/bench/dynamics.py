@@ -21,6 +21,7 @@ import math
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.console import print_table
+from kinefuse.host import argtypes
 
 PARTS = ("pendulum", "robustness", "leg")
 
@@ -38,7 +39,7 @@ def register_bench(sub):
     p.add_argument("--no-fixed", action="store_true",
                    help="skip the leg's fixed-point emulation (about a minute)")
     p.add_argument("--jobs", type=int, default=2, help="parallel processes (default 2)")
-    p.add_argument("--seed", type=int, default=0, help="noise seed of the synthetic trials")
+    p.add_argument("--seed", type=argtypes.seed, default=0, help="noise seed of the synthetic trials")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
     p.set_defaults(func=run)
 

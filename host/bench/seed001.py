@@ -33,6 +33,7 @@ import numpy as np
 from kinefuse.host.bench.common import progress
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.console import print_table
+from kinefuse.host import argtypes
 
 SEED_FILTERS = ("madgwick", "vac", "vak", "guo")
 LABELS = {"madgwick": "MAD", "vac": "VAC", "vak": "VAK", "guo": "GUO", "flagship": "FLAG",
@@ -62,7 +63,7 @@ def register_bench(sub):
                    help="seed001: the seed's parameter sets (presets); default: our defaults")
     p.add_argument("--filters", default=None,
                    help="comma-separated filter names (default: madgwick,vac,vak,guo[,flagship])")
-    p.add_argument("--seed", type=int, default=1, help="simulation seed (unit C8 uses seed + 1)")
+    p.add_argument("--seed", type=argtypes.seed, default=1, help="simulation seed (unit C8 uses seed + 1)")
     p.add_argument("--hold-s", type=float, default=60.0,
                    help="static hold duration, s (seed: 60; the window is 25-45 s of each hold)")
     p.add_argument("--broad", nargs="?", const="", default=None, metavar="DIR|FILE",

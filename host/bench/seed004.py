@@ -26,6 +26,7 @@ import numpy as np
 from kinefuse.host.bench.common import progress
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.console import print_table
+from kinefuse.host import argtypes
 
 FILTERS = ("angle-kf", "angle-ekf", "angle-ukf", "angle-srukf")
 LABELS = {"angle-kf": "KF", "angle-ekf": "EKF", "angle-ukf": "UKF", "angle-srukf": "SR-UKF"}
@@ -51,7 +52,7 @@ def register_bench(sub):
     p.add_argument("--noise-deg", type=float, default=1.8, help="measurement noise std, degrees")
     p.add_argument("--latency-ms", type=float, default=23.0,
                    help="delay of the measured angle behind the truth, ms")
-    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--seed", type=argtypes.seed, default=0)
     p.add_argument("--bitexact", action="store_true",
                    help="also compare the generated C with its Python model bit for bit, and "
                         "measure samples/s")
@@ -160,7 +161,6 @@ def check_protocol(args) -> list[float]:
     need(0 <= args.noise_deg <= 90, f"--noise-deg {args.noise_deg:g}: must be in [0, 90]")
     need(0 <= args.latency_ms < 1000 * WARMUP_S,
          f"--latency-ms {args.latency_ms:g}: must be in [0, {1000 * WARMUP_S:g}) ms (within the warm-up)")
-    need(args.seed >= 0, f"--seed {args.seed}: must be 0 or more")
     return omegas
 
 

@@ -15,13 +15,14 @@ import json
 
 import numpy as np
 from kinefuse.host.console import print_table
+from kinefuse.host import argtypes
 
 # the fitting modules (scipy) are imported on use: `kinefuse --help` must stay fast
 
 
 def register_bench(sub) -> None:
     p = sub.add_parser("calibration", help="calibration figures (seed worked example, magnetometer, accelerometer)")
-    p.add_argument("--runs", type=int, default=10, help="simulated magnetometer recordings per model")
+    p.add_argument("--runs", type=argtypes.integer(1, 10_000), default=10, help="simulated magnetometer recordings per model")
     p.add_argument("--json", action="store_true", help="print exactly one JSON object")
     p.set_defaults(func=run)
 

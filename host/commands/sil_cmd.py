@@ -7,6 +7,7 @@ import json
 from pathlib import Path
 
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host import argtypes
 
 
 def register(subparsers) -> None:
@@ -23,7 +24,7 @@ def register(subparsers) -> None:
                    help="keep only the first SECONDS of the BROAD trial (default: --seconds; 0: the whole trial)")
     r.add_argument("--broad", default=None,
                    help="BROAD trial file added to the set (default: first shared/bundled trial; 'none')")
-    r.add_argument("--seed", type=int, default=1, help="simulator seed (default 1)")
+    r.add_argument("--seed", type=argtypes.seed, default=1, help="simulator seed (default 1)")
     r.add_argument("--no-qemu", action="store_true", help="skip the Cortex-M loops")
     r.add_argument("--with-ref", action="store_true", help="also score the float64 reference (slow)")
     r.add_argument("--firmware", action="store_true",

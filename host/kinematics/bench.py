@@ -24,6 +24,7 @@ import numpy as np
 from kinefuse.host.kinematics import alignment, joint, misalignment
 from kinefuse.host.kinematics import quat as Q
 from kinefuse.host.console import print_table
+from kinefuse.host import argtypes
 # report and simulate (scipy) are imported on use: `kinefuse --help` must stay fast
 
 PUBLISHED = {60: {"a": 0.01389, "c": 0.05043, "r2": 0.9995}, 70: {"a": 0.02013, "c": 0.1497, "r2": 0.9979}}
@@ -31,9 +32,9 @@ PUBLISHED = {60: {"a": 0.01389, "c": 0.05043, "r2": 0.9995}, 70: {"a": 0.02013, 
 
 def register_bench(sub) -> None:
     p = sub.add_parser("joint-angles", help="joint-angle figures (seed 002 misalignment study, knee step-up RMSE)")
-    p.add_argument("--runs", type=int, default=5, help="simulated step-up sessions")
-    p.add_argument("--misalign", type=float, default=10.0, help="sensor misalignment (deg)")
-    p.add_argument("--posture", type=float, default=1.0, help="calibration posture imperfection (deg)")
+    p.add_argument("--runs", type=argtypes.integer(1, 10_000), default=5, help="simulated step-up sessions")
+    p.add_argument("--misalign", type=argtypes.real(0.0, 90.0), default=10.0, help="sensor misalignment (deg)")
+    p.add_argument("--posture", type=argtypes.real(0.0, 45.0), default=1.0, help="calibration posture imperfection (deg)")
     p.add_argument("--json", action="store_true", help="print exactly one JSON object")
     p.set_defaults(func=run)
 

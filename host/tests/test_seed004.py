@@ -78,7 +78,6 @@ def test_bad_arguments_are_one_line_errors(capsys):
     (["--omegas", "-1"], "--omegas -1: each must be a positive angular frequency"),   # was a ValueError
     (["--omegas", "nan"], "--omegas nan:"),                                          # was a ValueError
     (["--omegas", "200"], "below the sampling limit π·rate = 110"),
-    (["--seed", "-1"], "--seed -1: must be 0 or more"),                              # was a ValueError
     (["--takes", "0"], "--takes 0: must be 1 to 1000"),                              # was NaN RMSEs
     (["--rate-hz", "nan"], "--rate-hz nan"),
     (["--amplitude-deg", "0"], "--amplitude-deg 0"),
