@@ -35,7 +35,8 @@ def register(subparsers) -> None:
 
     def common(sp, recording_required: bool):
         sp.add_argument("--input", metavar="RECORDING", required=recording_required,
-                        help="recording (Xsens DOT/MATRIX/MetaBase/kinefuse CSV, BROAD .mat)")
+                        help="recording (Xsens DOT/MATRIX/MetaBase/kinefuse CSV, .kfr, BROAD .mat or "
+                             "bundled .npz trial)")
         sp.add_argument("--format", dest="fmt", help="recording format (default: detected)")
         sp.add_argument("--fs", type=float, help="sampling rate (Hz) for formats without time stamps")
         sp.add_argument("--unit", metavar="ID",

@@ -3,7 +3,7 @@ mag µT, device quaternion (w,x,y,z) if present, extra channels, metadata).
 
 Formats (``fmt`` names): ``xsens-dot``, ``matrix``, ``metabase``, ``seed004-arduino``,
 ``broad-mat``, ``kinefuse-csv``, ``kfr``.  :func:`read_recording` detects the format from the
-header (or the ``.mat`` / ``.kfr`` extension) unless ``fmt`` is given.
+header (or the ``.mat`` / ``.npz`` / ``.kfr`` extension) unless ``fmt`` is given.
 
 ``kfr``: kinefuse units' recordings (``kinefuse record``), see :mod:`.kfr`.  One file may hold
 several units: choose one with ``unit=`` (MAVLink system id = unit id, or ``s<stream>:<id>``);
@@ -37,7 +37,7 @@ def detect_format(path: str) -> str:
         raise ReaderError(path, "file not found")
     if os.path.isdir(path):
         raise ReaderError(path, "is a directory; give one recording file")
-    if path.lower().endswith(".mat"):
+    if path.lower().endswith((".mat", ".npz")):
         return broad.FORMAT
     if path.lower().endswith(".kfr"):
         return kfr.FORMAT
@@ -64,7 +64,8 @@ def detect_format(path: str) -> str:
     if seed004.sniff_lines(head):
         return seed004.FORMAT
     raise ReaderError(path, "unknown recording format (expected Xsens DOT, MATRIX, MetaBase, "
-                            "seed-004 Arduino or kinefuse CSV, a BROAD .mat or a .kfr unit recording)")
+                            "seed-004 Arduino or kinefuse CSV, a BROAD .mat or bundled .npz trial, or a .kfr "
+                            "unit recording)")
 
 
 def read_recording(path: str, fmt: str | None = None, **options) -> Recording:

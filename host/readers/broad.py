@@ -1,4 +1,5 @@
-"""BROAD benchmark trial (.mat, MATLAB v5): imu_acc m/s², imu_gyr rad/s, imu_mag µT.
+"""BROAD benchmark trial (.mat, MATLAB v5): imu_acc m/s², imu_gyr rad/s, imu_mag µT; or a trial
+of the excerpt bundled with kinefuse (.npz, read by :func:`kinefuse.host.broad.load_trial`).
 
 Laidig, Caruso, Cereatti, Seel, Data 6(7):72, 2021 (CC BY 4.0).  ``opt_quat`` (optical
 reference, sensor → East-North-Up, NaN where markers were lost) and ``movement`` go to
@@ -14,6 +15,8 @@ FORMAT = "broad-mat"
 
 
 def read(path: str, **_) -> Recording:
+    if str(path).lower().endswith(".npz"):
+        return _read_excerpt(path)
     try:
         import scipy.io
         d = scipy.io.loadmat(path)
@@ -47,4 +50,20 @@ def read(path: str, **_) -> Recording:
         rec.channels["opt_quat_wxyz"] = np.asarray(d["opt_quat"], dtype=float)
     if "movement" in d:
         rec.channels["movement"] = np.asarray(d["movement"], dtype=float).ravel()
+    return rec
+
+
+def _read_excerpt(path: str) -> Recording:
+    from kinefuse.host.broad import load_trial
+    from kinefuse.host.errors import KinefuseError
+    try:
+        tr = load_trial(path)
+    except KinefuseError as exc:  # already "<path>: <problem>"
+        raise ReaderError(path, str(exc).removeprefix(f"{path}: ")) from None
+    check_acc_units(path, tr.acc, "m/s^2")
+    rec = Recording(t=tr.t, acc=tr.acc, gyr=tr.gyr, mag=tr.mag, fs=tr.rate_hz, source=path, fmt=FORMAT,
+                    metadata={"frame": "ENU reference (opt_quat)", "licence": "CC BY 4.0, BROAD",
+                              "trial": tr.name})
+    rec.channels["opt_quat_wxyz"] = tr.quat_ref
+    rec.channels["movement"] = tr.movement.astype(float)
     return rec

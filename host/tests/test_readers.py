@@ -242,6 +242,21 @@ def test_broad_mat():
     assert r.channels["opt_quat_wxyz"].shape == (len(r), 4)
 
 
+def test_bundled_npz_trial_reads_like_its_mat(tmp_path):
+    """calibrate/report take the bundled excerpt's .npz trials; same arrays as load_trial."""
+    from kinefuse.host.broad import bundled_trials, load_trial
+    p = str(bundled_trials()[0])
+    r, tr = read_recording(p), load_trial(p)
+    assert r.fmt == "broad-mat" and r.fs == tr.rate_hz and len(r) == tr.n
+    for a, b in ((r.acc, tr.acc), (r.gyr, tr.gyr), (r.mag, tr.mag), (r.t, tr.t)):
+        assert np.array_equal(a, b)
+    assert np.array_equal(r.channels["opt_quat_wxyz"], tr.quat_ref, equal_nan=True)
+    np.savez(tmp_path / "other.npz", x=np.zeros(3))
+    with pytest.raises(ReaderError) as e:
+        read_recording(str(tmp_path / "other.npz"))
+    one_line(e, "other.npz", "missing")
+
+
 def test_kinefuse_csv_roundtrip_and_errors(tmp_path):
     t = np.arange(50) / 100.0
     rec = Recording(t=t, acc=np.tile([0, 0, 9.81], (50, 1)), gyr=np.zeros((50, 3)),
