@@ -31,6 +31,7 @@ void w_dyn_scale(int32_t m, int32_t e, int32_t cc, int32_t fc, int32_t *om, int3
 int64_t w_smull(int32_t a, int32_t b) { return kf_smull(a, b); }
 uint64_t w_umull(uint32_t a, uint32_t b) { return kf_umull(a, b); }
 uint64_t w_isqrt_floor(uint64_t n, uint64_t *rem) { return kf_isqrt_floor(n, rem); }
+uint32_t w_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem) { return kf_udiv64_32(n, d, rem); }
 """
 CDEF = """
 int32_t w_sat(int64_t v, int32_t lo, int32_t hi);
@@ -46,17 +47,20 @@ void w_dyn_scale(int32_t m, int32_t e, int32_t cc, int32_t fc, int32_t *om, int3
 int64_t w_smull(int32_t a, int32_t b);
 uint64_t w_umull(uint32_t a, uint32_t b);
 uint64_t w_isqrt_floor(uint64_t n, uint64_t *rem);
+uint32_t w_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem);
 """
 
 
-# "native": the host's own 64-bit products and a float first guess for square roots (as on the
-# M4F); "portable": the 16 x 16 long multiplication, 32-bit division loop and digit-by-digit
-# square root of the Cortex-M0 build; "no-fpu": native products, digit-by-digit square root (an
-# M3 or M4 without FPU).  Every helper is checked on every path.
-@pytest.fixture(scope="module", params=["native", "portable", "no-fpu"])
+# "native": the host's own 64-bit products and division and a float first guess for square roots;
+# "portable": the 16 x 16 long multiplication, 32-bit division loop and digit-by-digit square
+# root of the Cortex-M0 build; "no-fpu": native products, digit-by-digit square root (an M3 or
+# M4 without FPU); "divlu": the two-digit 64/32 division of the M3/M4/M7 builds, with the
+# float-seeded square root (the M4F).  Every helper is checked on every path.
+@pytest.fixture(scope="module", params=["native", "portable", "no-fpu", "divlu"])
 def c(request):
     define = {"native": "", "portable": "#define KF_PORTABLE_LONG_MUL\n",
-              "no-fpu": "#define KF_PORTABLE_ISQRT\n"}[request.param]
+              "no-fpu": "#define KF_PORTABLE_ISQRT\n",
+              "divlu": "#define KF_PORTABLE_DIVLU\n"}[request.param]
     ffi, lib = build(f"qruntime_test_{request.param}", [], [], extra_cdef=CDEF,
                      extra_source=define + '#include "kf_fixed.h"\n' + WRAP,
                      include_dirs=[RUNTIME_DIR])
@@ -114,6 +118,44 @@ def test_div_rnd(c, n, d, lo, hi):
         q = Fraction(n, d)
         r = math.floor(abs(q) + Fraction(1, 2)) * (1 if q >= 0 else -1)
         assert got == max(lo, min(hi, r))
+
+
+UDIV_EDGE_D = [1, 2, 3, 0xFFFF, 0x10000, 0x10001, 0x7FFF8000, 0x8000, 0x12345, 2 ** 31 - 1, 2 ** 31,
+               0x40000001, 0x7FFFFFFF & ~0xFFFF, 0x4000FFFF]
+
+
+def _check_udiv(lib, ffi, n, d):
+    rem = ffi.new("uint32_t *")
+    q = lib.w_udiv64_32(n, d, rem)
+    assert (q, rem[0]) == divmod(n, d), (n, d)
+
+
+@settings(max_examples=400, deadline=None)
+@given(d=st.one_of(st.integers(1, 2 ** 31), st.sampled_from(UDIV_EDGE_D)),
+       hi=st.integers(0, 2 ** 32 - 1), lo=st.one_of(st.integers(0, 2 ** 32 - 1),
+                                                   st.sampled_from([0, 1, 0xFFFF, 0x10000, 2 ** 32 - 1])))
+def test_udiv64_32_is_floor_division(c, d, hi, lo):
+    """The 64/32 division under kf_div_rnd and the reciprocal square root, on its whole domain
+    (0 < d <= 2^31, quotient < 2^32): the quotient digits' correction steps included."""
+    hi = hi % d
+    _check_udiv(c[1], c[0], (hi << 32) | lo, d)
+
+
+@settings(max_examples=200, deadline=None)
+@given(d=st.integers(2 ** 31, 2 ** 32 - 1), hi=st.integers(0, 2 ** 32 - 1), lo=st.integers(0, 2 ** 32 - 1))
+def test_udiv64_32_wide_divisors(c, request, d, hi, lo):
+    """Divisors above 2^31 (the float-seeded square root's Newton step) where there is long
+    multiplication; the M0's shift-subtract loop is not used for them."""
+    if request.node.callspec.params["c"] == "portable":
+        pytest.skip("the shift-subtract loop takes d <= 2^31 only")
+    _check_udiv(c[1], c[0], (hi % d << 32) | lo, d)
+
+
+def test_udiv64_32_edges(c):
+    for d in UDIV_EDGE_D:
+        for hi in (0, 1, d // 2, d - 1):
+            for lo in (0, 1, 0xFFFF, 0x10000, 0xFFFF0000, 2 ** 32 - 1, d - 1 if d <= 2 ** 32 else 0):
+                _check_udiv(c[1], c[0], (hi % d << 32) | lo, d)
 
 
 @settings(max_examples=150, deadline=None)

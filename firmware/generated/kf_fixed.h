@@ -38,6 +38,15 @@ typedef struct {
 #define KF_NO_LONG_MUL 1   /* these cores have no CLZ and (v6-M) no divider either */
 #endif
 
+/* Cores with a 32-bit divider and CLZ but 64-bit division only in libgcc (ARMv7-M: M3, M4, M7;
+ * ARMv8-M Mainline) divide 64 by 32 bits in two 16-bit digits; KF_PORTABLE_DIVLU selects this
+ * path on the host for its tests. */
+#if !defined(KF_NO_LONG_MUL) && \
+    ((defined(__arm__) && defined(__ARM_FEATURE_IDIV) && defined(__ARM_FEATURE_CLZ)) || \
+     defined(KF_PORTABLE_DIVLU))
+#define KF_DIV_BY_DIGITS 1
+#endif
+
 #ifdef KF_NO_LONG_MUL
 static inline uint64_t kf_umull(uint32_t a, uint32_t b)
 {
@@ -127,7 +136,9 @@ static inline int32_t kf_lsh_sat(int64_t v, int32_t k, int32_t lo, int32_t hi)
     return (int32_t)(v * ((int64_t)1 << k));
 }
 
-/* floor(n / d) and the remainder, for 0 < d <= 2^31 and n < d * 2^32 (the quotient fits 32 bits).
+/* floor(n / d) and the remainder, for 0 < d <= 2^31 and n < d * 2^32 (the quotient fits 32 bits);
+ * where there is long multiplication (every path but the shift-subtract loop) d may be any
+ * nonzero 32-bit value.
  * Where there is no divider (ARMv6-M, ARMv8-M Baseline) GCC would call libgcc's 64-bit
  * __udivmoddi4 (about 360 instructions on a Cortex-M0); 32 restoring shift-subtract steps on
  * the 32-bit halves take about 240 (the remainder stays below d <= 2^31, so doubling it keeps it
@@ -166,6 +177,41 @@ static inline uint32_t kf_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem)
 #endif
     *rem = hi;
     return lo;
+#elif defined(KF_DIV_BY_DIGITS)
+    /* Two 16-bit quotient digits, each from one 32/16-bit hardware division and at most two
+     * corrections (Knuth's algorithm D as Hacker's Delight 9-3 divlu writes it): about 40
+     * instructions where libgcc's 64-bit __aeabi_uldivmod takes about 55. */
+    uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n;
+    const int32_t s = __builtin_clz(d);            /* normalise: top bit of d set */
+    uint32_t dh, dl, l1, l0, q1, q0, rhat, mid;
+    d <<= s;
+    hi = (hi << s) | ((lo >> 1) >> (31 - s));      /* (lo >> 32) would be undefined for s = 0 */
+    lo <<= s;
+    dh = d >> 16;
+    dl = d & 0xFFFFu;
+    l1 = lo >> 16;
+    l0 = lo & 0xFFFFu;
+    q1 = hi / dh;
+    rhat = hi - q1 * dh;
+    while ((q1 > 0xFFFFu) || (q1 * dl > ((rhat << 16) | l1))) {
+        q1--;
+        rhat += dh;
+        if (rhat > 0xFFFFu) {
+            break;
+        }
+    }
+    mid = (hi << 16) + l1 - q1 * d;                /* exact mod 2^32: the true value is < d */
+    q0 = mid / dh;
+    rhat = mid - q0 * dh;
+    while ((q0 > 0xFFFFu) || (q0 * dl > ((rhat << 16) | l0))) {
+        q0--;
+        rhat += dh;
+        if (rhat > 0xFFFFu) {
+            break;
+        }
+    }
+    *rem = ((mid << 16) + l0 - q0 * d) >> s;
+    return (q1 << 16) | q0;
 #else
     const uint64_t q = n / d;
     *rem = (uint32_t)(n - q * d);
@@ -241,7 +287,12 @@ static inline uint64_t kf_isqrt_floor(uint64_t n, uint64_t *rem)
         return n;
     }
     r = (g >= 4294967040.0f) ? 0xFFFFFFFFu : (uint64_t)(uint32_t)g;   /* r >= 1 */
-    r = (r + n / r) >> 1;
+    if ((n >> 32) < r) {      /* the quotient fits 32 bits: always but for n near 2^64 */
+        uint32_t unused;
+        r = (r + kf_udiv64_32(n, (uint32_t)r, &unused)) >> 1;
+    } else {
+        r = (r + n / r) >> 1;
+    }
     if (r > 0xFFFFFFFFu) {
         r = 0xFFFFFFFFu;
     }
