@@ -7,6 +7,8 @@ reference, sensor → East-North-Up, NaN where markers were lost) and ``movement
 """
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 
 from kinefuse.host.readers.recording import ReaderError, Recording, check_acc_units
@@ -58,8 +60,8 @@ def _read_excerpt(path: str) -> Recording:
     from kinefuse.host.errors import KinefuseError
     try:
         tr = load_trial(path)
-    except KinefuseError as exc:  # already "<path>: <problem>"
-        raise ReaderError(path, str(exc).removeprefix(f"{path}: ")) from None
+    except KinefuseError as exc:  # "<path as load_trial prints it>: <problem>"
+        raise ReaderError(path, str(exc).removeprefix(f"{Path(path)}: ")) from None
     check_acc_units(path, tr.acc, "m/s^2")
     rec = Recording(t=tr.t, acc=tr.acc, gyr=tr.gyr, mag=tr.mag, fs=tr.rate_hz, source=path, fmt=FORMAT,
                     metadata={"frame": "ENU reference (opt_quat)", "licence": "CC BY 4.0, BROAD",
