@@ -136,6 +136,25 @@ static inline int32_t kf_lsh_sat(int64_t v, int32_t k, int32_t lo, int32_t hi)
     return (int32_t)(v * ((int64_t)1 << k));
 }
 
+#ifdef KF_DIV_BY_DIGITS
+/* floor((u * 2^16 + next) / d) for a normalised d (top bit set), u < d and next < 2^16: one
+ * 32/16-bit hardware division by d's top half, then at most two corrections. */
+static inline __attribute__((always_inline)) uint32_t kf_div_digit16(uint32_t u, uint32_t next,
+                                                                     uint32_t d)
+{
+    const uint32_t dh = d >> 16, dl = d & 0xFFFFu;
+    uint32_t q = u / dh, rhat = u - q * dh;
+    while ((q > 0xFFFFu) || (q * dl > ((rhat << 16) | next))) {
+        q--;
+        rhat += dh;
+        if (rhat > 0xFFFFu) {      /* rhat * 2^16 >= 2^32 > q * dl: no further correction */
+            break;
+        }
+    }
+    return q;
+}
+#endif
+
 /* floor(n / d) and the remainder, for 0 < d <= 2^31 and n < d * 2^32 (the quotient fits 32 bits);
  * where there is long multiplication (every path but the shift-subtract loop) d may be any
  * nonzero 32-bit value.
@@ -178,39 +197,17 @@ static inline uint32_t kf_udiv64_32(uint64_t n, uint32_t d, uint32_t *rem)
     *rem = hi;
     return lo;
 #elif defined(KF_DIV_BY_DIGITS)
-    /* Two 16-bit quotient digits, each from one 32/16-bit hardware division and at most two
-     * corrections (Knuth's algorithm D as Hacker's Delight 9-3 divlu writes it): about 40
-     * instructions where libgcc's 64-bit __aeabi_uldivmod takes about 55. */
-    uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n;
+    /* Two 16-bit quotient digits (Knuth's algorithm D as Hacker's Delight 9-3 divlu writes it):
+     * about 40 instructions where libgcc's 64-bit __aeabi_uldivmod takes about 55. */
+    uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n, q1, q0, mid;
     const int32_t s = __builtin_clz(d);            /* normalise: top bit of d set */
-    uint32_t dh, dl, l1, l0, q1, q0, rhat, mid;
     d <<= s;
     hi = (hi << s) | ((lo >> 1) >> (31 - s));      /* (lo >> 32) would be undefined for s = 0 */
     lo <<= s;
-    dh = d >> 16;
-    dl = d & 0xFFFFu;
-    l1 = lo >> 16;
-    l0 = lo & 0xFFFFu;
-    q1 = hi / dh;
-    rhat = hi - q1 * dh;
-    while ((q1 > 0xFFFFu) || (q1 * dl > ((rhat << 16) | l1))) {
-        q1--;
-        rhat += dh;
-        if (rhat > 0xFFFFu) {
-            break;
-        }
-    }
-    mid = (hi << 16) + l1 - q1 * d;                /* exact mod 2^32: the true value is < d */
-    q0 = mid / dh;
-    rhat = mid - q0 * dh;
-    while ((q0 > 0xFFFFu) || (q0 * dl > ((rhat << 16) | l0))) {
-        q0--;
-        rhat += dh;
-        if (rhat > 0xFFFFu) {
-            break;
-        }
-    }
-    *rem = ((mid << 16) + l0 - q0 * d) >> s;
+    q1 = kf_div_digit16(hi, lo >> 16, d);
+    mid = (hi << 16) + (lo >> 16) - q1 * d;        /* exact mod 2^32: the true value is < d */
+    q0 = kf_div_digit16(mid, lo & 0xFFFFu, d);
+    *rem = ((mid << 16) + (lo & 0xFFFFu) - q0 * d) >> s;
     return (q1 << 16) | q0;
 #else
     const uint64_t q = n / d;
