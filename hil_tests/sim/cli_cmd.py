@@ -3,7 +3,7 @@
   kinefuse sim list [--json]
   kinefuse sim show NAME                      (the scenario as JSON: edit it, run the file)
   kinefuse sim run NAME|FILE.json [--seed N] [--preset P] [--rate HZ] [--mag-rate HZ]
-                   [--duration S] [--out PATH.npz|.mat|.bin] [--json]
+                   [--duration S] [--out PATH.npz|.mat|.bin [--force]] [--json]
 
 ``--out`` writes one file per sensor (``PATH`` for a single sensor, ``stem_<sensor>.ext``
 otherwise): ``.npz`` everything (``Recording.load``), ``.mat`` the BROAD layout plus t and
@@ -20,6 +20,7 @@ import numpy as np
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.console import print_table
 from kinefuse.host import argtypes
+from kinefuse.host.outputs import add_force_arg, check_new_file
 
 
 def register(subparsers) -> None:
@@ -41,6 +42,7 @@ def register(subparsers) -> None:
     rn.add_argument("--duration", type=float, default=None, help="duration, s (default: the motion's)")
     rn.add_argument("--out", default=None, help="output file (.npz, .mat or .bin)")
     rn.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    add_force_arg(rn, "existing output files")
     rn.set_defaults(func=_run)
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
 
@@ -104,12 +106,15 @@ def _run(args) -> int:
     with err.status(f"simulating {sc.name} …", spinner="dots") if sys.stderr.isatty() else _Null():
         recs = run(sc, **changes)
     summary = {"scenario": sc.name, "seed": int(changes.get("seed", sc.seed)), "sensors": {}}
+    # the file names follow the rig's sensor units, known once the motion is built: every one is
+    # checked before the first is written
+    paths = {name: check_new_file(_out_path(args.out, name, len(recs)), args.force)
+             for name in recs} if args.out else {}
     for name, r in recs.items():
         s = _summary(r)
-        if args.out:
-            path = _out_path(args.out, name, len(recs))
-            _write(r, path)
-            s["file"] = str(path)
+        if name in paths:
+            _write(r, paths[name])
+            s["file"] = str(paths[name])
         summary["sensors"][name] = s
     if args.json:
         print(json.dumps(summary))

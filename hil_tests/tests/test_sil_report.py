@@ -62,3 +62,19 @@ def test_sil_report_bad_arguments(tmp_path, capsys, argv, msg):
     rc = main(["sil", "report", "--no-qemu", "--out", str(tmp_path)] + argv)
     err = capsys.readouterr().err
     assert rc == 2 and msg in err and "Traceback" not in err
+
+
+def test_sil_report_keeps_an_earlier_report_unless_forced(tmp_path, capsys):
+    (tmp_path / "sil_report.md").write_text("an earlier report")
+    argv = ["sil", "report", "--filters", "madgwick", "--scenarios", "slow_rotation",
+            "--seconds", "0.5", "--broad", "none", "--no-qemu", "--out", str(tmp_path)]
+    rc = main(argv)
+    err = capsys.readouterr().err
+    assert rc == 2 and "already holds sil_report.md from an earlier run (use --force" in err
+    assert (tmp_path / "sil_report.md").read_text() == "an earlier report"
+    assert not (tmp_path / "sil_report.json").exists()        # refused before any work
+    assert main(argv + ["--force"]) == 0
+    assert (tmp_path / "sil_report.md").read_text().startswith("# kinefuse SIL/PIL report")
+    (tmp_path / "file").write_text("x")
+    assert main(argv[:-1] + [str(tmp_path / "file")]) == 2
+    assert "is a file, not a folder" in capsys.readouterr().err

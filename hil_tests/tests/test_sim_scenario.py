@@ -157,6 +157,15 @@ def test_cli_list_show_run(tmp_path, capsys):
         _cli(["sim", "run", "no_such_scenario"], capsys)
     with pytest.raises(KinefuseError, match=".npz, .mat or .bin"):
         _cli(["sim", "run", "rest", "--out", str(tmp_path / "r.csv")], capsys)
+    # an earlier file is kept: every sensor's file is checked before the first is written
+    (tmp_path / "h_distal.npz").write_bytes(b"earlier")
+    before = (tmp_path / "h_proximal.npz").stat().st_mtime_ns
+    with pytest.raises(KinefuseError, match="h_proximal.npz exists \\(use --force"):
+        _cli(["sim", "run", str(spec), "--out", str(tmp_path / "h.npz")], capsys)
+    assert (tmp_path / "h_distal.npz").read_bytes() == b"earlier"
+    assert (tmp_path / "h_proximal.npz").stat().st_mtime_ns == before
+    code, out = _cli(["sim", "run", str(spec), "--out", str(tmp_path / "h.npz"), "--force"], capsys)
+    assert code == 0 and sim.Recording.load(str(tmp_path / "h_distal.npz")).gyr.shape[1] == 3
 
 
 @settings(max_examples=40, deadline=None)

@@ -24,7 +24,8 @@ def register(sub) -> None:
                     "installed, VQF and x-io Fusion on the BROAD excerpt bundled with kinefuse; "
                     "print their accuracy against the optical reference and write a plot.")
     p.add_argument("--out", default="kinefuse-demo", metavar="DIR",
-                   help="folder for the plot and the JSON results (default: ./kinefuse-demo)")
+                   help="folder for the plot and the JSON results, rewritten on every run "
+                        "(default: ./kinefuse-demo)")
     p.add_argument("--budget", type=float, default=40.0, metavar="S",
                    help="start no new estimator after this many seconds; started ones finish "
                         "(default: 40)")

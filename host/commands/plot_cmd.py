@@ -7,6 +7,7 @@ from pathlib import Path
 from kinefuse.host import broad
 from kinefuse.host.bench import accuracy
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.outputs import add_force_arg, check_new_file
 
 
 def register(sub) -> None:
@@ -29,6 +30,7 @@ def register(sub) -> None:
                         "<trial>_<name>.png)")
     p.add_argument("--start", type=float, metavar="S", help="plot from this time (s)")
     p.add_argument("--end", type=float, metavar="S", help="plot up to this time (s)")
+    add_force_arg(p, "the PNG")
     p.set_defaults(func=run)
 
 
@@ -58,7 +60,8 @@ def run(args) -> int:
     if name == "all":
         raise KinefuseError("plot takes one filter, not 'all'")
     spec = accuracy.resolve(name, args.impl, params, impl_given=True)[0]
-    trial = broad.load_trial(resolve_trial(args.input))
+    trial_file = resolve_trial(args.input)
+    trial = broad.load_trial(trial_file)
     window = None
     if args.start is not None or args.end is not None:
         start = 0.0 if args.start is None else args.start
@@ -72,6 +75,7 @@ def run(args) -> int:
     out = Path(args.out) if args.out else Path(f"{trial.name}_{safe}.png")
     if out.suffix.lower() != ".png":
         raise KinefuseError(f"--out {out}: the plot is written as PNG, name it *.png")
+    check_new_file(out, args.force, inputs=[trial_file])
     from rich.console import Console
 
     err = Console(stderr=True)

@@ -8,6 +8,10 @@ from pathlib import Path
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host import argtypes
+from kinefuse.host.outputs import add_force_arg, check_output_dir
+
+# what a report writes into --out (report.write_markdown, report.write_png, the full JSON)
+REPORT_FILES = ("sil_report.md", "sil_report.png", "sil_report.json")
 
 
 def register(subparsers) -> None:
@@ -40,6 +44,7 @@ def register(subparsers) -> None:
     r.add_argument("--cost", default=None, metavar="JSON",
                    help="include a cost table from `kinefuse bench cost --json` output")
     r.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    add_force_arg(r, "an earlier report in --out")
     r.set_defaults(func=run_report)
     p.set_defaults(func=lambda args: (p.print_help(), 2)[1])
 
@@ -68,7 +73,7 @@ def run_report(args: argparse.Namespace) -> int:
     names = ([s.strip() for s in args.scenarios.split(",")] if args.scenarios
              else list(scenarios.CI_SCENARIOS if args.ci else scenarios.FULL_SCENARIOS))
     seconds = args.seconds if args.seconds is not None else (scenarios.CI_SECONDS if args.ci else None)
-    out = Path(args.out)
+    out = check_output_dir(args.out, args.force, REPORT_FILES)
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
@@ -100,7 +105,7 @@ def run_report(args: argparse.Namespace) -> int:
     rep.cost = cost
     png = report.write_png(rep, out)
     md = report.write_markdown(rep, out, png.name if png else None)
-    (out / "sil_report.json").write_text(json.dumps(rep.as_dict(), default=float))
+    (out / REPORT_FILES[2]).write_text(json.dumps(rep.as_dict(), default=float))
     if args.json:
         print(json.dumps({"markdown": str(md), "png": str(png) if png else None,
                           "all_bitexact": rep.all_bitexact, "seconds": rep.seconds,

@@ -79,6 +79,19 @@ def test_plot_file_and_name_lookup(kf, tmp_path, monkeypatch):
     assert "<trial>_<filter>_<impl>.png" in " ".join(out.split())
 
 
+def test_plot_keeps_an_earlier_png_unless_forced(kf, tmp_path, monkeypatch):
+    monkeypatch.setattr(broad, "shared_broad_dir", lambda: None)
+    out_png = tmp_path / "p.png"
+    out_png.write_bytes(b"an earlier plot")
+    argv = ("plot", "--input", "24", "--filter", "tilted", "--out", str(out_png))
+    code, out, err = kf(*argv)
+    assert code == 2 and "exists (use --force" in err and err.count("\n") == 1
+    assert out_png.read_bytes() == b"an earlier plot"       # refused before any work
+    code, out, err = kf(*argv, "--force")
+    assert code == 0, err
+    assert out_png.read_bytes()[:8] == PNG_MAGIC
+
+
 @pytest.mark.parametrize("argv, message", [
     (["--input", "nosuchtrial"], "no such file, and no trial of that name"),
     (["--input", "/no/such/file.mat"], "/no/such/file.mat: no such file"),
