@@ -52,6 +52,7 @@ def run(args) -> int:
                             f"{', '.join(angle_series.angle_filter_names())}")
     if args.fs is not None:
         raise KinefuseError("--fs applies to the seed-004 Arduino CSV only (angle smoothers)")
+    _point_recordings_to_replay(args)
     trial = load_trial(args.input)
     res = runner.run_filter(name, args.impl, trial, prm, args.preset)
     n = len(res.q)
@@ -61,6 +62,28 @@ def run(args) -> int:
                                f"input {args.input}", status=args.status, frame=args.frame)
     print(f"wrote {n} rows to {args.out} ({name}, {args.impl})", file=sys.stderr)
     return 0
+
+
+def _point_recordings_to_replay(args) -> None:
+    """`run` reads BROAD trials; a unit recording or a sensor vendor's CSV is `replay`'s input."""
+    from pathlib import Path
+    from kinefuse.host import readers
+    from kinefuse.host.readers import broad as broad_reader
+    path = Path(args.input)
+    if not path.is_file() or path.suffix.lower() in (".mat", ".npz"):
+        return                      # load_trial names the problem
+    try:
+        fmt = readers.detect_format(str(path))
+    except readers.ReaderError:
+        return
+    what = {"kfr": "a kinefuse unit recording (.kfr)", "xsens-dot": "an Xsens DOT export",
+            "matrix": "a MATRIX export", "metabase": "a MetaBase export",
+            "kinefuse-csv": "a kinefuse CSV recording"}
+    if fmt != broad_reader.FORMAT:
+        raise KinefuseError(f"{path} is {what.get(fmt, 'a ' + fmt + ' recording')}; run takes a "
+                            f"BROAD trial: use "
+                            f"kinefuse replay {path} --out {args.out}"
+                            + (f" --filter {args.filter}" if args.filter else ""))
 
 
 def _run_angle(name: str, args, prm) -> int:

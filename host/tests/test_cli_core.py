@@ -50,6 +50,20 @@ def test_run_writes_one_row_per_sample(short_trial, tmp_path):
     assert np.allclose(np.linalg.norm(data[:, 1:], axis=1), 1.0, atol=1e-3)
 
 
+def test_run_points_a_unit_recording_to_replay(tmp_path):
+    """`run` takes BROAD trials; a .kfr or a vendor CSV got "unsupported trial format '.kfr'"."""
+    rec = tmp_path / "walk.kfr"
+    rec.write_bytes(b"\x00" * 64)
+    dot = tmp_path / "dot.csv"
+    dot.write_text("PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z\n")
+    for path, what in ((rec, "a kinefuse unit recording (.kfr)"), (dot, "an Xsens DOT export")):
+        r = kf("run", "--filter", "vac", "--input", str(path), "--out", str(tmp_path / "o.csv"))
+        assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+        assert f"{path} is {what}; run takes a BROAD trial: use kinefuse replay {path} --out " \
+               f"{tmp_path / 'o.csv'} --filter vac" in r.stderr
+    assert not (tmp_path / "o.csv").exists()
+
+
 @pytest.mark.parametrize("args,needle", [
     (["run", "--filter", "nope", "--input", "x.mat", "--out", "o.csv"], "unknown filter"),
     (["run", "--filter", "madgwick", "--input", "/does/not/exist.mat", "--out", "o.csv"], "exist"),
