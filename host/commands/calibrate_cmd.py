@@ -72,8 +72,9 @@ def register(subparsers) -> None:
 
     m = sub.add_parser("mag", help="magnetometer hard/soft iron (ellipsoid fit)")
     common(m, True)
-    m.add_argument("--model", choices=["full", "hard"], default="full",
-                   help="full: hard + soft iron (default); hard: offset only")
+    m.add_argument("--model", choices=["auto", "full", "hard"], default="auto",
+                   help="full: hard + soft iron; hard: offset only; auto (default): full when "
+                        "the readings visit at least 60%% of the direction sphere, else hard")
     m.add_argument("--field-norm", type=float, help="local field magnitude (µT) to scale to")
     m.add_argument("--gate", type=float, metavar="UT",
                    help="seed-001 gating: report the samples whose calibrated |m| leaves ±UT of the "
@@ -291,7 +292,8 @@ def run_mag(args) -> int:
           n_samples=cal.n_samples, residual_rms=cal.residual_rms,
           norm_std_before=cal.norm_std_before, norm_std_after=cal.norm_std_after,
           spread_reduction=cal.spread_reduction, coverage=cal.coverage)
-    text = [f"magnetometer calibration ({cal.model}, {cal.n_samples} samples)",
+    chosen = f"{cal.model}, chosen by --model auto" if args.model == "auto" else cal.model
+    text = [f"magnetometer calibration ({chosen}, {cal.n_samples} samples)",
             f"offset b = {', '.join(f'{v:.3f}' for v in cal.b)} µT",
             "W =", *("  " + "  ".join(f"{v:9.5f}" for v in row) for row in cal.W),
             f"|m| spread: {cal.norm_std_before:.3f} µT ({100 * cal.rel_spread_before:.2f} %) before, "

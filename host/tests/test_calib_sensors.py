@@ -125,6 +125,36 @@ def test_magnetometer_poor_coverage_warns_and_planar_refuses():
         mag.calibrate(planar.mag)
 
 
+def _cap_readings(half_angle_deg=None, band_deg=None, n=1500, seed=3, field=22.6, noise=0.2):
+    """Raw readings (µT) of field directions in a cap about sensor +z (the unit never turned
+    upside down) or in a band about the horizon, through HARD and SOFT (raw = SOFT⁻¹ u + HARD)."""
+    rng = np.random.default_rng(seed)
+    v = rng.normal(size=(40 * n, 3))
+    v /= np.linalg.norm(v, axis=1, keepdims=True)
+    if half_angle_deg is not None:
+        v = v[np.degrees(np.arccos(v[:, 2])) <= half_angle_deg]
+    else:
+        v = v[np.abs(np.degrees(np.arcsin(v[:, 2]))) <= band_deg]
+    u = v[:n] * field
+    return u @ np.linalg.inv(SOFT).T + HARD + rng.normal(scale=noise, size=u.shape)
+
+
+def test_magnetometer_one_sided_coverage_fits_the_offset_only():
+    """A unit turned only within 60° of upright: the ellipsoid fit ran away (offsets of
+    thousands of µT, written with two warnings).  auto fits the offset only and says why; an
+    explicit full model is refused; readings round the horizon still get hard + soft iron."""
+    raw = _cap_readings(half_angle_deg=60)
+    cal = mag.calibrate(raw, field_norm=22.6)
+    assert cal.model == "hard" and np.linalg.norm(cal.b - HARD) < 5.0, cal.b
+    assert any(w.startswith("soft iron not fitted: the readings visit") for w in cal.warnings)
+    with pytest.raises(KinefuseError, match="do not determine hard and soft iron.*--model hard"):
+        mag.calibrate(raw, model="full", field_norm=22.6)
+    assert mag.calibrate(raw, model="hard", field_norm=22.6).model == "hard"
+    band = mag.calibrate(_cap_readings(band_deg=45), field_norm=22.6)
+    assert band.model == "full" and np.linalg.norm(band.b - HARD) < 0.5 and not band.warnings
+    np.testing.assert_allclose(band.W, SOFT, atol=0.02)
+
+
 @pytest.mark.parametrize("model", ["full", "hard"])
 def test_magnetometer_still_unit_refuses(model):
     """A unit that was not turned: the readings are noise about one vector, whose directions
