@@ -221,13 +221,23 @@ def _c_state_init(lo: Lowered, var: Var) -> list[str]:
 
 
 def _c_param_check(lo: Lowered, p, i: int) -> str:
-    if lo.system == "f32":
-        a, b = render_c(F32(p.lo)), render_c(F32(p.hi))
+    """A parameter outside its range, or a switch that is not one of its choices (mode = 0.5
+    would be read as 9D by ``p.mode > 0.5`` on one side and refused on the other), sets the
+    status; NaN fails every comparison."""
+    if p.choices:
+        if lo.system == "f32":
+            vals = [render_c(F32(c)) for c in p.choices]
+        else:
+            vals = [str(int(v)) for v in lo.sys.to_model(p.as_var(), list(p.choices), "param")]
+        ok = " || ".join(f"(p->{p.name} == {v})" for v in vals)
     else:
-        fm = lo.sys.var_fmt[("param", p.name)]
-        a, b = str(fm.lo), str(fm.hi)
-    return (f"    if (!((p->{p.name} >= {a}) && (p->{p.name} <= {b}))) {{\n"
-            f"        status = -{i + 1};\n    }}")
+        if lo.system == "f32":
+            a, b = render_c(F32(p.lo)), render_c(F32(p.hi))
+        else:
+            fm = lo.sys.var_fmt[("param", p.name)]
+            a, b = str(fm.lo), str(fm.hi)
+        ok = f"(p->{p.name} >= {a}) && (p->{p.name} <= {b})"
+    return f"    if (!({ok})) {{\n        status = -{i + 1};\n    }}"
 
 
 def c_source(lo: Lowered, source_file: str) -> str:

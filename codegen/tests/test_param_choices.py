@@ -96,3 +96,34 @@ def test_choices_must_be_the_whole_numbers_of_the_range():
         Param("m", 0.5, "", 0.0, 1.0, "", choices=(0.0, 1.0))      # default not a choice
     with pytest.raises(ValueError):
         Param.choice("m", 0.0, 2, "", labels=("a",))                 # one label for two choices
+
+
+@pytest.mark.parametrize("system", ["f32", "q"])
+@pytest.mark.parametrize("name, param", sorted(CHOICES))
+def test_generated_init_takes_only_the_choices(name, param, system):
+    """The C API's own guard: <f>_init refused a switch only outside [lo, hi], so a caller that
+    skipped the host and unit checks could set mode = 0.5 (read as 9D by p.mode > 0.5)."""
+    from kinefuse.codegen.build import build_filter
+    from kinefuse.codegen.generate import lowered
+
+    est = estimators.get(name)
+    lo = lowered(name, system)
+    P = f"{name.replace('-', '_')}_{system}"
+    ffi, lib = build_filter(name, system)
+    index = [p.name for p in est.params].index(param)
+
+    def status(value):
+        prm = ffi.new(f"{P}_params *")
+        getattr(lib, f"{P}_default_params")(prm)
+        if system == "f32":
+            setattr(prm, param, value)
+        else:
+            setattr(prm, param, int(lo.sys.to_model(est.param(param).as_var(), [value], "param")[0]))
+        st = ffi.new(f"{P}_state *")
+        return getattr(lib, f"{P}_init")(st, prm)
+
+    for c in CHOICES[name, param]:
+        assert status(c) == 0
+    choices = CHOICES[name, param]
+    for bad in (0.5, choices[-1] - 0.25, 0.125):
+        assert status(bad) == -(index + 1), bad

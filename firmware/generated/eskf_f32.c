@@ -94,7 +94,7 @@ int eskf_f32_init(eskf_f32_state *s, const eskf_f32_params *p)
     if (!((p->gyr_noise >= 0x1.24d152p-16f) && (p->gyr_noise <= 0x1.657184p-3f))) {
         status = -2;
     }
-    if (!((p->mode >= 0.0f) && (p->mode <= 0x1p+0f))) {
+    if (!((p->mode == 0.0f) || (p->mode == 0x1p+0f))) {
         status = -1;
     }
     if (status != 0) {

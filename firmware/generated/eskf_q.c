@@ -88,7 +88,7 @@ int eskf_q_init(eskf_q_state *s, const eskf_q_params *p)
     if (!((p->gyr_noise >= 149923) && (p->gyr_noise <= 1499226412))) {
         status = -2;
     }
-    if (!((p->mode >= 0) && (p->mode <= 1073741824))) {
+    if (!((p->mode == 0) || (p->mode == 1073741824))) {
         status = -1;
     }
     if (status != 0) {

@@ -146,7 +146,7 @@ int flagship_f32_init(flagship_f32_state *s, const flagship_f32_params *p)
     if (!((p->tau_acc >= 0x1p-1f) && (p->tau_acc <= 0x1.4p+4f))) {
         status = -2;
     }
-    if (!((p->mode >= 0.0f) && (p->mode <= 0x1p+0f))) {
+    if (!((p->mode == 0.0f) || (p->mode == 0x1p+0f))) {
         status = -1;
     }
     if (status != 0) {

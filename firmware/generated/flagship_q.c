@@ -140,7 +140,7 @@ int flagship_q_init(flagship_q_state *s, const flagship_q_params *p)
     if (!((p->tau_acc >= 33554432) && (p->tau_acc <= 1342177280))) {
         status = -2;
     }
-    if (!((p->mode >= 0) && (p->mode <= 1073741824))) {
+    if (!((p->mode == 0) || (p->mode == 1073741824))) {
         status = -1;
     }
     if (status != 0) {

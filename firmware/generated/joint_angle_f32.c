@@ -67,10 +67,10 @@ int joint_angle_f32_init(joint_angle_f32_state *s, const joint_angle_f32_params 
     if (!((p->prox_w >= -0x1p+0f) && (p->prox_w <= 0x1p+0f))) {
         status = -3;
     }
-    if (!((p->mirror >= 0.0f) && (p->mirror <= 0x1p+0f))) {
+    if (!((p->mirror == 0.0f) || (p->mirror == 0x1p+0f))) {
         status = -2;
     }
-    if (!((p->sequence >= 0.0f) && (p->sequence <= 0x1p+1f))) {
+    if (!((p->sequence == 0.0f) || (p->sequence == 0x1p+0f) || (p->sequence == 0x1p+1f))) {
         status = -1;
     }
     if (status != 0) {

@@ -61,10 +61,10 @@ int joint_angle_q_init(joint_angle_q_state *s, const joint_angle_q_params *p)
     if (!((p->prox_w >= -1073741824) && (p->prox_w <= 1073741824))) {
         status = -3;
     }
-    if (!((p->mirror >= 0) && (p->mirror <= 1073741824))) {
+    if (!((p->mirror == 0) || (p->mirror == 1073741824))) {
         status = -2;
     }
-    if (!((p->sequence >= 0) && (p->sequence <= 1073741824))) {
+    if (!((p->sequence == 0) || (p->sequence == 536870912) || (p->sequence == 1073741824))) {
         status = -1;
     }
     if (status != 0) {

@@ -42,7 +42,7 @@ int triad_f32_init(triad_f32_state *s, const triad_f32_params *p)
     if (!((p->dip_deg >= -0x1.68p+6f) && (p->dip_deg <= 0x1.68p+6f))) {
         status = -2;
     }
-    if (!((p->primary >= 0.0f) && (p->primary <= 0x1p+0f))) {
+    if (!((p->primary == 0.0f) || (p->primary == 0x1p+0f))) {
         status = -1;
     }
     if (status != 0) {

@@ -36,7 +36,7 @@ int triad_q_init(triad_q_state *s, const triad_q_params *p)
     if (!((p->dip_deg >= -1509949440) && (p->dip_deg <= 1509949440))) {
         status = -2;
     }
-    if (!((p->primary >= 0) && (p->primary <= 1073741824))) {
+    if (!((p->primary == 0) || (p->primary == 1073741824))) {
         status = -1;
     }
     if (status != 0) {

@@ -52,7 +52,7 @@ int vac_f32_init(vac_f32_state *s, const vac_f32_params *p)
     if (!((p->t1 >= 0.0f) && (p->t1 <= 0x1p+0f))) {
         status = -4;
     }
-    if (!((p->adaptive >= 0.0f) && (p->adaptive <= 0x1p+0f))) {
+    if (!((p->adaptive == 0.0f) || (p->adaptive == 0x1p+0f))) {
         status = -3;
     }
     if (!((p->gain_mag >= 0.0f) && (p->gain_mag <= 0x1p+0f))) {

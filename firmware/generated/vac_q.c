@@ -46,7 +46,7 @@ int vac_q_init(vac_q_state *s, const vac_q_params *p)
     if (!((p->t1 >= 0) && (p->t1 <= 1073741824))) {
         status = -4;
     }
-    if (!((p->adaptive >= 0) && (p->adaptive <= 1073741824))) {
+    if (!((p->adaptive == 0) || (p->adaptive == 1073741824))) {
         status = -3;
     }
     if (!((p->gain_mag >= 0) && (p->gain_mag <= 1073741824))) {
