@@ -17,10 +17,12 @@ it is ``{"R": [[…]…], "bias": […] or null, "det": …, "residual_rms": …
 from __future__ import annotations
 
 import json
+import math
 import sys
 
 import numpy as np
 
+from kinefuse.host import argtypes
 from kinefuse.host.calib import static     # light (numpy); fitting modules load on use
 from kinefuse.host.errors import KinefuseError
 
@@ -61,7 +63,8 @@ def register(subparsers) -> None:
     a.add_argument("--targets", metavar="TARGETS.csv", help="expected gravity vector per pose")
     a.add_argument("--method", choices=["ls", "procrustes", "full"],
                    help="default: ls with targets, full (|acc| = g) without")
-    a.add_argument("--g", type=float, default=G_STANDARD, help="gravity (m/s²) for |acc| = g")
+    a.add_argument("--g", type=argtypes.real(0.0, math.inf, lo_open=True), default=G_STANDARD,
+                   help="gravity (m/s²) for |acc| = g")
     a.set_defaults(func=run_accel)
 
     gy = sub.add_parser("gyro", help="gyroscope bias from static windows (+ scale from known rates)")

@@ -88,6 +88,18 @@ def test_accel_all_zero_poses_one_line_no_warnings(run, tmp_path, method):
             assert err.count("\n") == 1 and "zero" in err and "Warning" not in err, err
 
 
+@pytest.mark.parametrize("g, text", [("nan", "nan is not in (0, inf]"),      # was an internal error (exit 3)
+                                     ("-9.81", "-9.81 is not in (0, inf]"),  # was 'poorly excited pose set'
+                                     ("0", "0 is not in (0, inf]")])
+def test_accel_bad_gravity_is_a_usage_error(run, capsys, tmp_path, g, text):
+    (tmp_path / "p.csv").write_text(RAW)
+    with pytest.raises(SystemExit) as exc:      # an argparse usage error, before any work
+        run("calibrate", "accel", "--poses", tmp_path / "p.csv", "--method", "full", f"--g={g}", "--json")
+    out, err = capsys.readouterr()
+    assert exc.value.code == 2 and out == "" and err.count("\n") == 1, (out, err)
+    assert err.startswith("kinefuse: error: argument --g:") and text in err, err
+
+
 def _six_pose_recording(path, rng):
     """Six still poses (±x, ±y, ±z up) joined by 2 s rotations, with accelerometer errors."""
     poses = [Q.identity(), Q.elementary("X", np.pi), Q.elementary("X", np.pi / 2),
