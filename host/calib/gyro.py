@@ -77,11 +77,20 @@ def fit_scale(measured_means, known_rates, *, rest_means=None) -> GyroCalibratio
         known = np.vstack([known, np.zeros_like(rest)])
     if len(meas) < 4:
         raise KinefuseError(f"gyroscope scale fit needs ≥ 4 windows (rates + rest), got {len(meas)}")
+    if not (np.all(np.isfinite(meas)) and np.all(np.isfinite(known))):
+        raise KinefuseError("gyroscope scale fit: the rate tables contain non-finite values")
     D = np.column_stack([meas, np.ones(len(meas))])
     sv = np.linalg.svd(np.column_stack([known, np.ones(len(known))]), compute_uv=False)
     if sv[-1] / sv[0] < 1e-3:
         raise KinefuseError("known rates do not excite all three axes (they must affinely span "
                             "3-D: rotate about each axis, and include rest or both directions)")
+    sv = np.linalg.svd(D, compute_uv=False)
+    if sv[-1] / sv[0] < 1e-3:
+        # the known rates span 3-D but the gyroscope did not see them: the fit would divide
+        # noise by noise (a unit that lay still gave scale factors of several hundred)
+        raise KinefuseError("the measured rates in the windows do not span 3-D although the known "
+                            "ones do: the gyroscope did not turn as stated (are t_start, t_end the "
+                            "recording's times in seconds?)")
     P, *_ = np.linalg.lstsq(D, known, rcond=None)
     M = P[:3].T
     b = -np.linalg.solve(M, P[3])
@@ -103,6 +112,11 @@ def scale_from_recording(t, gyr, acc, rate_windows, config: S.StaticConfig = S.S
     rw = np.asarray(rate_windows, dtype=float)
     if rw.ndim != 2 or rw.shape[1] != 5:
         raise KinefuseError("rate windows must have 5 columns: t_start, t_end, wx, wy, wz")
+    for k, (t0, t1, *w) in enumerate(rw):
+        if not np.all(np.isfinite(rw[k])):
+            raise KinefuseError(f"rate window {k + 1}: t_start, t_end, wx, wy, wz must be finite numbers")
+        if not t1 > t0:
+            raise KinefuseError(f"rate window {k + 1}: t_end {t1:g} s is not after t_start {t0:g} s")
     meas, known = [], []
     for k, (t0, t1, *w) in enumerate(rw):
         sel = (t >= t0) & (t <= t1)

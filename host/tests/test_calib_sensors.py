@@ -79,6 +79,24 @@ def test_gyro_scale_from_recording_rate_windows():
     np.testing.assert_allclose(cal.b, b, atol=2e-3)
 
 
+def test_gyro_rate_windows_the_gyroscope_did_not_see_are_refused():
+    """Known rates in windows where the unit lay still (wrong times, or not on the turntable)
+    were fitted exactly (4 rows, 4 unknowns) to scale factors of several hundred and written with
+    residual_rms 0; a NaN or reversed window was an internal error (LinAlgError)."""
+    fs = 100.0
+    t = np.arange(0, 12, 1 / fs)
+    rng = np.random.default_rng(2)
+    gyr = np.array([0.01, 0.0, -0.01]) + 0.005 * rng.standard_normal((len(t), 3))
+    acc = np.tile([0, 0, 9.81], (len(t), 1)) + 0.02 * rng.standard_normal((len(t), 3))
+    rw = [[0, 2, 0, 0, 1.0], [2, 4, 0, 1.0, 0], [4, 6, 1.0, 0, 0], [6, 8, 0, 0, -1.0]]
+    with pytest.raises(KinefuseError, match="did not turn as stated"):
+        gyro.scale_from_recording(t, gyr, acc, rw)
+    with pytest.raises(KinefuseError, match="rate window 1: .* finite"):
+        gyro.scale_from_recording(t, gyr, acc, [[0, 2, np.nan, 0, 1.0]] + rw[1:])
+    with pytest.raises(KinefuseError, match="rate window 2: t_end 2 s is not after t_start 4 s"):
+        gyro.scale_from_recording(t, gyr, acc, [rw[0], [4, 2, 0, 1.0, 0]] + rw[2:])
+
+
 # ----------------------------------------------------------------------------- magnetometer
 HARD = np.array([15.05, 9.45, -19.70])          # seed 001 unit DA offsets, µT
 SOFT = np.array([[1.08, 0.05, -0.03], [0.05, 0.93, 0.04], [-0.03, 0.04, 1.02]])
