@@ -35,6 +35,16 @@ class CycleSet:
     kept: list                      # indices into bounds of the kept cycles
     rejected: list = field(default_factory=list)   # [(index, rmse_deg)]
     durations_s: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    edge_dropped: int = 0           # cycles dropped at each end (drop_edge); ``bounds`` excludes them
+
+    @property
+    def n_detected(self) -> int:
+        """Cycles detected, the dropped edge cycles included."""
+        return len(self.bounds) + 2 * self.edge_dropped
+
+    def number(self, k: int) -> int:
+        """1-based number, among all detected cycles, of ``bounds[k]`` (reports name cycles so)."""
+        return self.edge_dropped + k + 1
 
     @property
     def mean(self) -> np.ndarray:
@@ -117,6 +127,7 @@ def normalise(t, angles, bounds, *, drop_edge: int = 0, max_rmse_deg: float = 10
     a = np.asarray(angles, float)
     if a.ndim == 1:
         a = a[:, None]
+    n_all = len(bounds)
     if drop_edge:
         bounds = bounds[drop_edge:len(bounds) - drop_edge]
     if not bounds:
@@ -140,4 +151,4 @@ def normalise(t, angles, bounds, *, drop_edge: int = 0, max_rmse_deg: float = 10
         rejected.append((kept[worst], float(err[worst])))
         kept.pop(worst)
     return CycleSet(bounds=list(bounds), curves=C[kept], kept=kept, rejected=rejected,
-                    durations_s=np.array(durs)[kept])
+                    durations_s=np.array(durs)[kept], edge_dropped=(n_all - len(bounds)) // 2)

@@ -440,15 +440,16 @@ def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet,
         raise KinefuseError(f"cannot create output directory {out_dir}: {exc.strerror}") from None
     p = lambda name: os.path.join(out_dir, f"{kind}_{name}")  # noqa: E731
     cols = list(res.columns)
-    # time series with the cycle index (−1 outside kept cycles)
+    # time series with the cycle number (−1 outside kept cycles); cycles are numbered among all
+    # detected ones, as the summary names the rejected ones
     cyc_idx = np.full(len(res.t), -1.0)
-    for n, k in enumerate(cs.kept):
+    for k in cs.kept:
         i0, i1 = cs.bounds[k]
-        cyc_idx[i0:i1] = n + 1
+        cyc_idx[i0:i1] = cs.number(k)
     _csv(p("timeseries.csv"), res.convention, ["t_s"] + cols + ["cycle"],
          np.column_stack([res.t, res.angles, cyc_idx]))
     pct = np.linspace(0, 100, cycles.N_POINTS)
-    rows = [np.column_stack([np.full(len(pct), n + 1), pct, c]) for n, c in enumerate(cs.curves)]
+    rows = [np.column_stack([np.full(len(pct), cs.number(k)), pct, c]) for k, c in zip(cs.kept, cs.curves)]
     _csv(p("cycles.csv"), res.convention, ["cycle", "percent"] + cols, np.vstack(rows))
     msd = np.column_stack([pct] + [x for j in range(3) for x in (cs.mean[:, j], cs.sd[:, j])])
     _csv(p("mean_sd.csv"), res.convention,
@@ -457,9 +458,10 @@ def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet,
     rom = cs.rom()
     summary = {
         "kind": kind, "title": title, "convention": res.convention, "inputs": inputs,
-        "n_cycles_detected": len(cs.bounds), "n_cycles_kept": len(cs.curves),
+        "n_cycles_detected": cs.n_detected, "n_edge_cycles_dropped": 2 * cs.edge_dropped,
+        "n_cycles_kept": len(cs.curves),
         "max_cycle_rmse_deg": float(max_cycle_rmse_deg),
-        "rejected_cycles": [{"cycle": k + 1, "rmse_deg": e} for k, e in cs.rejected],
+        "rejected_cycles": [{"cycle": cs.number(k), "rmse_deg": e} for k, e in cs.rejected],
         "cycle_duration_s": {"mean": float(cs.durations_s.mean()),
                              "sd": float(cs.durations_s.std(ddof=1)) if len(cs.durations_s) > 1 else 0.0},
         "range_of_motion_deg": {c: {"mean": float(rom["rom_mean"][j]), "sd": float(rom["rom_sd"][j]),
@@ -488,7 +490,9 @@ def _markdown(path: str, s: dict) -> None:
     L += [f"- {k}: `{v}`" for k, v in s["inputs"].items() if v]
     L += ["", "## Cycles", "",
           f"- detected: {s['n_cycles_detected']}, kept: {s['n_cycles_kept']}"
-          f" (cycles deviating > {s['max_cycle_rmse_deg']:g}° RMS from the mean flexion curve are rejected)",
+          f" (cycles deviating > {s['max_cycle_rmse_deg']:g}° RMS from the mean flexion curve are rejected)"
+          + (f"; edge cycles dropped: {s['n_edge_cycles_dropped'] // 2} at each end (--drop-edge-cycles)"
+             if s["n_edge_cycles_dropped"] else ""),
           f"- duration: {s['cycle_duration_s']['mean']:.2f} ± {s['cycle_duration_s']['sd']:.2f} s"]
     for r in s["rejected_cycles"]:
         L.append(f"- rejected cycle {r['cycle']}: {r['rmse_deg']:.1f}° RMS from the mean")

@@ -147,3 +147,29 @@ def test_bad_cycle_and_filter_options_are_refused(run, files, extra, text):
     assert code == 2 and stdout == "" and err.count("\n") == 1, (code, err)
     assert err.startswith("kinefuse: error:") and text in err, err
     assert not out.exists()
+
+
+@pytest.mark.parametrize("extra", [["--max-cycle-rmse", "1.5"],
+                                   ["--drop-edge-cycles", "1", "--max-cycle-rmse", "1"]])
+def test_cycle_numbers_agree_between_summary_and_csvs(run, files, extra):
+    """The CSVs renumbered the kept cycles 1..n while the summary named the rejected ones by their
+    detected number (kept 1 and 5 were written as 1 and 2, 'rejected cycle 2' was another cycle),
+    and --drop-edge-cycles lowered 'detected' to the cycles left after dropping, unmentioned."""
+    d, _ = files
+    out = d / f"num{len(extra)}"
+    code, stdout, err = run(*_knee(d, *extra, "--out", out, "--json"))
+    assert code == 0, err
+    s = json.loads(stdout)
+    drop = 1 if "--drop-edge-cycles" in extra else 0
+    assert s["n_cycles_detected"] == 5 and s["n_edge_cycles_dropped"] == 2 * drop
+    rejected = {r["cycle"] for r in s["rejected_cycles"]}
+    assert rejected and s["n_cycles_kept"] == 5 - 2 * drop - len(rejected)
+    ts = np.loadtxt(out / "knee_timeseries.csv", delimiter=",", comments="#", skiprows=2)
+    cyc = np.loadtxt(out / "knee_cycles.csv", delimiter=",", comments="#", skiprows=2)
+    kept = set(np.unique(ts[:, 4]).astype(int)) - {-1}
+    assert kept == set(np.unique(cyc[:, 0]).astype(int))
+    assert len(kept) == s["n_cycles_kept"] and not kept & rejected
+    assert kept | rejected == set(range(1 + drop, 6 - drop))
+    md = (out / "knee_summary.md").read_text()
+    assert f"- detected: 5, kept: {s['n_cycles_kept']}" in md
+    assert ("edge cycles dropped: 1 at each end" in md) == bool(drop)
