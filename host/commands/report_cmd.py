@@ -191,6 +191,17 @@ def _check_cycle_args(args) -> None:
                             f"degrees")
 
 
+def _check_mag_args(args, units) -> None:
+    """--field-norm and --mag-gate act on a magnetometer calibration; without one they were
+    accepted and silently ignored."""
+    if args.field_norm is not None and args.mag_cal is None:
+        raise KinefuseError("--field-norm scales the figure-eight magnetometer fit: give --mag-cal")
+    unit_mag = units is not None and all("mag" in u["sensors"] for u in units)
+    if args.mag_gate is not None and args.mag_cal is None and not unit_mag:
+        raise KinefuseError("--mag-gate gates the calibrated magnetometer: give --mag-cal (or --unit-cal "
+                            "files that both hold a mag calibration)")
+
+
 def run_knee(args) -> int:
     from kinefuse.host.calib import unitfile
     from kinefuse.host.kinematics import report
@@ -207,6 +218,7 @@ def run_knee(args) -> int:
     units = None
     if args.unit_cal:
         units = (unitfile.load(args.unit_cal[0]), unitfile.load(args.unit_cal[1]))
+    _check_mag_args(args, units)
     with _Progress(7) as prog:
         prog("reading recordings")
         seg_units = (args.thigh_unit, args.shank_unit)

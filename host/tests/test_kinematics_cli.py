@@ -102,3 +102,21 @@ def test_report_keeps_an_earlier_report_unless_forced(run, tmp_path):
     code, _, err = run("report", "elbow", "--arm", tmp_path / "arm.csv", "--forearm", tmp_path / "fore.csv",
                        "--out", tmp_path / "arm.csv")
     assert code == 2 and "is a file, not a folder" in err
+
+
+def test_mag_options_without_a_mag_calibration_are_refused(run, files):
+    """--mag-gate and --field-norm without --mag-cal were accepted and silently ignored (the
+    report ran 6-D, ungated, and did not say the option had no effect)."""
+    d, _ = files
+    base = ("report", "knee", "--thigh", d / "step-thigh.csv", "--shank", d / "step-shank.csv")
+    for extra, text in ((["--mag-gate", 0.5], "--mag-gate gates the calibrated magnetometer: give --mag-cal"),
+                        (["--field-norm", 22.6], "--field-norm scales the figure-eight magnetometer fit")):
+        code, out, err = run(*base, *extra, "--out", d / "nomag")
+        assert code == 2 and out == "" and err.count("\n") == 1, (code, out, err)
+        assert err.startswith("kinefuse: error:") and text in err, err
+        assert not (d / "nomag").exists()
+    code, out, err = run(*base, "--mag-cal", d / "fig8-thigh.csv", d / "fig8-shank.csv", "--mag-gate", 0.5,
+                         "--out", d / "gated", "--json")
+    assert code == 0, err
+    p = json.loads(out)["processing"]
+    assert 0 < p["thigh_mag_gated_fraction"] < 0.2 and 0 < p["shank_mag_gated_fraction"] < 0.2
