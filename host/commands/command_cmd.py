@@ -30,7 +30,7 @@ def register(subparsers) -> None:
     p.add_argument("--unit", type=int, metavar="SYSID", help="system id of the unit (default: first heartbeat)")
     p.add_argument("--rate", type=float, metavar="HZ", help="start: KF_RAW_SAMPLE rate (SET_MESSAGE_INTERVAL first)")
     p.add_argument("--reset-counter", action="store_true", help="start: restart sample_counter at 0")
-    p.add_argument("--heading", type=float, default=0.0, metavar="DEG",
+    p.add_argument("--heading", type=float, metavar="DEG",
                    help="tare: heading given to the current orientation, degrees (default 0)")
     add_key_args(p, "the command")
     p.add_argument("--timeout", type=float, default=3.0, metavar="S", help="wait this long for a heartbeat (default 3)")
@@ -44,8 +44,15 @@ def run(args) -> int:
     from kinefuse.host.link.session import Session
     if args.rate is not None and (args.action != "start" or not 0 < args.rate <= 10_000):
         raise KinefuseError("--rate goes with start and must be in (0, 10000] Hz")
-    if not math.isfinite(args.heading):
+    if args.reset_counter and args.action != "start":
+        raise KinefuseError("--reset-counter goes with start")
+    if args.heading is not None and args.action != "tare":
+        raise KinefuseError("--heading goes with tare")
+    heading = 0.0 if args.heading is None else args.heading
+    if not math.isfinite(heading):
         raise KinefuseError("--heading must be a finite number of degrees")
+    if not args.timeout > 0:   # NaN too: it waited no time at all and named any unit it had seen
+        raise KinefuseError("--timeout must be positive")
     key = key_from_args(args)
     conn = open_connection(args.port, parse_baud(args.baud))
     sent = []
@@ -65,7 +72,7 @@ def run(args) -> int:
         elif args.action == "stop":
             C.send_command(s, sysid, C.MAV_CMD_KF_STREAM, 0.0)
         elif args.action == "tare":
-            C.send_command(s, sysid, C.MAV_CMD_KF_HEADING_TARE, math.radians(args.heading))
+            C.send_command(s, sysid, C.MAV_CMD_KF_HEADING_TARE, math.radians(heading))
         elif args.action == "reset":
             C.send_command(s, sysid, C.MAV_CMD_KF_FILTER_RESET, 0.0)
         else:

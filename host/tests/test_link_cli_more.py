@@ -69,6 +69,8 @@ def test_commands_on_a_fake_unit(run, tmp_path):
                                              "action": "start", "unit": 1}, err
     for action in ("stop", "reset", "reboot"):
         assert run("command", "--port", "fake:", action)[0] == 0
+    assert run("command", "--port", "fake:", "tare", "--heading", "30")[0] == 0
+    assert run("command", "--port", "fake:", "start", "--reset-counter")[0] == 0
     out = tmp_path / "s.kfr"
     code, _, err = run("record", "--port", "fake:stream=0", "--out", out, "--duration", "0.4", "--start",
                        "--rate", "250", "--json")
@@ -79,6 +81,12 @@ def test_commands_on_a_fake_unit(run, tmp_path):
 @pytest.mark.parametrize("argv, text", [
     (["decode", "--show", "-3", "x.kfr"], "--show must be 0 or more"),
     (["command", "--port", "fake:", "stop", "--rate", "5"], "--rate goes with start"),
+    # accepted and ignored before: the unit got a plain stop / reset
+    (["command", "--port", "fake:", "stop", "--reset-counter"], "--reset-counter goes with start"),
+    (["command", "--port", "fake:", "reset", "--heading", "90"], "--heading goes with tare"),
+    # NaN waited for ever for a unit that does not answer (a fake one answered at once)
+    (["command", "--port", "fake:", "start", "--timeout", "nan"], "--timeout must be positive"),
+    (["command", "--port", "fake:", "start", "--timeout", "-1"], "--timeout must be positive"),
     (["live", "--port", "fake:", "--rate", "5", "--seconds", "1"], "--rate goes with --start"),
     (["signing", "--port", "fake:", "--new-key", "0" * 64], "use --clear"),
     (["signing"], "--port"),
