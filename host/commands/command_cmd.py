@@ -51,7 +51,7 @@ def run(args) -> int:
     heading = 0.0 if args.heading is None else args.heading
     if not math.isfinite(heading):
         raise KinefuseError("--heading must be a finite number of degrees")
-    if not args.timeout > 0:   # NaN too: it waited no time at all and named any unit it had seen
+    if not args.timeout > 0:   # NaN too: it waited for ever for a unit that does not answer
         raise KinefuseError("--timeout must be positive")
     key = key_from_args(args)
     conn = open_connection(args.port, parse_baud(args.baud))
