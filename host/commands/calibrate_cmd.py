@@ -196,6 +196,20 @@ def _save(args, sensor: str, M, b, **extra) -> None:
 
 
 # ----------------------------------------------------------------------------- accel
+def _check_accel_units(args, raw, targets) -> None:
+    """Poses and targets (or --g) in the same unit: a pose table in g fitted against m/s² gave
+    a scale of 9.8 without a word (and a unit file the unit refuses)."""
+    if not (np.all(np.isfinite(raw)) and (targets is None or np.all(np.isfinite(targets)))):
+        return          # accel.fit names non-finite values
+    ref = float(np.median(np.linalg.norm(targets, axis=1))) if targets is not None else args.g
+    got = float(np.median(np.linalg.norm(raw, axis=1)))
+    if ref > 0 and got > 0 and not 0.5 <= got / ref <= 2.0:
+        what = f"the targets' ({ref:.4g})" if targets is not None else f"--g {ref:g}"
+        src = args.poses or args.input
+        raise KinefuseError(f"{src}: the poses' median |acc| is {got:.4g}, {got / ref:.3g} × {what}: "
+                            f"not the same unit (g and m/s²?); give both in m/s²")
+
+
 def run_accel(args) -> int:
     from kinefuse.host.calib import accel
     _check_ranges(args)
@@ -225,6 +239,7 @@ def run_accel(args) -> int:
             raise KinefuseError(f"{args.targets}: {targets.shape[0]} targets for {raw.shape[0]} {src} "
                                 f"({raw.shape[1]} columns each)")
     method = args.method or ("ls" if targets is not None else "full")
+    _check_accel_units(args, raw, targets)
     cal = accel.fit(raw, targets, method=method, g=args.g)
     if not cal.det > 0:
         # a unit file refuses such a map, so --json refuses it too (consistently, before output)

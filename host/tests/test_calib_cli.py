@@ -100,6 +100,23 @@ def test_accel_bad_gravity_is_a_usage_error(run, capsys, tmp_path, g, text):
     assert err.startswith("kinefuse: error: argument --g:") and text in err, err
 
 
+def test_accel_poses_in_g_against_m_s2_are_refused(run, tmp_path):
+    """A pose table in g (seed 002 Annex G / 9.80665) was fitted against m/s² targets or g =
+    9.80665 to a scale of 9.8, printed and written without a word."""
+    raw = np.array([[float(v) for v in line.split(",")] for line in RAW.splitlines()[2:]]) / G
+    (tmp_path / "pg.csv").write_text("\n".join(",".join(f"{v:.6f}" for v in r) for r in raw) + "\n")
+    (tmp_path / "t.csv").write_text(TARGETS)
+    for extra, what in ((["--targets", tmp_path / "t.csv"], "the targets' (9.807)"),
+                        (["--method", "full"], "--g 9.80665")):
+        code, out, err = run("calibrate", "accel", "--poses", tmp_path / "pg.csv", *extra, "--json")
+        assert code == 2 and out == "" and err.count("\n") == 1, (code, out, err)
+        assert "median |acc| is 1.00" in err and what in err and "not the same unit" in err, err
+    # the same poses with --g 1: one unit throughout
+    code, out, err = run("calibrate", "accel", "--poses", tmp_path / "pg.csv", "--method", "full", "--g", 1,
+                         "--json")
+    assert code == 0, err
+
+
 def _six_pose_recording(path, rng):
     """Six still poses (±x, ±y, ±z up) joined by 2 s rotations, with accelerometer errors."""
     poses = [Q.identity(), Q.elementary("X", np.pi), Q.elementary("X", np.pi / 2),
