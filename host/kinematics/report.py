@@ -159,9 +159,17 @@ def sensor_orientation(rec: Recording, *, filter=None, orientation: str = "auto"
     spec = filter if filter is not None else O.default_filter_name()
     f = O.resolve_filter(spec)
     g = rec.gyr - (np.zeros(3) if gyro_bias is None else gyro_bias)
-    q = np.asarray(f(rec.t, rec.acc, g, mag), dtype=float)
+    user = not isinstance(spec, str) or ":" in spec      # the user's own function (module:function)
+    try:
+        q = np.asarray(f(rec.t, rec.acc, g, mag), dtype=float)
+    except Exception as exc:
+        if not user or isinstance(exc, KinefuseError):
+            raise
+        # the user's function failed: one line naming it, not an internal error of kinefuse
+        raise KinefuseError(f"orientation filter {spec!r} failed: {type(exc).__name__}: {exc} (it is "
+                            f"called as f(t, acc, gyr, mag) and returns N×4 quaternions)") from None
     if q.shape != (len(rec.t), 4) or not np.all(np.isfinite(q)):
-        raise KinefuseError(f"orientation filter {filter!r} returned {q.shape} values or non-finite "
+        raise KinefuseError(f"orientation filter {spec!r} returned {q.shape} values or non-finite "
                             f"numbers; expected {len(rec.t)}×4 quaternions")
     name = spec if isinstance(spec, str) else getattr(spec, "__name__", "custom")
     return Q.normalize(q), f"filter '{name}' ({'9-D' if mag is not None else '6-D'})"

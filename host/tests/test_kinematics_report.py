@@ -127,3 +127,17 @@ def test_filter_parameter_resolution():
     arm, fore, _ = _elbow_recordings()
     with pytest.raises(KinefuseError, match="returned"):
         report.elbow_from_recordings(arm, fore, filter=lambda t, a, g, m: np.zeros((3, 4)))
+
+
+def test_a_failing_user_filter_is_a_one_line_error():
+    """--filter module:function whose call raises was an internal error ('please report it');
+    it is the user's function, named in a one-line error."""
+    arm, fore, _ = _elbow_recordings()
+    with pytest.raises(KinefuseError, match=r"orientation filter 'os:getcwd' failed: TypeError: .*"
+                                            r"called as f\(t, acc, gyr, mag\)"):
+        report.elbow_from_recordings(arm, fore, filter="os:getcwd")
+
+    def broken(t, acc, gyr, mag):
+        raise ZeroDivisionError("division by zero")
+    with pytest.raises(KinefuseError, match="failed: ZeroDivisionError: division by zero"):
+        report.elbow_from_recordings(arm, fore, filter=broken)
