@@ -28,15 +28,44 @@ KF_MESSAGES = (52500, 52501, 52502, 52503, 52504)
 REQUESTED_FIELD = {MSG_RAW: "raw_rate_requested", MSG_ORI: "orientation_rate_requested"}
 
 
-STRIDE_WINDOW = 31   # steps around each one whose median is its expected step
+STRIDE_WINDOW = 31   # steps on each side of a step that give its expected step
+
+
+def _window_gcd(g: np.ndarray, w: int) -> np.ndarray:
+    """``r[i] = gcd(g[i:i + w])`` (fewer at the end), in log2(w) vectorised steps."""
+    n = g.size
+    r = np.concatenate([g, np.zeros(w, g.dtype)])     # gcd(x, 0) = x
+    span = 1
+    while span * 2 <= w:
+        r = np.gcd(r[:-span], r[span:])               # r[i] = gcd over 2 * span steps from i
+        span *= 2
+    return np.gcd(r[:n], r[w - span:w - span + n])
+
+
+def _expected_steps(gaps: np.ndarray, w: int = STRIDE_WINDOW) -> np.ndarray:
+    """Each step's expected step: the larger of the greatest common divisors of the ``w`` steps
+    ending and of those starting at it.  A sample counter's steps are multiples of its stride however
+    many samples are lost, and a one-sided window lies within one stride next to a change of
+    stride.  (The median of the steps around it was the stride only while most steps had no
+    loss: with a third of the samples lost, stats counted 428 of 783 lost.)"""
+    gaps = np.asarray(gaps).astype(np.int32)          # forward steps are < 2**31; int32 gcd is faster
+    n = gaps.size
+    i = np.arange(n)
+    # a window cut short by an end of the recording may hold only steps with a loss: not used
+    left = np.where(i >= w - 1, _window_gcd(gaps[::-1], w)[::-1], 0)
+    right = np.where(i + w <= n, _window_gcd(gaps, w), 0)
+    step = np.maximum(left, right)
+    step[step == 0] = np.gcd.reduce(gaps)   # fewer than 2 w - 1 steps: all of them
+    return np.maximum(1, step)
 
 
 def counter_analysis(counter: np.ndarray, stride: int | None = None) -> dict:
     """Loss from a uint32 counter (wrap-safe).  ``stride`` (reported) is the most common step;
     unless given (a live view learns it once and then analyses short pieces) each step is
-    compared with the median of the STRIDE_WINDOW steps around it, so a stride that changes
-    within the recording (KF_ORIENTATION's after a KF_RATE_HZ change: 10 samples at 1 kHz, 5 at
-    500 Hz for 100 Hz) is not counted as loss."""
+    compared with its expected step (:func:`_expected_steps`, from the STRIDE_WINDOW steps on
+    either side of it), so a stride that changes within the recording (KF_ORIENTATION's after
+    a KF_RATE_HZ change: 10 samples at 1 kHz, 5 at 500 Hz for 100 Hz) is not counted as loss,
+    nor is heavy loss taken for a longer stride."""
     c = np.asarray(counter, dtype=np.int64)
     if c.size < 2:
         return {"stride": stride, "samples_lost": 0, "loss_fraction": 0.0, "resets": 0,
@@ -49,8 +78,7 @@ def counter_analysis(counter: np.ndarray, stride: int | None = None) -> dict:
         steps, counts = np.unique(gaps, return_counts=True)
         stride = int(steps[np.argmax(counts)]) if steps.size else 1
         if gaps.size:
-            from scipy.ndimage import median_filter
-            step = np.maximum(1, median_filter(gaps, size=STRIDE_WINDOW, mode="mirror"))
+            step = _expected_steps(gaps)
     lost = int(np.sum(np.maximum(0, np.round(gaps / step).astype(np.int64) - 1)))
     expected = int(c.size + lost)
     return {"stride": stride, "samples_lost": lost, "loss_fraction": lost / expected if expected else 0.0,
