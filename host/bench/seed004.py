@@ -167,6 +167,9 @@ def check_protocol(args) -> list[float]:
 def run(args) -> int:
     from kinefuse.codegen import estimators, runner
     names = [s.strip() for s in args.filters.split(",") if s.strip()]
+    if not names:
+        raise KinefuseError(f"--filters {args.filters!r}: names no filter (comma-separated names, e.g. "
+                            f"{','.join(FILTERS)})")
     for n in names:
         if n not in estimators.ESTIMATORS:
             raise KinefuseError(f"unknown filter {n!r} (available: {', '.join(estimators.ESTIMATORS)})")

@@ -84,6 +84,7 @@ def test_bad_arguments_are_one_line_errors(capsys):
     (["--duration-s", "2.5"], "the first 2 s are warm-up"),
     (["--noise-deg", "inf"], "--noise-deg inf"),
     (["--latency-ms", "5000"], "within the warm-up"),
+    (["--filters", ","], "--filters ',': names no filter"),                         # ran RAW alone
 ])
 def test_bad_protocols_are_one_line_errors_before_any_work(capsys, argv, text):
     assert cli.main(["bench", "seed004", "--json", *argv]) == 2
