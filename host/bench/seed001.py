@@ -59,13 +59,15 @@ def register_bench(sub):
                                        "simulation: per-axis std, RMSE vs truth and filter vs filter")
     p.add_argument("--impl", default="f32", choices=("ref", "f32", "q"),
                    help="implementation of the filters (default: generated float32 C)")
-    p.add_argument("--params", default="seed001", choices=("seed001", "default"),
-                   help="seed001: the seed's parameter sets (presets); default: our defaults")
+    p.add_argument("--params", default=None, choices=("seed001", "default"),
+                   help="seed001 (the default): the seed's parameter sets (presets); default: our "
+                        "defaults")
     p.add_argument("--filters", default=None,
                    help="comma-separated filter names (default: madgwick,vac,vak,guo[,flagship])")
-    p.add_argument("--seed", type=argtypes.seed, default=1, help="simulation seed (unit C8 uses seed + 1)")
-    p.add_argument("--hold-s", type=float, default=60.0,
-                   help="static hold duration, s (seed: 60; the window is 25-45 s of each hold)")
+    p.add_argument("--seed", type=argtypes.seed, default=None,
+                   help="simulation seed (default 1; unit C8 uses seed + 1)")
+    p.add_argument("--hold-s", type=float, default=None,
+                   help="static hold duration, s (default and seed: 60; the window is 25-45 s of each hold)")
     p.add_argument("--broad", nargs="?", const="", default=None, metavar="DIR|FILE",
                    help="instead: BROAD accuracy of MAD/VAC/VAK/GUO (our defaults) against the "
                         "ahrs package's Madgwick, AQUA and FKF, same trials, same metric "
@@ -187,8 +189,11 @@ def dynamic_segments(rec):
 def filter_list(arg: str | None) -> list[str]:
     from kinefuse.codegen import estimators
     names = list(SEED_FILTERS) + (["flagship"] if "flagship" in estimators.ESTIMATORS else [])
-    if arg:
+    if arg is not None:
         names = [n.strip() for n in arg.split(",") if n.strip()]
+        if not names:
+            raise KinefuseError(f"--filters {arg!r}: names no filter (comma-separated names, e.g. "
+                                f"{','.join(SEED_FILTERS)})")
     for n in names:
         if n not in estimators.ESTIMATORS:
             raise KinefuseError(f"unknown filter {n!r} (available: {', '.join(estimators.ESTIMATORS)})")
@@ -250,9 +255,15 @@ def unit_tables(rec, qs: dict[str, np.ndarray], hold_s: float) -> dict:
             "dynamic": dyn}
 
 
+SIM_DEFAULTS = {"params": "seed001", "seed": 1, "hold_s": 60.0}
+
+
 def run(args) -> int:
     if args.broad is not None:
         return run_broad(args)
+    for k, v in SIM_DEFAULTS.items():
+        if getattr(args, k) is None:
+            setattr(args, k, v)
     names = filter_list(args.filters)
     if not args.hold_s >= 10.0:
         raise KinefuseError("--hold-s must be at least 10 s")
@@ -330,12 +341,18 @@ def run_broad(args) -> int:
     from kinefuse.host import broad, metrics
     from kinefuse.host.bench.common import trial_files
     import importlib.util
+    # the simulation's options do not apply: refused, not ignored
+    given = [f"--{k.replace('_', '-')}" for k in SIM_DEFAULTS if getattr(args, k) is not None]
+    if given:
+        raise KinefuseError(f"{', '.join(given)}: simulation option(s), not used by --broad (which runs "
+                            f"the filters with our defaults on BROAD trials)")
+    names = filter_list(args.filters)
+    if args.filters is not None and any(n not in AHRS_PEERS for n in names):
+        raise KinefuseError(f"--filters {args.filters}: --broad compares {', '.join(AHRS_PEERS)} only")
+    names = [n for n in names if n in AHRS_PEERS]
     if importlib.util.find_spec("ahrs") is None:
         raise KinefuseError("seed001 --broad needs the ahrs package (pip install ahrs)")
     files, where = trial_files(args.broad or None)
-    names = [n for n in filter_list(args.filters) if n in AHRS_PEERS]
-    if not names:
-        raise KinefuseError("seed001 --broad compares madgwick, vac, vak and guo")
     jobs = [(n, "ours") for n in names] + [(AHRS_PEERS[n], "ahrs") for n in names if AHRS_PEERS[n]]
     scores: dict[str, dict[str, dict]] = {}
     t0 = time.perf_counter()

@@ -70,6 +70,20 @@ def test_unknown_filter_is_a_one_line_error(capsys):
     assert err.count("\n") == 1 and "nosuch" in err
 
 
+@pytest.mark.parametrize("argv, text", [
+    (["--filters", ""], "--filters '': names no filter"),                        # ran the defaults
+    (["--filters", ","], "--filters ',': names no filter"),
+    (["--broad", "{d}", "--params", "seed001"], "--params: simulation option(s), not used by --broad"),  # ignored
+    (["--broad", "{d}", "--seed", "3", "--hold-s", "20"], "--seed, --hold-s: simulation option(s)"),     # ignored
+    (["--broad", "{d}", "--filters", "madgwick,flagship"], "--broad compares madgwick, vac, vak, guo only"),  # dropped
+])
+def test_filters_and_options_that_would_be_ignored_are_refused(capsys, tmp_path, argv, text):
+    argv = [a.format(d=tmp_path) for a in argv]     # --broad: an empty folder, never reached
+    assert cli.main(["bench", "seed001", "--json", *argv]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1 and err.startswith("kinefuse: error:") and text in err, err
+
+
 def _static_known_orientation(q, n=400, seed=0):
     """A resting sensor at orientation q (sensor -> ENU): specific force +g up, a field of
     48 µT dipping 64° (north, downward), small noise; a trial-like object."""
