@@ -475,7 +475,11 @@ def run(args) -> int:
     filter_arg = (args.filter or "").strip() or default_filter_name()
     main = resolve(filter_arg, args.impl, params, impl_given=True)
     compare: list[Spec] = []
-    for name in [n.strip() for n in (args.compare or "").split(",") if n.strip()]:
+    compare_names = [n.strip() for n in (args.compare or "").split(",") if n.strip()]
+    if args.compare is not None and not compare_names:
+        raise KinefuseError(f"--compare {args.compare!r}: names no filter (comma-separated names, e.g. "
+                            f"vqf,imufusion)")
+    for name in compare_names:
         for spec in resolve(name, args.impl):
             if spec.label not in {s.label for s in main + compare}:
                 compare.append(spec)

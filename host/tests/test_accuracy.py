@@ -95,6 +95,15 @@ def test_params_and_impl_reach_the_filter(kf):
     assert d["impl"] == "f32" and d["mean"]["heading"] == pytest.approx(20.0, abs=1e-6)
 
 
+def test_compare_naming_no_filter_is_refused(kf):
+    """--compare ',' was accepted and ignored: the run scored the main filter alone."""
+    for arg in (",", "", " , "):
+        code, out, err = kf("bench", "accuracy", "--data", EXCERPT, "--filter", "tilted", "--compare", arg,
+                            "--jobs", "1", "--json")
+        assert code == 2 and out == "" and err.count("\n") == 1, (code, out, err)
+        assert err.startswith("kinefuse: error: --compare") and "names no filter" in err, err
+
+
 def test_compare_side_by_side_in_parallel(kf):
     comps = [c for c in ("vqf", "imufusion") if competitors.available(c)]
     if not comps:
