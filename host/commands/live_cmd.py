@@ -67,7 +67,9 @@ class UnitView:
 
     def settle_counters(self, final: bool = False) -> None:
         """Count lost samples in the counters received since the last call (wrap-safe); the
-        stride (usual step, >1 for a decimated stream) is learned from the first 16 counters."""
+        stride (usual step, >1 for a decimated stream) is learned from the first 16 counters:
+        the greatest common divisor of their steps, which stays the stride whatever was lost
+        (their most common step was 2 or more on a link losing most frames: loss undercounted)."""
         from kinefuse.host.link.stats import counter_analysis
         if not self.pending:
             return
@@ -75,7 +77,9 @@ class UnitView:
             if len(self.pending) < 16 and not final:
                 return
             seq = ([] if self.last_counter is None else [self.last_counter]) + self.pending
-            self.stride = counter_analysis(np.asarray(seq, np.int64))["stride"] or 1
+            d = np.diff(np.asarray(seq, np.int64)) & 0xFFFFFFFF
+            forward = d[(d > 0) & (d < 1 << 31)]
+            self.stride = int(np.gcd.reduce(forward)) if forward.size else 1
         c = np.asarray(([] if self.last_counter is None else [self.last_counter]) + self.pending, np.int64)
         self.last_counter = int(c[-1])
         self.pending = []
