@@ -48,7 +48,7 @@ def register(subparsers) -> None:
 def run(args) -> int:
     from kinefuse.host.link.connection import parse_baud
     from kinefuse.host.link.recorder import Recorder
-    out = check_new_file(args.out, args.force)
+    out = check_new_file(args.out, args.force, inputs=_port_paths(args.port))
     if args.duration is not None and not args.duration > 0:   # NaN too (it recorded until Ctrl-C)
         raise KinefuseError("--duration must be positive")
     if args.rate is not None and not 0 < args.rate <= 100_000:
@@ -102,6 +102,17 @@ def run(args) -> int:
             con.print()
         con.print(f"wrote {summary['file']} ({fmt_bytes(summary['file_bytes'])}, {summary['elapsed_s']:.1f} s)")
     return 0
+
+
+def _port_paths(ports) -> list[str]:
+    """The files a connection string may name (file:PATH, pty:PATH, serial:PATH[:BAUD], a bare
+    path): --out must be none of them, --force or not (file:capture.bin --out capture.bin
+    --force replaced the capture with a recording of its first bytes)."""
+    out = []
+    for url in ports:
+        rest = url.partition(":")[2]
+        out += [url, rest, rest.rpartition(":")[0]]
+    return [p for p in out if p]
 
 
 def _table(summary: dict, duration):

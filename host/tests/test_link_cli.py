@@ -95,6 +95,19 @@ def test_record_decode_stats_export(run, tmp_path):
     assert 9.0 < (sum(float(row[f"acc_{a}_mps2"]) ** 2 for a in "xyz")) ** 0.5 < 10.6
 
 
+@pytest.mark.parametrize("port", ["file:{cap}", "{cap}"])
+def test_record_never_overwrites_its_input_capture(run, tmp_path, port):
+    """--port file:cap.bin --out cap.bin --force replaced the 230 kB capture with a recording
+    of its first bytes."""
+    from kinefuse.host.link.fakeunit import raw_frames
+    cap = tmp_path / "cap.bin"
+    data = raw_frames(2000)
+    cap.write_bytes(data)
+    _one_line_error(*run("record", "--port", port.format(cap=cap), "--out", cap, "--force", "--duration", "1",
+                         "--no-params"), "is the input")
+    assert cap.read_bytes() == data
+
+
 def test_truncated_recording_still_decodes(run, tmp_path):
     out = tmp_path / "t.kfr"
     assert run("record", "--port", "fake:rate=300", "--out", out, "--duration", "1.5")[0] == 0
