@@ -91,7 +91,8 @@ def register(subparsers) -> None:
     e.add_argument("--forearm", required=True, metavar="REC")
     e.add_argument("--arm-unit", metavar="ID", help=UNIT_HELP.format(seg="arm"))
     e.add_argument("--forearm-unit", metavar="ID", help=UNIT_HELP.format(seg="forearm"))
-    e.add_argument("--unit-cal", nargs=2, metavar=("ARM.json", "FOREARM.json"))
+    e.add_argument("--unit-cal", nargs=2, metavar=("ARM.json", "FOREARM.json"),
+                   help="unit calibration files (kinefuse calibrate --out)")
     e.add_argument("--sequence", choices=list(joint.ELBOW_SEQUENCES), default="XYZ",
                    help="XYZ: seed 002 eqs. 2.7-2.9; ZYX: the seed's MATLAB code")
     e.add_argument("--init", choices=list(joint.ELBOW_INITS), default="zero-at-start")
@@ -189,6 +190,9 @@ def _check_cycle_args(args) -> None:
     if not (math.isfinite(args.max_cycle_rmse) and args.max_cycle_rmse > 0):
         raise KinefuseError(f"--max-cycle-rmse {args.max_cycle_rmse:g}: must be a positive number of "
                             f"degrees")
+    if args.orientation == "device" and args.filter is not None:
+        raise KinefuseError(f"--filter {args.filter}: not used with --orientation device (the device's "
+                            f"quaternions); give one or the other")
 
 
 def _check_mag_args(args, units) -> None:

@@ -139,6 +139,8 @@ def test_reflection_refused_with_and_without_out(run, tmp_path):
     (["--max-cycle-rmse", "nan"], "--max-cycle-rmse nan: must be a positive"),    # kept 2 of 5 silently
     (["--max-cycle-rmse", "0"], "--max-cycle-rmse 0: must be a positive"),
     (["--filter", "flagsip"], "use a kinefuse IMU filter (madgwick"),            # listed only 'simple'
+    (["--orientation", "device", "--filter", "madgwick"],                          # --filter ignored
+     "--filter madgwick: not used with --orientation device"),
 ])
 def test_bad_cycle_and_filter_options_are_refused(run, files, extra, text):
     d, _ = files
