@@ -53,6 +53,8 @@ def run(args) -> int:
         raise KinefuseError("--heading must be a finite number of degrees")
     if not args.timeout > 0:   # NaN too: it waited for ever for a unit that does not answer
         raise KinefuseError("--timeout must be positive")
+    if args.unit is not None and not 0 < args.unit < 256:   # 300 was an internal error (struct)
+        raise KinefuseError("--unit must be a unit (MAVLink system) id 1..255")
     key = key_from_args(args)
     conn = open_connection(args.port, parse_baud(args.baud))
     sent = []

@@ -76,6 +76,8 @@ def run(args) -> int:
     from kinefuse.host.link.session import Session
     if not args.timeout > 0:   # NaN too: "parameter list incomplete: ? of None parameters missing"
         raise KinefuseError("--timeout must be positive")
+    if args.unit is not None and not 0 < args.unit < 256:   # 300 was an internal error (struct)
+        raise KinefuseError("--unit must be a unit (MAVLink system) id 1..255")
     sets = _parse_set(args.set)
     key = key_from_args(args)
     conn = open_connection(args.port, parse_baud(args.baud))

@@ -87,6 +87,11 @@ def test_commands_on_a_fake_unit(run, tmp_path):
     # NaN waited for ever for a unit that does not answer (a fake one answered at once)
     (["command", "--port", "fake:", "start", "--timeout", "nan"], "--timeout must be positive"),
     (["command", "--port", "fake:", "start", "--timeout", "-1"], "--timeout must be positive"),
+    # an internal error (struct: ubyte format requires 0 <= number <= 255) or, for 0, no ACK
+    (["command", "--port", "fake:", "start", "--unit", "300"], "--unit must be a unit (MAVLink system) id"),
+    (["command", "--port", "fake:", "stop", "--unit", "0"], "--unit must be a unit (MAVLink system) id"),
+    (["params", "--port", "fake:", "--unit", "-1"], "--unit must be a unit (MAVLink system) id"),
+    (["params", "--port", "fake:", "--unit", "256", "--get", "KF_RATE_HZ"], "--unit must be a unit"),
     (["live", "--port", "fake:", "--rate", "5", "--seconds", "1"], "--rate goes with --start"),
     (["signing", "--port", "fake:", "--new-key", "0" * 64], "use --clear"),
     (["signing"], "--port"),
