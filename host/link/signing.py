@@ -75,9 +75,15 @@ def add_key_args(p, what: str = "parameter writes and commands") -> None:
 
 
 def key_from_args(args) -> bytes | None:
-    if getattr(args, "key", None):
+    # an empty --key / --key-file (e.g. --key "$UNSET") is an error: it fell through to
+    # $KINEFUSE_SIGNING_KEY or no key, so writes went unsigned without a word
+    for opt, value, want in (("--key", getattr(args, "key", None), "64 hex digits or a passphrase"),
+                             ("--key-file", getattr(args, "key_file", None), "the file holding the key")):
+        if value is not None and not str(value).strip():
+            raise KinefuseError(f"{opt} is empty: give {want}")
+    if getattr(args, "key", None) is not None:
         return parse_key(args.key)
-    if getattr(args, "key_file", None):
+    if getattr(args, "key_file", None) is not None:
         return read_key_file(args.key_file)
     env = os.environ.get(ENV_KEY)
     if env:

@@ -92,6 +92,9 @@ def test_commands_on_a_fake_unit(run, tmp_path):
     (["command", "--port", "fake:", "stop", "--unit", "0"], "--unit must be a unit (MAVLink system) id"),
     (["params", "--port", "fake:", "--unit", "-1"], "--unit must be a unit (MAVLink system) id"),
     (["params", "--port", "fake:", "--unit", "256", "--get", "KF_RATE_HZ"], "--unit must be a unit"),
+    # --key "$UNSET": fell through to $KINEFUSE_SIGNING_KEY or no key (the write went unsigned)
+    (["params", "--port", "fake:", "--key", "", "--set", "KF_RATE_HZ=500"], "--key is empty"),
+    (["command", "--port", "fake:", "--key-file", " ", "start"], "--key-file is empty"),
     (["live", "--port", "fake:", "--rate", "5", "--seconds", "1"], "--rate goes with --start"),
     (["signing", "--port", "fake:", "--new-key", "0" * 64], "use --clear"),
     (["signing"], "--port"),
