@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.cli_util import console, print_json
 from kinefuse.host.outputs import add_force_arg, check_output_dir
 
@@ -28,7 +29,10 @@ def run(args) -> int:
     from kinefuse.host.link.export import export_csv
     from kinefuse.host.link.frames import decode_file
     con = console(args.json)
-    messages = [m.strip() for m in args.messages.split(",") if m.strip()] if args.messages else None
+    messages = None if args.messages is None else [m.strip() for m in args.messages.split(",") if m.strip()]
+    if messages == []:   # --messages "" (an empty variable) exported every message
+        raise KinefuseError("--messages names no message: give names such as KF_RAW_SAMPLE,KF_ORIENTATION "
+                            "(or leave it out for all)")
     check_output_dir(args.out, args.force, pattern="*.csv")
     with Progress(console=con, transient=True, disable=not con.is_terminal) as prog:   # piped: no blank line
         task = prog.add_task("decoding", total=None)

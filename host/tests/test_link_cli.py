@@ -35,6 +35,8 @@ def _one_line_error(code, out, err, text):
     (["decode", "{tmp}/junk.kfr"], "not a kinefuse recording"),
     (["stats", "{tmp}"], "directory"),
     (["export", "{tmp}/junk.kfr", "--out", "{tmp}/csv"], "not a kinefuse recording"),
+    (["export", "{tmp}/junk.kfr", "--out", "{tmp}/csv", "--messages", ""], "--messages names no message"),  # all
+    (["export", "{tmp}/junk.kfr", "--out", "{tmp}/csv", "--messages", " , "], "--messages names no message"),
     (["record", "--port", "/dev/kinefuse-no-such-port", "--out", "{tmp}/r.kfr", "--duration", "1"],
      "cannot open serial port"),
     (["record", "--port", "fake:", "--out", "{tmp}/r.kfr", "--baud", "fast"], "bad baud rate"),
