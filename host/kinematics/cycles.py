@@ -87,7 +87,9 @@ def step_up_bounds(t, flexion, **kw) -> list:
     mids = [(ext[i] + ext[i + 1]) // 2 for i in range(len(ext) - 1)]
     starts = [ext[0] - (mids[0] - ext[0])] + mids
     ends = mids + [ext[-1] + (ext[-1] - mids[-1])]
-    return [(int(s), int(e)) for s, e in zip(starts, ends) if s >= 0 and e <= n]
+    # a cycle includes its end sample, the next cycle's start (as between_minima_bounds): ending
+    # one sample before it made every duration one sample short and 100 % not the next 0 %
+    return [(int(s), int(e) + 1) for s, e in zip(starts, ends) if s >= 0 and e < n]
 
 
 def between_minima_bounds(t, flexion, *, min_prominence: float = 0.4, min_period_s: float = 1.0,

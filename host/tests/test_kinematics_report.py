@@ -141,3 +141,19 @@ def test_a_failing_user_filter_is_a_one_line_error():
         raise ZeroDivisionError("division by zero")
     with pytest.raises(KinefuseError, match="failed: ZeroDivisionError: division by zero"):
         report.elbow_from_recordings(arm, fore, filter=broken)
+
+
+@pytest.mark.parametrize("fs", [60.0, 100.0])
+def test_step_up_cycle_durations_are_the_period(fs):
+    """Step-up cycles ended one sample before the next one's start: every duration one sample
+    short (2.99 s for 3 s at 100 Hz) and 100 % not the next cycle's 0 %.  The elbow's cycles
+    (between minima) already included their end sample."""
+    P = 3.0
+    t = np.arange(0, 8 * P, 1 / fs)
+    flex = 40 + 40 * np.cos(2 * np.pi * t / P)          # extensions at P/2 + kP
+    b = cycles.step_up_bounds(t, flex)
+    cs = cycles.normalise(t, np.column_stack([flex] * 3), b)
+    assert len(b) == 7
+    np.testing.assert_allclose(cs.durations_s, P, atol=1e-9)
+    assert all(b[k][1] - 1 == b[k + 1][0] for k in range(len(b) - 1))     # end sample = next start
+    np.testing.assert_allclose(cs.curves[:, 0, 0], cs.curves[:, -1, 0], atol=1e-9)   # 0 % = 100 %
