@@ -361,6 +361,7 @@ def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter=None,
         q, desc = sensor_orientation(recs[k], filter=filter, orientation=orientation, gyro_bias=bias)
         qs.append(q)
         info[f"{name}_orientation"] = desc
+        info[f"{name}_gyro_bias_rad_s"] = {"value": np.asarray(bias).tolist(), "source": src}
     t_a = recs[0].t - origin[0]
     t_f = recs[1].t - origin[1]
     t_end = min(t_a[-1], t_f[-1])

@@ -157,3 +157,14 @@ def test_step_up_cycle_durations_are_the_period(fs):
     np.testing.assert_allclose(cs.durations_s, P, atol=1e-9)
     assert all(b[k][1] - 1 == b[k + 1][0] for k in range(len(b) - 1))     # end sample = next start
     np.testing.assert_allclose(cs.curves[:, 0, 0], cs.curves[:, -1, 0], atol=1e-9)   # 0 % = 100 %
+
+
+def test_elbow_summary_names_the_gyroscope_bias_it_removed():
+    """The elbow pipeline removed a gyroscope bias from each sensor (static windows of the task)
+    but, unlike the knee's, its summary did not list that processing step."""
+    arm, fore, _ = _elbow_recordings()
+    res = report.elbow_from_recordings(arm, fore)
+    for seg in ("arm", "forearm"):
+        b = res.info[f"{seg}_gyro_bias_rad_s"]
+        assert len(b["value"]) == 3 and np.any(np.asarray(b["value"]) != 0)
+        assert "static samples of" in b["source"]
