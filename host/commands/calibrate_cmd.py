@@ -40,7 +40,8 @@ def register(subparsers) -> None:
                         help="recording (Xsens DOT/MATRIX/MetaBase/kinefuse CSV, .kfr, BROAD .mat or "
                              "bundled .npz trial)")
         sp.add_argument("--format", dest="fmt", help="recording format (default: detected)")
-        sp.add_argument("--fs", type=float, help="sampling rate (Hz) for formats without time stamps")
+        sp.add_argument("--fs", type=argtypes.real(0.0, math.inf, lo_open=True),
+                        help="sampling rate (Hz) for formats without time stamps")
         sp.add_argument("--unit", metavar="ID",
                         help="unit in a .kfr recording holding several: its unit (MAVLink system) "
                              "id, or s<stream>:<id>")
@@ -160,7 +161,7 @@ def _check_ranges(args) -> None:
 def _read(args):
     from kinefuse.host.readers import detect_format, kfr, read_recording
     opts = {}
-    if args.fs:
+    if args.fs is not None:
         opts["fs"] = args.fs
     if args.unit is not None:
         fmt = args.fmt or detect_format(args.input)

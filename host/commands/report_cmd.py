@@ -21,9 +21,11 @@ filter ``--filter`` is run: ``complementary`` or ``module:function``).
 from __future__ import annotations
 
 import json
+import math
 import os
 import sys
 
+from kinefuse.host import argtypes
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.kinematics import joint   # light (numpy); the heavy modules load on use
 from kinefuse.host.outputs import add_force_arg, check_output_dir
@@ -42,7 +44,8 @@ def register(subparsers) -> None:
     def common(sp):
         sp.add_argument("--out", required=True, metavar="DIR", help="output directory")
         sp.add_argument("--format", dest="fmt", help="recording format (default: detected)")
-        sp.add_argument("--fs", type=float, help="sampling rate (Hz) for formats without time stamps")
+        sp.add_argument("--fs", type=argtypes.real(0.0, math.inf, lo_open=True),
+                        help="sampling rate (Hz) for formats without time stamps")
         sp.add_argument("--filter", default=None,
                         help="orientation filter for raw recordings: a kinefuse filter (default: the "
                              "default filter, flagship), name@q for fixed point, 'simple', or "
@@ -108,7 +111,7 @@ def _static_cfg(args):
 
 def _reader(args):
     from kinefuse.host.readers import detect_format, kfr, read_recording
-    opts = {"fs": args.fs} if args.fs else {}
+    opts = {"fs": args.fs} if args.fs is not None else {}
 
     def read(path, unit=None, option=None):
         """``unit`` goes to .kfr recordings only; ``option`` names it for the error when the

@@ -175,3 +175,16 @@ def test_cycle_numbers_agree_between_summary_and_csvs(run, files, extra):
     md = (out / "knee_summary.md").read_text()
     assert f"- detected: 5, kept: {s['n_cycles_kept']}" in md
     assert ("edge cycles dropped: 1 at each end" in md) == bool(drop)
+
+
+@pytest.mark.parametrize("cmd", [["report", "elbow", "--arm", "{d}/a.csv", "--forearm", "{d}/b.csv", "--out", "{d}/o"],
+                                 ["calibrate", "gyro", "--input", "{d}/a.csv"]])
+@pytest.mark.parametrize("fs", ["0", "-100", "nan", "inf"])
+def test_bad_sampling_rate_is_a_usage_error(run, capsys, tmp_path, cmd, fs):
+    """--fs 0 was taken as 'not given' (a MATRIX file was timed at its default 100 Hz without a
+    word) and a negative, NaN or infinite rate reached the readers."""
+    with pytest.raises(SystemExit) as exc:
+        run(*[a.format(d=tmp_path) for a in cmd], f"--fs={fs}")
+    out, err = capsys.readouterr()
+    assert exc.value.code == 2 and out == "" and err.count("\n") == 1, (out, err)
+    assert err.startswith("kinefuse: error: argument --fs:") and "is not in (0, inf]" in err, err
