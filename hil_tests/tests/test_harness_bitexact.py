@@ -3,7 +3,7 @@
 f32: f32 model == host C == generated C on QEMU Cortex-M4F.  q: q model == host C == QEMU M4F
 == QEMU M0.  CI runs a short case built from the simulator's scenario set (rest, constant
 rate, random rotation, translation, magnetic disturbance, gyro bias, jitter/drops, gyro
-saturation; a few seconds each) plus a short BROAD excerpt; ``kinefuse sil report`` runs the full
+saturation; a few seconds each, around the event a scenario is named for: scenarios.ci_case) plus a short BROAD excerpt; ``kinefuse sil report`` runs the full
 set and full trials.  A mismatch names the first differing sample and its inputs.
 """
 from __future__ import annotations
@@ -34,6 +34,19 @@ def test_ci_case_exercises_the_filters(ci_inputs):
     assert gyr.max() > 5.0 and (gyr < 0.05).sum() > 100
     assert (~ci_inputs["mag_valid"]).sum() > 100 and np.ptp(ci_inputs["dt"]) > 0.001
     assert len(ci_inputs["dt"]) > 2500
+    assert ci_inputs["dt"].max() > 0.4                       # the 0.5 s gap of jitter_and_drops
+
+
+def test_ci_pieces_hold_the_events_their_scenarios_are_named_for():
+    """The first 3 s of magnetic_disturbance and jitter_and_drops had neither the field
+    doubling (15-25 s) nor the gap (20 s): the CI case tested them as plain rotations."""
+    dist = scenarios.ci_case("magnetic_disturbance", seconds=3.0)
+    m = np.linalg.norm(dist.inputs["mag"], axis=1)[dist.inputs["mag_valid"].astype(bool)]
+    assert m.max() > 1.8 * m.min() and dist.n == 300 and dist.name == "magnetic_disturbance 14-17 s"
+    assert scenarios.ci_case("jitter_and_drops", seconds=3.0).inputs["dt"].max() > 0.4
+    # scenarios whose events lie in the head (or that have none) keep the head
+    assert scenarios.ci_case("magnetic_disturbance", seconds=20.0).name == "magnetic_disturbance"
+    assert scenarios.ci_case("rest", seconds=3.0).n == 300
 
 
 @pytest.mark.parametrize("name,system", CASES)

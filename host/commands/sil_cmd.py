@@ -83,7 +83,10 @@ def run_report(args: argparse.Namespace) -> int:
     with progress(not args.json) as bar:
         task = bar.add_task("simulating scenarios", total=None)
         try:
-            cases = [scenarios.sim_case(n, seed=args.seed, seconds=seconds) for n in names]
+            # the CI subset's pieces include each scenario's event (scenarios.ci_case)
+            cases = [scenarios.ci_case(n, seconds=seconds, seed=args.seed)
+                     if args.ci and seconds is not None
+                     else scenarios.sim_case(n, seed=args.seed, seconds=seconds) for n in names]
         except SpecError as exc:
             raise KinefuseError(str(exc)) from None
         broad = "none" if args.ci and args.broad is None else args.broad
