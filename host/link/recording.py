@@ -270,6 +270,8 @@ class HeaderCrcError(KinefuseError):
 
 def read_header(f, path) -> tuple[dict, int]:
     head = f.read(FILE_HEAD.size)
+    if head[:8] == MAGIC and len(head) < FILE_HEAD.size:   # cut within the first 14 bytes
+        raise KinefuseError(f"{path}: recording header is truncated")
     if len(head) < FILE_HEAD.size or head[:8] != MAGIC:
         raise KinefuseError(f"{path} is not a kinefuse recording (.kfr)")
     _, version, n = FILE_HEAD.unpack(head)

@@ -83,6 +83,15 @@ def recorded(tmp_path_factory):
     return p.read_bytes(), frames
 
 
+@pytest.mark.parametrize("n", [8, 9, 13, 20])
+def test_a_file_cut_within_its_header_says_so(tmp_path, recorded, n):
+    """Cut within the first 14 bytes (magic, version, length) it was 'not a kinefuse recording'."""
+    p = tmp_path / "t.kfr"
+    p.write_bytes(recorded[0][:n])
+    with pytest.raises(KinefuseError, match="recording header is truncated"):
+        load(p)
+
+
 @settings(max_examples=300, deadline=None)
 @given(cut=st.floats(0, 1))
 def test_truncated_anywhere_decodes_up_to_the_cut(tmp_path_factory, recorded, cut):
