@@ -182,7 +182,9 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
 
 def _comments(df: DecodedFile, name: str, pairs, clock) -> list[str]:
     """The ``#`` lines of a CSV: recording, unit(s), time columns and clock fits."""
-    out = [f"kinefuse export of {df.path} ({df.header.get('format')}, started {df.header.get('start_utc')}): {name}"]
+    start = df.header.get("start_utc")      # none for a raw capture or a tlog (was "started None")
+    out = [f"kinefuse export of {df.path} ({df.header.get('format')}" + (f", started {start}" if start else "")
+           + f"): {name}"]
     for sid, sysid in pairs:
         ds = df.streams[sid]
         fw = next((m.get("firmware_version_text") for m in ds.meta

@@ -56,3 +56,12 @@ def test_host_fit_column_aligns_the_units(two_units, tmp_path):
         assert len(kinefuse_csv.read(str(f))) == c["t_s"].size
     boot_diff = (units[1].t0_ns - units[0].t0_ns) / 1e9
     assert abs((firsts[1] - firsts[0]) - boot_diff) < 3e-3
+
+
+def test_a_raw_capture_is_not_said_to_start_at_none(tmp_path):
+    from kinefuse.host.link.fakeunit import raw_frames
+    cap = tmp_path / "cap.bin"
+    cap.write_bytes(raw_frames(50))
+    (f,) = export_csv(decode_file(cap, raw=True), tmp_path / "csv")
+    first = open(f["file"]).readline()
+    assert first == f"# kinefuse export of {cap} (raw MAVLink capture): KF_RAW_SAMPLE\n", first
