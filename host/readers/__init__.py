@@ -9,7 +9,7 @@ header (or the ``.mat`` / ``.npz`` / ``.kfr`` extension) unless ``fmt`` is given
 several units: choose one with ``unit=`` (MAVLink system id = unit id, or ``s<stream>:<id>``);
 times are on the host clock (device clock offset and drift fitted out), so units of one file
 are synchronised; lost samples stay gaps.  ``fmt="kfr"`` also reads a raw MAVLink capture
-(then on the unit's own clock).  Every reader fails with a one-line
+(then on the unit's own clock); a ``.tlog`` is read as ``kfr`` too.  Every reader fails with a one-line
 :class:`ReaderError` naming the file, the line and the problem.
 """
 from __future__ import annotations
@@ -39,7 +39,7 @@ def detect_format(path: str) -> str:
         raise ReaderError(path, "is a directory; give one recording file")
     if path.lower().endswith((".mat", ".npz")):
         return broad.FORMAT
-    if path.lower().endswith(".kfr"):
+    if path.lower().endswith((".kfr", ".tlog")):   # a telemetry log: read as kfr.py says
         return kfr.FORMAT
     try:
         if os.path.getsize(path) == 0:

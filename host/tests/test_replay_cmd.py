@@ -193,3 +193,20 @@ def test_an_existing_output_is_kept_unless_forced(run, tmp_path):
     _one_line_error(*run("run", "--input", trial, "--out", trial, "--force"), "is the input")
     _one_line_error(*run("replay", trial, "--out", trial, "--force"), "is the input")
     assert trial.read_bytes() == data
+
+
+def test_a_tlog_is_replayed(run, tmp_path):
+    """A MAVProxy/QGC telemetry log (decode, stats and export read it) was an 'unknown
+    recording format' for replay; its stamps are the host time base."""
+    import struct
+    from kinefuse.host.link.fakeunit import raw_frames
+    frames = raw_frames(600, rate_hz=500)
+    t0 = 1_700_000_000_000_000
+    tlog = tmp_path / "x.tlog"
+    tlog.write_bytes(b"".join(struct.pack(">Q", t0 + 2000 * k + 300) + frames[46 * k:46 * (k + 1)]
+                              for k in range(600)))
+    code, _, err = run("replay", tlog, "--out", tmp_path / "e.csv")
+    assert code == 0, err
+    comment, header, data = _csv(tmp_path / "e.csv")
+    assert header == ["t", "w", "x", "y", "z"] and data.shape == (600, 5)
+    assert np.allclose(np.diff(data[:, 0]), 0.002, atol=1e-6) and "host clock" in comment
