@@ -44,18 +44,21 @@ def _window_gcd(g: np.ndarray, w: int) -> np.ndarray:
 
 def _expected_steps(gaps: np.ndarray, w: int = STRIDE_WINDOW) -> np.ndarray:
     """Each step's expected step: the larger of the greatest common divisors of the ``w`` steps
-    ending and of those starting at it.  A sample counter's steps are multiples of its stride however
-    many samples are lost, and a one-sided window lies within one stride next to a change of
-    stride.  (The median of the steps around it was the stride only while most steps had no
-    loss: with a third of the samples lost, stats counted 428 of 783 lost.)"""
+    before it and of the ``w`` steps after it.  A sample counter's steps are multiples of its
+    stride however many samples are lost, and one side lies within one stride next to a change
+    of stride (the step itself is left out: the firmware restarts its divider on a rate change,
+    so the step across the change may be neither stride).  The median of the steps around it
+    was the stride only while most steps had no loss: with a third of the samples lost, stats
+    counted 428 of 783 lost."""
     gaps = np.asarray(gaps).astype(np.int32)          # forward steps are < 2**31; int32 gcd is faster
     n = gaps.size
     i = np.arange(n)
+    f = _window_gcd(gaps, w)                          # f[j] = gcd(gaps[j:j + w])
     # a window cut short by an end of the recording may hold only steps with a loss: not used
-    left = np.where(i >= w - 1, _window_gcd(gaps[::-1], w)[::-1], 0)
-    right = np.where(i + w <= n, _window_gcd(gaps, w), 0)
+    left = np.where(i >= w, f[np.maximum(i - w, 0)], 0)
+    right = np.where(i + 1 + w <= n, f[np.minimum(i + 1, n - 1)], 0)
     step = np.maximum(left, right)
-    step[step == 0] = np.gcd.reduce(gaps)   # fewer than 2 w - 1 steps: all of them
+    step[step == 0] = np.gcd.reduce(gaps)   # fewer than 2 w + 1 steps: all of them
     return np.maximum(1, step)
 
 
