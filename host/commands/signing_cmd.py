@@ -66,6 +66,14 @@ def run(args) -> int:
         return 0
     if not args.port:
         raise KinefuseError("give the unit's --port (or --generate FILE)")
+    if args.unit is not None and not 0 < args.unit < 256:   # 300 was an internal error (struct)
+        raise KinefuseError("--unit must be a unit (MAVLink system) id 1..255")
+    if not args.timeout > 0:   # NaN waited for ever for a unit that does not answer
+        raise KinefuseError("--timeout must be positive")
+    if args.new_key is not None and not args.new_key.strip():   # was: show the key state, install none
+        raise KinefuseError("--new-key is empty: give 64 hex digits or a passphrase")
+    if args.new_key_file is not None and not args.new_key_file.strip():
+        raise KinefuseError("--new-key-file is empty: give the file holding the new key")
     from kinefuse.host.link.connection import open_connection, parse_baud
     from kinefuse.host.link.params import ParamClient
     from kinefuse.host.link.session import Session

@@ -98,6 +98,10 @@ def test_commands_on_a_fake_unit(run, tmp_path):
     (["live", "--port", "fake:", "--rate", "5", "--seconds", "1"], "--rate goes with --start"),
     (["signing", "--port", "fake:", "--new-key", "0" * 64], "use --clear"),
     (["signing"], "--port"),
+    (["signing", "--port", "fake:", "--unit", "300"], "--unit must be a unit (MAVLink system) id"),
+    (["signing", "--port", "fake:", "--timeout", "nan"], "--timeout must be positive"),
+    (["signing", "--port", "fake:", "--new-key", ""], "--new-key is empty"),
+    (["signing", "--port", "fake:", "--new-key-file", ""], "--new-key-file is empty"),
 ])
 def test_argument_errors_are_one_line(run, argv, text):
     code, out, err = run(*argv)
