@@ -65,6 +65,16 @@ def run(args) -> int:
                             f"{', '.join(PARTS)}")
     if args.jobs < 1:
         raise KinefuseError("--jobs must be at least 1")
+    # options of a part that is not run: refused, not ignored
+    unused = [o for o, part, given in (("--variants", "pendulum", args.variants != "all"),
+                                       ("--no-ref", "pendulum", args.no_ref),
+                                       ("--no-qemu", "leg", args.no_qemu),
+                                       ("--no-fixed", "leg", args.no_fixed))
+              if given and part not in parts]
+    if unused:
+        raise KinefuseError(f"{', '.join(unused)}: option(s) of a part not run (--parts "
+                            f"{','.join(parts)}); --variants and --no-ref apply to pendulum, "
+                            f"--no-qemu and --no-fixed to leg")
     from kinefuse.host.bench.common import progress
     from kinefuse.host.dynamics import bench as B
     result: dict = {}

@@ -120,6 +120,20 @@ def test_bench_command_errors_are_one_line(capsys):
     assert main(["bench", "dynamics", "--jobs", "0"]) == 2
 
 
+@pytest.mark.parametrize("argv, text", [
+    (["--parts", "robustness", "--no-qemu"], "--no-qemu: option(s) of a part not run (--parts robustness)"),
+    (["--parts", "leg", "--variants", "quick", "--no-ref"], "--variants, --no-ref: option(s) of a part not run"),
+    (["--parts", "pendulum,robustness", "--no-fixed"], "--no-fixed: option(s) of a part not run"),
+])
+def test_bench_options_of_parts_not_run_are_refused(capsys, argv, text):
+    """--no-qemu, --no-fixed, --variants and --no-ref were accepted and ignored when their part
+    was not in --parts; refused before any work."""
+    from kinefuse.host.cli import main
+    assert main(["bench", "dynamics", "--json", *argv]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1 and err.startswith("kinefuse: error:") and text in err, err
+
+
 def test_bench_json_cleaning():
     from kinefuse.host.bench.dynamics import _clean
     out = _clean({"a": np.float32(1.5), "b": [float("nan"), np.int64(3)], "c": {1: np.inf}})
