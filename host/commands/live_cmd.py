@@ -190,14 +190,18 @@ class LiveMonitor:
     def table(self):
         from rich.table import Table
         el = time.monotonic() - self.started
-        t = Table("unit", "connection", "rate Hz", "requested", "lost", "CRC err", "roll°", "pitch°", "yaw°",
-                  "frame", "battery", "status", box=None,
+        t = Table("unit", "connection", "rate Hz", "req Hz", "lost", "CRC", "roll°", "pitch°", "yaw°",
+                  "frame", "battery", "status", box=None, pad_edge=False, collapse_padding=True,
                   title=f"kinefuse live  {el:.1f} s  (Ctrl-C to stop)",
                   caption="orientation: KF_ORIENTATION sensor->earth as intrinsic Z-Y'-X'' yaw, pitch, roll; "
                           "ENU: yaw about Up, counter-clockwise from East")
-        for col in t.columns[:-1]:
-            col.no_wrap = True
-        t.columns[1].max_width, t.columns[1].overflow = 24, "ellipsis"
+        # the numbers keep their width (on an 80-column terminal roll and yaw read "+2…" and the
+        # status column was gone); the connection shrinks, battery and status wrap
+        widths = {0: 4, 2: 7, 3: 6, 4: 4, 5: 3, 6: 6, 7: 6, 8: 6, 9: 5}
+        for k, col in enumerate(t.columns):
+            col.no_wrap = k in widths
+            col.min_width = widths.get(k)
+        t.columns[1].max_width, t.columns[1].min_width, t.columns[1].overflow = 24, 8, "ellipsis"
         for (sid, sysid), u in sorted(self.units.items()):
             rate = u.rate_hz
             ratio_low = rate is not None and u.requested_hz and rate < 0.95 * u.requested_hz

@@ -76,6 +76,27 @@ def test_loss_on_a_link_losing_most_frames():
     assert u.stride == 1 and u.lost == sum(steps) - len(steps) and u.resets == 0
 
 
+def test_the_table_keeps_its_numbers_on_an_80_column_terminal():
+    """On 80 columns roll and yaw read '-1…' / '+1…' and the battery and status columns were
+    cut off."""
+    from types import SimpleNamespace
+    from rich.console import Console
+    from kinefuse.host.commands.live_cmd import LiveMonitor, UnitView
+    s = SimpleNamespace(conn=SimpleNamespace(url="fake:rate=200,unit=3"),
+                        decoder=SimpleNamespace(counters=SimpleNamespace(crc_errors=7, bytes_in=0)))
+    mon = LiveMonitor([s])
+    u = mon.units[(0, 3)] = UnitView(0, 3, s.conn.url)
+    u.window.extend([0, 5000, 10000])
+    u.requested_hz, u.rpy_deg, u.earth_frame, u.lost = 1000.0, (-179.9, -88.8, 123.4), "ENU", 12345
+    u.status = SimpleNamespace(battery_voltage=3900, battery_remaining=80, status_flags=35, firmware_version=65536,
+                               samples_dropped=0)
+    con = Console(width=80, record=True, color_system=None)
+    con.print(mon.table())
+    text = con.export_text()
+    for want in ("200.0", "1000", "12345", " 7 ", "-179.9", "-88.8", "+123.4", "ENU", "3.90 V", "stream"):
+        assert want in text, (want, text)
+
+
 def test_ctrl_c_ends_cleanly(run, monkeypatch):
     from kinefuse.host.commands import live_cmd
     calls = {"n": 0}
