@@ -153,9 +153,12 @@ def _ranges(args) -> dict:
 
 
 def _check_ranges(args) -> None:
-    """--range before any work: valid names and values, and only with --out (where it is stored)."""
+    """--range before any work: valid names and values, and only with --out (where it is stored);
+    --serial likewise only with --out (it was accepted and ignored without)."""
     if _ranges(args) and not args.out:
         raise KinefuseError("--range is stored in the unit calibration file: give --out")
+    if args.serial is not None and not args.out:
+        raise KinefuseError("--serial names the unit in the calibration file: give --out")
 
 
 def _read(args):

@@ -117,6 +117,16 @@ def test_accel_poses_in_g_against_m_s2_are_refused(run, tmp_path):
     assert code == 0, err
 
 
+def test_serial_without_out_is_refused(run, tmp_path):
+    """--serial without --out was accepted and ignored (--range without --out was refused)."""
+    (tmp_path / "p.csv").write_text(RAW)
+    (tmp_path / "t.csv").write_text(TARGETS)
+    code, out, err = run("calibrate", "accel", "--poses", tmp_path / "p.csv", "--targets", tmp_path / "t.csv",
+                         "--serial", "7", "--json")
+    assert code == 2 and out == "" and err.count("\n") == 1, (code, out, err)
+    assert "--serial names the unit in the calibration file: give --out" in err, err
+
+
 def _six_pose_recording(path, rng):
     """Six still poses (±x, ±y, ±z up) joined by 2 s rotations, with accelerometer errors."""
     poses = [Q.identity(), Q.elementary("X", np.pi), Q.elementary("X", np.pi / 2),
