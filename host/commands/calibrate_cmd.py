@@ -100,7 +100,8 @@ def register(subparsers) -> None:
     ap.add_argument("--sensor", type=int, choices=(0, 1), default=0,
                     help="the unit's sensor the file calibrates: 0 (default; KF_ACC_* ...) or 1, the second "
                          "IMU of a two-sensor unit (KF_ACC2_* ...)")
-    ap.add_argument("--timeout", type=float, default=3.0, metavar="S", help="wait this long for the unit (default 3)")
+    ap.add_argument("--timeout", type=argtypes.real(0.0, 3600.0, lo_open=True), default=3.0, metavar="S",
+                    help="wait this long for the unit (default 3)")
     ap.add_argument("--dry-run", action="store_true", help="print the parameters without connecting")
     ap.add_argument("--json", action="store_true", help="print exactly one JSON object")
     from kinefuse.host.link.signing import add_key_args

@@ -127,6 +127,17 @@ def test_serial_without_out_is_refused(run, tmp_path):
     assert "--serial names the unit in the calibration file: give --out" in err, err
 
 
+@pytest.mark.parametrize("timeout", ["nan", "-1", "0", "inf"])
+def test_apply_bad_timeout_is_a_usage_error(run, capsys, tmp_path, timeout):
+    """calibrate apply --timeout took any float: -1 gave 'no HEARTBEAT within -1 s', NaN a
+    deadline that never passed."""
+    with pytest.raises(SystemExit) as exc:
+        run("calibrate", "apply", "--calib", tmp_path / "u.json", "--port", "fake:unit=2", f"--timeout={timeout}")
+    out, err = capsys.readouterr()
+    assert exc.value.code == 2 and out == "" and err.count("\n") == 1, (out, err)
+    assert err.startswith("kinefuse: error: argument --timeout:") and "is not in (0, 3600]" in err, err
+
+
 def _six_pose_recording(path, rng):
     """Six still poses (±x, ±y, ±z up) joined by 2 s rotations, with accelerometer errors."""
     poses = [Q.identity(), Q.elementary("X", np.pi), Q.elementary("X", np.pi / 2),
