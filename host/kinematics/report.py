@@ -214,6 +214,11 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
             cal = mag_cal.calibrate(samples, field_norm=field_norm)
             warnings += [f"{segs[k]} magnetometer: {w}" for w in cal.warnings]
         unit_has_mag = units[k] is not None and "mag" in units[k]["sensors"]
+        if task[k].mag is None and cal is not None:
+            # the calibration (and any gate) would go unused without a word
+            warnings.append(f"{segs[k]} magnetometer calibration given, but the task recording "
+                            f"({os.path.basename(task[k].source)}) has no magnetometer data: not used "
+                            f"(6-D orientation)")
         if task[k].mag is not None and (cal is not None or unit_has_mag):
             m = cal.apply(task[k].mag) if cal is not None else task[k].mag
             if mag_gate is not None:

@@ -168,3 +168,17 @@ def test_elbow_summary_names_the_gyroscope_bias_it_removed():
         b = res.info[f"{seg}_gyro_bias_rad_s"]
         assert len(b["value"]) == 3 and np.any(np.asarray(b["value"]) != 0)
         assert "static samples of" in b["source"]
+
+
+def test_mag_calibration_unused_for_lack_of_magnetometer_is_a_warning(protocol):
+    """Figure-eight recordings given for task recordings without a magnetometer were fitted and
+    then dropped without a word: the summary listed the calibration among the inputs and ran 6-D."""
+    import dataclasses
+    P = protocol
+    task = [dataclasses.replace(r, mag=None) for r in pair(P.task)]
+    res = report.knee_from_recordings(*task, standing=pair(P.standing), lying=pair(P.lying),
+                                      mag_recordings=pair(P.mag))
+    for seg in ("thigh", "shank"):
+        assert any(w.startswith(f"{seg} magnetometer calibration given") and "no magnetometer data" in w
+                   for w in res.warnings), res.warnings
+        assert res.info[f"{seg}_orientation"].endswith("(6-D)")
