@@ -78,6 +78,23 @@ def test_commands_on_a_fake_unit(run, tmp_path):
     assert "warning" not in err
 
 
+@pytest.mark.parametrize("second, text", [("FOO=1", "FOO: no such parameter (nothing written)"),
+                                          ("KF_FILTER=1.5", "--set KF_FILTER: 1.5 is not an integer")])
+def test_params_set_writes_nothing_when_an_item_is_bad(run, monkeypatch, second, text):
+    """The unit's names and types are checked before the first write: KF_RATE_HZ was written,
+    then FOO failed."""
+    from kinefuse.host.link.params import ParamClient
+    written = []
+    real = ParamClient.set
+    monkeypatch.setattr(ParamClient, "set", lambda self, name, value, *a, **k: (
+        written.append(name), real(self, name, value, *a, **k))[1])
+    code, out, err = run("params", "--port", "fake:", "--set", "KF_RATE_HZ=500", "--set", second)
+    assert code == 2 and err.count("\n") == 1 and text in err, err
+    assert written == []
+    assert run("params", "--port", "fake:", "--set", "KF_RATE_HZ=500", "--set", "KF_ACC_TAU_S=0.5")[0] == 0
+    assert written == ["KF_RATE_HZ", "KF_ACC_TAU_S"]
+
+
 @pytest.mark.parametrize("argv, text", [
     (["decode", "--show", "-3", "x.kfr"], "--show must be 0 or more"),
     (["command", "--port", "fake:", "stop", "--rate", "5"], "--rate goes with start"),
