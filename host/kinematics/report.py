@@ -291,6 +291,9 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
         q_GS.append(q)
         how.append(desc)
         info[f"{segs[k]}_orientation"] = desc
+        if desc == "device quaternions" and mags[k] is not None:
+            warnings.append(f"{segs[k]} magnetometer calibration not used: the orientation is the device's "
+                            f"own quaternions (orientation 'filter' runs the filter with it)")
         info[f"{segs[k]}_gyro_bias_rad_s"] = {"value": np.asarray(bias).tolist(), "source": bias_src}
 
     # --- 5. common time base

@@ -63,6 +63,13 @@ def test_knee_from_device_quaternions_with_different_heading_references(protocol
     assert res.info["heading_alignment"]["reference"] == "standing posture"
     e = rmse(res, P)
     assert e[0] <= 2.0 and e[1] <= 3.0 and e[2] <= 3.0, e
+    assert not any("magnetometer calibration not used" in w for w in res.warnings)
+    # a figure-eight calibration cannot reach the device's quaternions: said, not dropped silently
+    res = report.knee_from_recordings(*pair(task), standing=pair(stand), lying=pair(P.lying),
+                                      mag_recordings=pair(P.mag))
+    for seg in ("thigh", "shank"):
+        assert any(w.startswith(f"{seg} magnetometer calibration not used: the orientation is the device's")
+                   for w in res.warnings), res.warnings
 
 
 def test_step_up_cycles_and_normalisation(protocol, calibrated):
