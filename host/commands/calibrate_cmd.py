@@ -241,8 +241,8 @@ def run_accel(args) -> int:
         targets = _numeric_csv(args.targets, (2, 3), "target")
         if targets.shape != raw.shape:
             src = "static windows detected" if args.input else "poses"
-            raise KinefuseError(f"{args.targets}: {targets.shape[0]} targets for {raw.shape[0]} {src} "
-                                f"({raw.shape[1]} columns each)")
+            raise KinefuseError(f"{args.targets}: {targets.shape[0]} targets of {targets.shape[1]} columns for "
+                                f"{raw.shape[0]} {src} of {raw.shape[1]} columns")
     method = args.method or ("ls" if targets is not None else "full")
     _check_accel_units(args, raw, targets)
     cal = accel.fit(raw, targets, method=method, g=args.g)

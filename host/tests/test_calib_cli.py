@@ -61,8 +61,13 @@ def test_accel_cli_errors_are_one_line_exit_2(run, tmp_path):
     (tmp_path / "p.csv").write_text(RAW)
     (tmp_path / "t5.csv").write_text("\n".join(TARGETS.splitlines()[:5]) + "\n")
     (tmp_path / "bad.csv").write_text("1,2,3\n4,x,6\n")
+    (tmp_path / "p2.csv").write_text("\n".join(",".join(r.split(",")[:2]) for r in RAW.splitlines()[1:]) + "\n")
+    (tmp_path / "t.csv").write_text(TARGETS)
     cases = [
-        (["--poses", tmp_path / "p.csv", "--targets", tmp_path / "t5.csv"], "5 targets for 6"),
+        (["--poses", tmp_path / "p.csv", "--targets", tmp_path / "t5.csv"], "5 targets of 3 columns for 6 poses"),
+        # said '6 targets for 6 poses (2 columns each)': the counts agreed, the columns did not
+        (["--poses", tmp_path / "p2.csv", "--targets", tmp_path / "t.csv"],
+         "6 targets of 3 columns for 6 poses of 2 columns"),
         (["--poses", tmp_path / "bad.csv", "--targets", tmp_path / "t5.csv"], "line 2"),
         (["--poses", tmp_path / "p.csv"], "needs --targets"),
         (["--poses", tmp_path / "missing.csv", "--targets", tmp_path / "t5.csv"], "not found"),
