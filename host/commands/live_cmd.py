@@ -281,6 +281,8 @@ def run(args) -> int:
         raise KinefuseError("--unit must be a unit (MAVLink system) id 1..255")
     if args.rate is not None and (not args.start or not 0 < args.rate <= 10_000):
         raise KinefuseError("--rate goes with --start and must be in (0, 10000] Hz")
+    from kinefuse.host.link.cli_util import check_distinct_ports
+    check_distinct_ports(args.port)
     baud = parse_baud(args.baud)
     key = key_from_args(args)
     sessions = []

@@ -17,7 +17,7 @@ from __future__ import annotations
 import signal
 import threading
 from kinefuse.host.errors import KinefuseError
-from kinefuse.host.link.cli_util import console, fmt_bytes, print_json
+from kinefuse.host.link.cli_util import check_distinct_ports, console, fmt_bytes, print_json
 from kinefuse.host.link.signing import add_key_args, key_from_args
 from kinefuse.host.outputs import add_force_arg, check_new_file
 
@@ -49,6 +49,7 @@ def run(args) -> int:
     from kinefuse.host.link.connection import parse_baud
     from kinefuse.host.link.recorder import Recorder
     out = check_new_file(args.out, args.force, inputs=_port_paths(args.port))
+    check_distinct_ports(args.port)
     if args.duration is not None and not args.duration > 0:   # NaN too (it recorded until Ctrl-C)
         raise KinefuseError("--duration must be positive")
     if args.rate is not None and not 0 < args.rate <= 100_000:

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import os
 import sys
 
 
@@ -29,6 +30,26 @@ def _default(o):
     if isinstance(o, bytes):
         return o.hex()
     return str(o)
+
+
+def check_distinct_ports(ports) -> None:
+    """The same serial port or pty given twice (also as pty:PATH and PATH) is refused: two
+    readers split its bytes between two streams, and each showed a third to two thirds of
+    the samples lost.  ``fake:`` units and capture files (each read whole) may repeat."""
+    from kinefuse.host.errors import KinefuseError
+    seen: dict = {}
+    for url in ports:
+        if url.lower().startswith("fake:"):
+            continue
+        rest = url.partition(":")[2]
+        path = next((p for p in (url, rest, rest.rpartition(":")[0]) if p and os.path.exists(p)), None)
+        if path is not None and os.path.isfile(path):
+            continue
+        key = os.path.realpath(path) if path is not None else url
+        if key in seen:
+            raise KinefuseError(f"--port {url} is the connection of --port {seen[key]} again: give each "
+                                f"port once (two readers would split its bytes, losing frames in both)")
+        seen[key] = url
 
 
 def fmt_rate(x) -> str:

@@ -124,6 +124,9 @@ def test_ctrl_c_ends_cleanly(run, monkeypatch):
     (["live", "--port", "fake:bogus=1"], "bad fake unit option"),
     (["live", "--port", "file:{tmp}/empty.bin", "--seconds", "1"], "no kinefuse unit data received"),
     (["live", "--port", "fake:rate=100", "--unit", "9", "--seconds", "0.5"], "no unit 9 data received"),
+    # two readers of one port split its bytes (both streams lose frames)
+    (["live", "--port", "/dev/kinefuse-nope", "--port", "/dev/kinefuse-nope", "--seconds", "1"],
+     "give each port once"),
 ])
 def test_bad_input_gives_one_line(run, tmp_path, argv, text):
     (tmp_path / "empty.bin").write_bytes(b"")
