@@ -200,7 +200,7 @@ def _comments(df: DecodedFile, name: str, pairs, clock) -> list[str]:
                     + (f", first {sg['excluded_leading']} left out" if sg["excluded_leading"] else "") + ")"
                     + (f" [{'; '.join(sg['warnings'])}]" if sg["warnings"] else "") for sg in segs)
             else:
-                line += "; no clock fit (too few samples): host_fit_s empty"
+                line += "; no clock fit (too few samples): host_fit_s is nan"   # it said "empty"
         out.append(line)
     if clock is not None and name.startswith("KF_"):
         out.append("t_s: unit clock, s since boot; host_time_s: host receive time, s since the recording "

@@ -65,3 +65,18 @@ def test_a_raw_capture_is_not_said_to_start_at_none(tmp_path):
     (f,) = export_csv(decode_file(cap, raw=True), tmp_path / "csv")
     first = open(f["file"]).readline()
     assert first == f"# kinefuse export of {cap} (raw MAVLink capture): KF_RAW_SAMPLE\n", first
+
+
+def test_a_unit_without_a_clock_fit_says_what_host_fit_s_holds(tmp_path):
+    """The comment said 'host_fit_s empty' above rows holding nan."""
+    import time
+    from kinefuse.host.link.fakeunit import raw_frames
+    from kinefuse.host.link.recording import RecordingWriter, make_header
+    p = tmp_path / "one.kfr"
+    w = RecordingWriter(p, make_header([{"id": 0, "connection": "x"}]))
+    w.rx(0, [(time.monotonic_ns(), raw_frames(1))])
+    w.close()
+    (f,) = export_csv(decode_file(p), tmp_path / "csv")
+    comments, cols = _csv(f["file"])
+    assert np.isnan(cols["host_fit_s"]).all()
+    assert any("no clock fit (too few samples): host_fit_s is nan" in c for c in comments), comments
