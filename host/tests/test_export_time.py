@@ -3,6 +3,8 @@ clock fit (``host_fit_s``), and name their unit in ``#`` lines; the files stay "
 CSV" for the readers."""
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -77,6 +79,6 @@ def test_a_unit_without_a_clock_fit_says_what_host_fit_s_holds(tmp_path):
     w.rx(0, [(time.monotonic_ns(), raw_frames(1))])
     w.close()
     (f,) = export_csv(decode_file(p), tmp_path / "csv")
-    comments, cols = _csv(f["file"])
+    comments, cols = _csv(Path(f["file"]))
     assert np.isnan(cols["host_fit_s"]).all()
     assert any("no clock fit (too few samples): host_fit_s is nan" in c for c in comments), comments
