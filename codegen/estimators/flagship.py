@@ -220,6 +220,8 @@ class Flagship(Estimator):
             init=0.0),
         Var("t_skip", 1, 0.0, DT_MAX, "s", "time of the rejected readings since the last "
             "regular step (bridged by the next one)", init=0.0),
+        Var("dt_prev", 1, 0.0, DT_MAX, "s", "time step of the previous regular step (0: none)",
+            init=0.0),
         Var("t_mag", 1, 0.0, 2.0 * DT_MAX, "s", "time since the previous magnetometer sample",
             init=0.0),
         Var("cur_n", 1, 0.0, N_MAX, "", "current field through the noise low-pass: magnitude (input unit)", init=0.0),
@@ -309,7 +311,19 @@ class Flagship(Estimator):
 
         # -- strapdown ----------------------------------------------------------------------
         # rotation vector of the step: theta plus the two-sample coning term theta_prev x theta / 12
-        theta = _clamp3(w * dt, -STEP_MAX, STEP_MAX)
+        # A step longer than twice the usual period means samples were lost: the rotation in the
+        # missing time is integrated with the mean of the rates before and after the gap
+        # (trapezoid) instead of the rate after it, which is second-order accurate where the
+        # rectangle is first-order (a 0.5 s gap while the rate rose from 1.1 to 2.0 rad/s: 24 deg
+        # of error with the rate after it).
+        # The rate before is theta_prev / dt_prev (the usual period dt_lp is not settled in the
+        # first second, when every step looks long against it).
+        dt_prev = select(do_init, 0.0, x.dt_prev)
+        gap = logical_and(dt_prev > 0.0, dt > 2.0 * dt_prev)
+        with when(gap):
+            w_before = _clamp3(th_prev * (1.0 / fmax(dt_prev, 1e-4)), -GYR_MAX, GYR_MAX)
+            w_gap = (w + w_before) * 0.5
+        theta = _clamp3(vselect(gap, w_gap, w) * dt, -STEP_MAX, STEP_MAX)
         phi = theta + th_prev.cross(theta) * (1.0 / 12.0)
         # a step beyond 2 rad (only with dt near its 1 s limit) is scaled to 2 rad, so the step
         # quaternion below stays near unit norm and the Newton renormalisation holds
@@ -559,13 +573,14 @@ class Flagship(Estimator):
             "vel": lp_v_new,
             "vel_mean": vel_mean_new,
             "vel_ms": vel_ms_new,
-            "th_prev": theta,
+            "th_prev": vselect(run, theta, th_prev),   # a rejected sample keeps the last increment
             "rest_gyr": vselect(gyr_ok, rest_gyr, Vec3(*x.rest_gyr)),
             "rest_acc": rest_acc,
             "rest_t": rest_t,
             "p_head": select(live, p_head, x.p_head),
             "dt_lp": dt_lp_new,
             "t_skip": t_skip_new,
+            "dt_prev": select(run, dt, dt_prev),
             "t_mag": on_mag(0.0, t_mag),
             **_unfld("cur", von_mag(cur, cur_old)),
             **_unfld("ref", von_mag(ref_new, ref)),
