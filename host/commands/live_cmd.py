@@ -351,7 +351,9 @@ def _loop(mon: LiveMonitor, sessions, seconds, interval: float, show, stop: thre
             if t_end is not None and now >= t_end:
                 break
             live = [(sid, s) for sid, s in enumerate(sessions) if not s.reader.finished]
-            if not live:
+            if not live:   # what is still queued (e.g. read while --start waited for ACKs) counts
+                for sid, s in enumerate(sessions):
+                    mon.feed(sid, s.drain())
                 break
             wait = min(0.1, next_show - now, (t_end - now) if t_end is not None else 0.1)
             wait = max(0.0, wait) / len(live)

@@ -97,6 +97,17 @@ def test_the_table_keeps_its_numbers_on_an_80_column_terminal():
         assert want in text, (want, text)
 
 
+def test_frames_read_while_start_waits_are_counted(run, tmp_path):
+    """A connection that ended while --start waited for ACKs (a capture file) said 'no kinefuse
+    unit data received' for its 2,000 frames: the loop ended without feeding what was queued."""
+    from kinefuse.host.link.fakeunit import raw_frames
+    cap = tmp_path / "cap.bin"
+    cap.write_bytes(raw_frames(2000))
+    code, out, err = run("live", "--port", f"file:{cap}", "--start", "--seconds", "5")
+    assert code == 0, err
+    assert _units(out) and _units(out)[-1][1] == "1" and _units(out)[-1][5] == "0", out
+
+
 def test_ctrl_c_ends_cleanly(run, monkeypatch):
     from kinefuse.host.commands import live_cmd
     calls = {"n": 0}
