@@ -1,11 +1,13 @@
 """`kinefuse run`: one filter over one recording, estimates to CSV."""
 from __future__ import annotations
 
+import math
 import sys
 
 import numpy as np
 
 from kinefuse.host import runner
+from kinefuse.host import argtypes
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.outputs import add_force_arg, check_new_file
 
@@ -29,7 +31,7 @@ def register(sub):
     p.add_argument("--status", action="store_true", help="append the filter's status outputs")
     p.add_argument("--frame", default="enu", choices=runner.FRAMES,
                    help="earth frame of the written quaternions (default enu, as BROAD)")
-    p.add_argument("--fs", type=float, default=None, metavar="HZ",
+    p.add_argument("--fs", type=argtypes.real(0.0, math.inf, lo_open=True, hi_open=True), default=None, metavar="HZ",
                    help="sampling rate of a seed-004 Arduino CSV (it has no time column; default 35)")
     add_force_arg(p, "the output CSV")
     p.set_defaults(func=run)

@@ -102,7 +102,7 @@ def test_plain_csv_equals_seed004_raw_column(run, files, tmp_path):
     assert np.allclose(xa, xb, atol=1e-6)
 
 
-def test_fs_sets_the_seed004_time_base(run, files, tmp_path):
+def test_fs_sets_the_seed004_time_base(run, files, tmp_path, capsys):
     _, _, z, s004, plain = files
     out = tmp_path / "o.csv"
     assert run("run", "--filter", "angle-kf", "--input", s004, "--out", out, "--fs", "20")[0] == 0
@@ -111,6 +111,12 @@ def test_fs_sets_the_seed004_time_base(run, files, tmp_path):
     _one_line_error(*run("run", "--filter", "angle-kf", "--input", plain, "--out", out, "--fs", "20",
                          "--force"),
                     "--fs applies to the seed-004 Arduino CSV")
+    # inf timed every sample at t = 0; 0, negative and NaN are usage errors too
+    for bad in ("inf", "0", "-35", "nan"):
+        with pytest.raises(SystemExit) as exc:          # argparse's usage error
+            run("run", "--filter", "angle-kf", "--input", s004, "--out", out, "--fs", bad, "--force")
+        assert exc.value.code == 2
+        assert f"argument --fs: {bad} is not in (0, inf)" in capsys.readouterr().err
 
 
 def test_missing_angle_predicts_and_bad_samples_are_rejected(run, tmp_path):
