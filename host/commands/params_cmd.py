@@ -95,17 +95,22 @@ def run(args) -> int:
             # every name read and every value encoded for its type before the first write:
             # --set KF_RATE_HZ=500 --set FOO=1 wrote KF_RATE_HZ, then failed on FOO
             from kinefuse.host.link.params import encode_value
+            for name, _value in sets:
+                if len(name.encode()) > 16:
+                    raise ParamError(f"unit {sysid}: parameter name {name!r} is longer than 16 "
+                                     f"characters (nothing written)")
             for name, value in sets:
                 try:
-                    if len(name.encode()) > 16:
-                        raise ParamError(f"parameter name {name!r} is longer than 16 characters")
                     client.get(name)
                     try:
                         encode_value(value, client.types[name])
                     except ParamError as exc:
                         raise ParamError(f"--set {name}: {exc}") from None
                 except ParamError as exc:
-                    raise ParamError(f"unit {sysid}: {exc} (nothing written)", exc.code) from None
+                    # no answer to a signed read: the unit drops frames signed with another key
+                    hint = ("; a unit drops frames signed with a key other than its own: is it "
+                            "the right key?" if exc.code is None and key is not None else "")
+                    raise ParamError(f"unit {sysid}: {exc} (nothing written{hint})", exc.code) from None
             result["set"] = {}
             for name, value in sets:
                 try:
