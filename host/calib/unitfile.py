@@ -128,6 +128,12 @@ def validate(doc, source: str = "calibration") -> dict:
             bad(f"sensors.{name}: M is ill-conditioned (cond {np.linalg.cond(M):.3g} > {MAX_COND:g})")
         if not isinstance(e.get("method"), str):
             bad(f"sensors.{name}: 'method' must be a string")
+        # a map the unit would refuse is refused here too (calibrate apply, report --unit-cal):
+        # |M_ij| <= 2 and b within the sensor's range hold for any real calibration
+        from kinefuse.host.calib import unitparams
+        why = unitparams.out_of_range(unitparams.sensor_values(name, M, b))
+        if why:
+            bad(f"sensors.{name}: {why}")
     history = doc.get("history", {})
     if not isinstance(history, dict):
         bad("'history' must be an object")

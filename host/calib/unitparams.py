@@ -63,26 +63,38 @@ def _ranges(sensor: int = 0) -> dict[str, tuple[float, float, float]]:
     return {calib_param_name(p.name, sensor): (f32(p.default), f32(p.lo), f32(p.hi)) for p in est.params}
 
 
+def sensor_values(key: str, M, b, sensor: int = 0) -> dict[str, float]:
+    """{parameter: float32 value} of one sensor's map (``key`` accel|gyro|mag)."""
+    M = np.asarray(M, float)
+    b = np.asarray(b, float)
+    vals = {param_name(key, f"M{i}{j}", sensor): M[i, j] for i in range(3) for j in range(3)}
+    vals.update({param_name(key, f"B{i}", sensor): b[i] for i in range(3)})
+    return {k: f32(v) for k, v in vals.items()}
+
+
+def out_of_range(vals: dict[str, float], sensor: int = 0) -> str | None:
+    """The first value outside the unit's parameter range, as a phrase (None: all inside)."""
+    rng = _ranges(_sensor(sensor))
+    for name, v in vals.items():
+        _, lo, hi = rng[name]
+        if not (math.isfinite(v) and lo <= v <= hi):
+            what = "M" if name.rsplit("_", 1)[1].startswith("M") else "b"   # KF_MAG_B0 is a b
+            return f"{what} value {v:.6g} ({name}) is outside the unit's range [{lo:g}, {hi:g}]"
+    return None
+
+
 def plan(doc: dict, source: str, sensor: int = 0) -> dict[str, float]:
     """{parameter: float32 value} for every sensor in the (validated) calibration ``doc``, as
     the parameters of the unit's sensor ``sensor`` (0: KF_ACC_* ..., 1: KF_ACC2_* ...); raises
     KinefuseError naming ``source`` when a value is outside the unit's range."""
     sensor = _sensor(sensor)
-    rng = _ranges(sensor)
     out: dict[str, float] = {}
     for key, entry in doc["sensors"].items():
-        M = np.asarray(entry["M"], float)
-        b = np.asarray(entry["b"], float)
-        vals = {param_name(key, f"M{i}{j}", sensor): M[i, j] for i in range(3) for j in range(3)}
-        vals.update({param_name(key, f"B{i}", sensor): b[i] for i in range(3)})
-        for name, v in vals.items():
-            _, lo, hi = rng[name]
-            v32 = f32(v)
-            if not (math.isfinite(v32) and lo <= v32 <= hi):
-                what = "M" if name.rsplit("_", 1)[1].startswith("M") else "b"   # KF_MAG_B0 is a b
-                raise KinefuseError(f"{source}: sensors.{key}: {what} value {v:.6g} ({name}) is outside "
-                                    f"the unit's range [{lo:g}, {hi:g}]: not applied")
-            out[name] = v32
+        vals = sensor_values(key, entry["M"], entry["b"], sensor)
+        why = out_of_range(vals, sensor)
+        if why:
+            raise KinefuseError(f"{source}: sensors.{key}: {why}: not applied")
+        out.update(vals)
     if not out:
         raise KinefuseError(f"{source}: the calibration file holds no sensor calibration")
     return out
