@@ -53,9 +53,12 @@ Q_JOINT = Var("q_joint", 4, -1.0, 1.0, "", "joint quaternion (w, x, y, z): dista
               "relative to the proximal segment, in the proximal segment frame")
 
 
+_SEGMENT = {"prox": "proximal", "dist": "distal"}
+
+
 def _offset_params(which: str) -> tuple[Param, ...]:
     return tuple(Param(f"{which}_{c}", 1.0 if c == "w" else 0.0, "", -1.0, 1.0,
-                       f"{c} of the {which}imal sensor-to-segment offset q_SB (normalised in use)")
+                       f"{c} of the {_SEGMENT[which]} sensor-to-segment offset q_SB (normalised in use)")
                  for c in "wxyz")
 
 

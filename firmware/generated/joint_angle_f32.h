@@ -21,10 +21,10 @@ typedef struct {
     float prox_x;  /* range [-1, 1], default 0: x of the proximal sensor-to-segment offset q_SB (normalised in use) */
     float prox_y;  /* range [-1, 1], default 0: y of the proximal sensor-to-segment offset q_SB (normalised in use) */
     float prox_z;  /* range [-1, 1], default 0: z of the proximal sensor-to-segment offset q_SB (normalised in use) */
-    float dist_w;  /* range [-1, 1], default 1: w of the distimal sensor-to-segment offset q_SB (normalised in use) */
-    float dist_x;  /* range [-1, 1], default 0: x of the distimal sensor-to-segment offset q_SB (normalised in use) */
-    float dist_y;  /* range [-1, 1], default 0: y of the distimal sensor-to-segment offset q_SB (normalised in use) */
-    float dist_z;  /* range [-1, 1], default 0: z of the distimal sensor-to-segment offset q_SB (normalised in use) */
+    float dist_w;  /* range [-1, 1], default 1: w of the distal sensor-to-segment offset q_SB (normalised in use) */
+    float dist_x;  /* range [-1, 1], default 0: x of the distal sensor-to-segment offset q_SB (normalised in use) */
+    float dist_y;  /* range [-1, 1], default 0: y of the distal sensor-to-segment offset q_SB (normalised in use) */
+    float dist_z;  /* range [-1, 1], default 0: z of the distal sensor-to-segment offset q_SB (normalised in use) */
 } joint_angle_f32_params;
 
 /* Filter state (no hidden globals: one struct per filter instance). */

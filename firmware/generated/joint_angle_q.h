@@ -21,10 +21,10 @@ typedef struct {
     int32_t prox_x;  /* range [-1, 1], default 0, Q1.30: value = raw * 2^-30: x of the proximal sensor-to-segment offset q_SB (normalised in use) */
     int32_t prox_y;  /* range [-1, 1], default 0, Q1.30: value = raw * 2^-30: y of the proximal sensor-to-segment offset q_SB (normalised in use) */
     int32_t prox_z;  /* range [-1, 1], default 0, Q1.30: value = raw * 2^-30: z of the proximal sensor-to-segment offset q_SB (normalised in use) */
-    int32_t dist_w;  /* range [-1, 1], default 1, Q1.30: value = raw * 2^-30: w of the distimal sensor-to-segment offset q_SB (normalised in use) */
-    int32_t dist_x;  /* range [-1, 1], default 0, Q1.30: value = raw * 2^-30: x of the distimal sensor-to-segment offset q_SB (normalised in use) */
-    int32_t dist_y;  /* range [-1, 1], default 0, Q1.30: value = raw * 2^-30: y of the distimal sensor-to-segment offset q_SB (normalised in use) */
-    int32_t dist_z;  /* range [-1, 1], default 0, Q1.30: value = raw * 2^-30: z of the distimal sensor-to-segment offset q_SB (normalised in use) */
+    int32_t dist_w;  /* range [-1, 1], default 1, Q1.30: value = raw * 2^-30: w of the distal sensor-to-segment offset q_SB (normalised in use) */
+    int32_t dist_x;  /* range [-1, 1], default 0, Q1.30: value = raw * 2^-30: x of the distal sensor-to-segment offset q_SB (normalised in use) */
+    int32_t dist_y;  /* range [-1, 1], default 0, Q1.30: value = raw * 2^-30: y of the distal sensor-to-segment offset q_SB (normalised in use) */
+    int32_t dist_z;  /* range [-1, 1], default 0, Q1.30: value = raw * 2^-30: z of the distal sensor-to-segment offset q_SB (normalised in use) */
 } joint_angle_q_params;
 
 /* Filter state (no hidden globals: one struct per filter instance). */

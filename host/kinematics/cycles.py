@@ -143,7 +143,8 @@ def normalise(t, angles, bounds, *, drop_edge: int = 0, max_rmse_deg: float = 10
     C = np.array(curves)
     kept = list(range(len(C)))
     rejected = []
-    # iterative: drop the worst cycle while it deviates too much from the mean of the others
+    # iterative: drop the worst cycle while it deviates too much from the mean curve of the kept
+    # cycles (itself included, as the README says: "the mean flexion curve")
     while len(kept) > 2:
         m = C[kept, :, ref_col].mean(axis=0)
         err = np.sqrt(((C[kept, :, ref_col] - m) ** 2).mean(axis=1))
