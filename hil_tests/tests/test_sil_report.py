@@ -56,12 +56,26 @@ def test_report_marks_mismatches_and_errors(tmp_path):
 @pytest.mark.parametrize("argv,msg", [
     (["--filters", "nosuch"], "unknown IMU filter"),
     (["--seconds", "0"], "--seconds must be positive"),
+    (["--seconds", "inf"], "--seconds must be positive and finite"),
+    (["--seconds", "nan"], "--seconds must be positive and finite"),
+    (["--broad-seconds", "nan"], "--broad-seconds must be positive and finite"),
+    (["--broad-seconds", "inf"], "--broad-seconds must be positive and finite"),
     (["--firmware", "--pil-samples", "-1"], "--pil-samples and --sil-samples must be >= 0"),
 ])
 def test_sil_report_bad_arguments(tmp_path, capsys, argv, msg):
     rc = main(["sil", "report", "--no-qemu", "--out", str(tmp_path)] + argv)
     err = capsys.readouterr().err
     assert rc == 2 and msg in err and "Traceback" not in err
+
+
+def test_sil_report_refuses_seconds_shorter_than_a_sample(tmp_path, capsys):
+    # 1 ms of a 100 Hz scenario is no sample: every loop failed on an empty input and the report
+    # listed the failures as loop errors
+    rc = main(["sil", "report", "--no-qemu", "--filters", "madgwick", "--scenarios", "rest",
+               "--seconds", "0.001", "--broad", "none", "--out", str(tmp_path)])
+    err = capsys.readouterr().err
+    assert rc == 2 and "--seconds keeps no sample of rest (100 Hz): give at least 0.01 s" in err
+    assert not (tmp_path / "sil_report.md").exists()
 
 
 def test_sil_report_keeps_an_earlier_report_unless_forced(tmp_path, capsys):

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 from pathlib import Path
 
 from kinefuse.host.errors import KinefuseError
@@ -57,10 +58,10 @@ def run_report(args: argparse.Namespace) -> int:
     bad = [f for f in filters if f not in loops.imu_filters()]
     if bad:
         raise KinefuseError(f"unknown IMU filter {bad[0]!r} (available: {', '.join(loops.imu_filters())})")
-    if args.seconds is not None and not args.seconds > 0:
-        raise KinefuseError("--seconds must be positive")
-    if args.broad_seconds is not None and args.broad_seconds < 0:
-        raise KinefuseError("--broad-seconds must be positive, or 0 for the whole trial")
+    if args.seconds is not None and not (math.isfinite(args.seconds) and args.seconds > 0):
+        raise KinefuseError("--seconds must be positive and finite")
+    if args.broad_seconds is not None and not (math.isfinite(args.broad_seconds) and args.broad_seconds >= 0):
+        raise KinefuseError("--broad-seconds must be positive and finite, or 0 for the whole trial")
     if (args.pil_samples is not None and args.pil_samples < 0) or args.sil_samples < 0 or args.jobs < 1:
         raise KinefuseError("--pil-samples and --sil-samples must be >= 0, --jobs >= 1")
     qemu = not args.no_qemu
@@ -97,6 +98,11 @@ def run_report(args: argparse.Namespace) -> int:
             case = scenarios.broad_case(path)
             keep = seconds if args.broad_seconds is None else args.broad_seconds
             cases.append(case.head(int(keep * case.rate_hz)) if keep else case)
+        empty = [c for c in cases if c.n == 0]
+        if empty:       # shorter than one sample: every loop would fail on an empty input
+            opt = "--broad-seconds" if empty[0].source == "broad" and args.broad_seconds is not None else "--seconds"
+            raise KinefuseError(f"{opt} keeps no sample of {empty[0].name} ({empty[0].rate_hz:g} Hz): "
+                                f"give at least {math.ceil(1e4 / empty[0].rate_hz) / 1e4:g} s")
         if args.firmware:
             from kinefuse.hil_tests.harness.firmware import firmware_missing
             if firmware_missing():
