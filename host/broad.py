@@ -61,6 +61,10 @@ class Trial:
     groups: tuple[str, ...] = ()
     source: Path | None = None
     description: str = ""
+    #: (N,) bool, True on samples carrying a new magnetometer reading (a simulator .mat's
+    #: ``mag_valid``: the magnetometer may be slower, the others repeat the last value);
+    #: None = every sample (BROAD)
+    mag_valid: np.ndarray | None = dataclasses.field(default=None, repr=False)
 
     @property
     def n(self) -> int:
@@ -91,7 +95,8 @@ class Trial:
         return dataclasses.replace(
             self, t=np.arange(stop - start) / self.rate_hz, gyr=self.gyr[sl].copy(),
             acc=self.acc[sl].copy(), mag=self.mag[sl].copy(), quat_ref=self.quat_ref[sl].copy(),
-            movement=self.movement[sl].copy())
+            movement=self.movement[sl].copy(),
+            mag_valid=None if self.mag_valid is None else self.mag_valid[sl].copy())
 
 
 def load_trial(path: str | os.PathLike) -> Trial:
@@ -198,6 +203,7 @@ def _read_mat(path: Path) -> dict:
             "quat_ref": mat["opt_quat"], "movement": mat["movement"],
             "rate_hz": mat["sampling_rate"], "name": path.stem,
             "description": _info_description(info),
+            **({"mag_valid": mat["mag_valid"]} if "mag_valid" in mat else {}),
             "_keys": {"gyr": "imu_gyr", "acc": "imu_acc", "mag": "imu_mag", "quat_ref": "opt_quat"}}
 
 
@@ -253,11 +259,21 @@ def _build_trial(path: Path, raw: dict) -> Trial:
         raise KinefuseError(f"{path}: unreadable sampling rate") from None
     if not (np.isfinite(rate) and rate > 0):
         raise KinefuseError(f"{path}: invalid sampling rate {rate!r} Hz")
+    mag_valid = None
+    if "mag_valid" in raw:      # the simulator's .mat: which samples hold a new magnetometer reading
+        try:
+            mag_valid = np.asarray(raw["mag_valid"], dtype=np.float64).reshape(-1)
+        except (TypeError, ValueError):
+            raise KinefuseError(f"{path}: mag_valid is not numeric") from None
+        if mag_valid.shape[0] != n or not np.all(np.isin(mag_valid, (0.0, 1.0))):
+            raise KinefuseError(f"{path}: mag_valid must hold one 0/1 flag per sample ({n})")
+        mag_valid = mag_valid.astype(bool)
     name = raw["name"]
     meta = trial_metadata(name, path)
     return Trial(name=name, rate_hz=rate, t=np.arange(n) / rate, gyr=gyr, acc=acc, mag=mag,
                  quat_ref=quat, movement=movement.astype(bool), groups=tuple(meta.get("groups", ())),
-                 source=path, description=raw.get("description") or meta.get("description", ""))
+                 source=path, description=raw.get("description") or meta.get("description", ""),
+                 mag_valid=mag_valid)
 
 
 def _info_description(info) -> str:
