@@ -12,6 +12,7 @@
 """
 from __future__ import annotations
 
+import math
 import time
 
 import numpy as np
@@ -34,8 +35,10 @@ def register_bench(bench_subparsers) -> None:
 
 def run(args) -> int:
     from kinefuse.host.link.cli_util import console, print_json
-    if not args.seconds > 0 or not 1 <= args.rate <= 2000:
-        raise KinefuseError("--seconds must be positive and --rate within 1..2000 Hz")
+    if not (math.isfinite(args.seconds) and args.seconds > 0) or not 1 <= args.rate <= 2000:
+        raise KinefuseError("--seconds must be positive and finite and --rate within 1..2000 Hz")
+    if args.hil_samples < 1:
+        raise KinefuseError(f"--hil-samples {args.hil_samples}: must be at least 1")
     con = console(args.json)
     todo = args.only or list(SECTIONS)
     out: dict = {}

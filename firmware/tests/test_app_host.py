@@ -333,3 +333,15 @@ def test_replay_of_a_recording_that_started_late_matches_the_unit(tmp_path, caps
     rms = float(part.split("angle RMS ")[1].split(" deg")[0])
     mx = float(part.split("max ")[1].split(" deg")[0])
     assert rms == 0.0 and mx == 0.0, line
+
+
+@pytest.mark.parametrize("argv,msg", [
+    (["--hil-samples", "0"], "--hil-samples 0: must be at least 1"),      # was an IndexError
+    (["--hil-samples", "-5"], "--hil-samples -5: must be at least 1"),    # was a ValueError
+    (["--seconds", "inf"], "--seconds must be positive and finite"),      # streamed for ever
+])
+def test_bench_firmware_bad_arguments(capsys, argv, msg):
+    from kinefuse.host.cli import main
+    rc = main(["bench", "firmware", "--only", "hil"] + argv)
+    err = capsys.readouterr().err
+    assert rc == 2 and msg in err and "Traceback" not in err and "internal error" not in err
