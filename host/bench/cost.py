@@ -149,8 +149,9 @@ def run(args: argparse.Namespace) -> int:
                             f"(available: {', '.join(costable)})")
     formats = [f.strip() for f in args.formats.split(",") if f.strip()]
     targets = [t.strip() for t in args.targets.split(",") if t.strip()]
-    if any(f not in ("f32", "q") for f in formats) or any(t not in ("m4f", "m0") for t in targets):
-        raise KinefuseError("--formats takes f32,q and --targets m4f,m0")
+    if (not formats or not targets or any(f not in ("f32", "q") for f in formats)
+            or any(t not in ("m4f", "m0") for t in targets)):
+        raise KinefuseError("--formats takes f32,q and --targets m4f,m0")   # (an empty list measured nothing)
     if not 1 <= args.k <= 1000:
         raise KinefuseError("--k must be between 1 and 1000")
     if args.top < 1:

@@ -249,6 +249,17 @@ def test_bench_cost_covers_the_smoothers(bench):
     assert row["own_flash_bytes"] > 100
 
 
+@pytest.mark.parametrize("opt", ["--formats", "--targets"])
+def test_bench_cost_refuses_an_empty_format_or_target_list(bench, opt):
+    # `--formats ""` (or `--formats ,`) measured nothing and exited 0 with an empty table
+    from kinefuse.hil_tests.qemu import qemu_unavailable
+    if qemu_unavailable():
+        pytest.skip(qemu_unavailable())
+    code, out, err = bench("cost", "--filters", "angle-kf", "--no-competitors", "--no-mix", "--k", "10",
+                           opt, ",", "--json")
+    _one_line_error(code, out, err, "--formats takes f32,q and --targets m4f,m0")
+
+
 # angle-kf: the smallest update, so the single-step traces take seconds (angle-ekf q on the M0: 38 s)
 @pytest.mark.parametrize("fmt,target", [("f32", "m4f"), ("q", "m4f"), ("f32", "m0")])
 def test_bench_cost_profile_accounts_for_every_instruction(bench, fmt, target):
