@@ -9,7 +9,9 @@ Units and frames of a :class:`Trial` (identical to the BROAD files):
 * ``quat_ref`` optical reference (w, x, y, z) rotating sensor coordinates into the earth frame,
   earth frame East-North-Up aligned with magnetic north; NaN rows where markers were lost;
 * ``movement`` True in the motion phases, the only samples the BROAD metric scores;
-* ``t`` seconds from the first sample, derived from the constant sampling rate.
+* ``t`` seconds from the first sample, derived from the constant sampling rate; a simulator
+  ``.mat`` (``kinefuse sim run --out x.mat``) with timing effects keeps its own ``t`` and gives
+  the filters its per-sample ``steps`` (and ``mag_valid``, its slower magnetometer's new readings).
 """
 from __future__ import annotations
 
@@ -65,6 +67,10 @@ class Trial:
     #: ``mag_valid``: the magnetometer may be slower, the others repeat the last value);
     #: None = every sample (BROAD)
     mag_valid: np.ndarray | None = dataclasses.field(default=None, repr=False)
+    #: (N,) s, the step to each sample from the one before (the first: the median step) when the
+    #: file has sample times of its own (a simulator .mat's ``t``: jitter, drops, duplicates,
+    #: gaps); None = the constant rate (BROAD).  ``t`` is then the file's times.
+    steps: np.ndarray | None = dataclasses.field(default=None, repr=False)
 
     @property
     def n(self) -> int:
@@ -92,8 +98,9 @@ class Trial:
         if not 0 <= start < stop <= self.n:
             raise KinefuseError(f"{self.name}: sample window {start}:{stop} outside 0:{self.n}")
         sl = slice(start, stop)
+        t = np.arange(stop - start) / self.rate_hz if self.steps is None else self.t[sl] - self.t[start]
         return dataclasses.replace(
-            self, t=np.arange(stop - start) / self.rate_hz, gyr=self.gyr[sl].copy(),
+            self, t=t, steps=None if self.steps is None else self.steps[sl].copy(), gyr=self.gyr[sl].copy(),
             acc=self.acc[sl].copy(), mag=self.mag[sl].copy(), quat_ref=self.quat_ref[sl].copy(),
             movement=self.movement[sl].copy(),
             mag_valid=None if self.mag_valid is None else self.mag_valid[sl].copy())
@@ -203,7 +210,7 @@ def _read_mat(path: Path) -> dict:
             "quat_ref": mat["opt_quat"], "movement": mat["movement"],
             "rate_hz": mat["sampling_rate"], "name": path.stem,
             "description": _info_description(info),
-            **({"mag_valid": mat["mag_valid"]} if "mag_valid" in mat else {}),
+            **{k: mat[k] for k in ("mag_valid", "t") if k in mat},
             "_keys": {"gyr": "imu_gyr", "acc": "imu_acc", "mag": "imu_mag", "quat_ref": "opt_quat"}}
 
 
@@ -268,9 +275,21 @@ def _build_trial(path: Path, raw: dict) -> Trial:
         if mag_valid.shape[0] != n or not np.all(np.isin(mag_valid, (0.0, 1.0))):
             raise KinefuseError(f"{path}: mag_valid must hold one 0/1 flag per sample ({n})")
         mag_valid = mag_valid.astype(bool)
+    t, steps = np.arange(n) / rate, None
+    if "t" in raw and "mag_valid" in raw:   # the simulator's .mat: its own sample times
+        try:
+            tf = np.asarray(raw["t"], dtype=np.float64).reshape(-1)
+        except (TypeError, ValueError):
+            raise KinefuseError(f"{path}: t is not numeric") from None
+        d = np.diff(tf)
+        if tf.shape[0] != n or not np.all(np.isfinite(tf)) or np.any(d < 0):
+            raise KinefuseError(f"{path}: t must hold one finite, non-decreasing time (s) per "
+                                f"sample ({n})")
+        if n > 1 and np.ptp(d) > 1e-9 * max(1.0, abs(float(tf[-1]))):   # not the constant rate
+            t, steps = tf, np.concatenate([[float(np.median(d))], d])
     name = raw["name"]
     meta = trial_metadata(name, path)
-    return Trial(name=name, rate_hz=rate, t=np.arange(n) / rate, gyr=gyr, acc=acc, mag=mag,
+    return Trial(name=name, rate_hz=rate, t=t, steps=steps, gyr=gyr, acc=acc, mag=mag,
                  quat_ref=quat, movement=movement.astype(bool), groups=tuple(meta.get("groups", ())),
                  source=path, description=raw.get("description") or meta.get("description", ""),
                  mag_valid=mag_valid)

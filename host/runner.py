@@ -61,7 +61,9 @@ def check_params(name: str, params: dict | None = None, preset: str | None = Non
 def imu_inputs(trial, mag_every: int = 1) -> dict[str, np.ndarray]:
     """A recording's arrays as the 'imu' input record (dt per sample in seconds)."""
     n = len(trial.gyr)
-    dt = getattr(trial, "dt", None)
+    dt = getattr(trial, "steps", None)      # a trial with sample times of its own
+    if dt is None:
+        dt = getattr(trial, "dt", None)
     if dt is None or np.ndim(dt) == 0:
         dt = np.full(n, float(dt) if dt is not None else 1.0 / float(trial.rate_hz))
     mag_valid = getattr(trial, "mag_valid", None)

@@ -71,9 +71,13 @@ def run(args) -> int:
             raise KinefuseError("--compare-unit needs a .kfr unit recording with KF_ORIENTATION messages")
         from kinefuse.host.broad import load_trial
         trial = load_trial(path)
-        inputs = trial                      # constant rate: the same input as `kinefuse run`
-        t = np.arange(trial.n) * float(trial.dt)
-        time_base = "s from the first sample (constant rate)"
+        inputs = trial                      # the same input as `kinefuse run`
+        if trial.steps is None:
+            t = np.arange(trial.n) * float(trial.dt)
+            time_base = "s from the first sample (constant rate)"
+        else:                               # a simulator .mat with timing effects: its own times
+            t = np.asarray(trial.t, dtype=np.float64)
+            time_base = "s, the file's sample times"
     else:
         from rich.console import Console
         from kinefuse.host.link.cli_util import progress

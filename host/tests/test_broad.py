@@ -233,3 +233,29 @@ def test_simulator_mat_keeps_the_slower_magnetometer(tmp_path):
                                                if not k.startswith("__")}, "mag_valid": np.full(5, 1)})
     with pytest.raises(KinefuseError, match="mag_valid must hold one 0/1 flag per sample"):
         broad.load_trial(tmp_path / "bad.mat")
+
+
+def test_simulator_mat_keeps_its_sample_times(tmp_path):
+    """A simulator .mat's t (jitter, drops, duplicates, a 0.5 s gap) was replaced by index / rate,
+    so the filters integrated the gap as one 10 ms step; a constant-rate file keeps steps None
+    (the BROAD path, bit for bit)."""
+    from kinefuse.hil_tests import sim
+    from kinefuse.host import runner
+    rec = sim.simulate("jitter_and_drops", seed=0, duration_s=25.0)
+    rec.save(str(tmp_path / "j.mat"))
+    trial = broad.load_trial(tmp_path / "j.mat")
+    assert np.array_equal(trial.t, rec.t)
+    d = np.diff(rec.t)
+    assert np.array_equal(trial.steps[1:], d) and trial.steps[0] == np.median(d) and d.max() > 0.45
+    assert np.array_equal(runner.imu_inputs(trial)["dt"], trial.steps)
+    w = trial.window(10, 50)
+    assert np.array_equal(w.steps, trial.steps[10:50]) and w.t[0] == 0.0
+    assert np.allclose(w.t, rec.t[10:50] - rec.t[10], rtol=0, atol=1e-12)
+    sim.simulate("rest", seed=0, duration_s=2.0).save(str(tmp_path / "r.mat"))
+    r = broad.load_trial(tmp_path / "r.mat")
+    assert r.steps is None and np.array_equal(runner.imu_inputs(r)["dt"], np.full(r.n, 0.01))
+    m = {k: v for k, v in scipy.io.loadmat(tmp_path / "j.mat").items() if not k.startswith("__")}
+    m["t"] = m["t"][:, ::-1]
+    scipy.io.savemat(tmp_path / "bad.mat", m)
+    with pytest.raises(KinefuseError, match="t must hold one finite, non-decreasing time"):
+        broad.load_trial(tmp_path / "bad.mat")
