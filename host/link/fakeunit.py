@@ -159,6 +159,7 @@ class FakeUnit:
             t = int(self.next_sample_us)
             self.next_sample_us += self.period_us
             frame = self._sample(t)
+            counter = self.sample_counter          # the counter this sample's frame carries
             self.sample_counter = (self.sample_counter + 1) & 0xFFFFFFFF
             if self.drop_every and self.sample_counter % self.drop_every == 0:
                 self.counters["frames_dropped"] += 1
@@ -166,7 +167,7 @@ class FakeUnit:
                 out.append(frame)
                 self.sent_samples += 1
             if ori_every and self.sample_counter % ori_every == 0:
-                out.append(self._orientation(t))
+                out.append(self._orientation(t, counter))
         return out
 
     def _sample(self, t_us: int) -> bytes:
@@ -191,9 +192,11 @@ class FakeUnit:
                                gyro_y=int(w[1]), gyro_z=int(w[2]), mag_x=int(m[0]), mag_y=int(m[1]),
                                mag_z=int(m[2]), temperature=3150, unit_id=self.params["KF_UNIT_ID"], flags=flags)
 
-    def _orientation(self, t_us: int) -> bytes:
+    def _orientation(self, t_us: int, counter: int) -> bytes:
+        """KF_ORIENTATION after the sample of time ``t_us`` and ``counter``: the dialect's
+        time_boot_us and sample_counter of the newest KF_RAW_SAMPLE used (the same pair)."""
         status = 1 | 8 | (64 if self.tared else 0)  # INITIALISED | MAG_USED
-        return self.enc.encode(MSG_ORI, time_boot_us=t_us, sample_counter=self.sample_counter,
+        return self.enc.encode(MSG_ORI, time_boot_us=t_us, sample_counter=counter,
                                q_w=float(self.q[0]), q_x=float(self.q[1]), q_y=float(self.q[2]), q_z=float(self.q[3]),
                                rejected_samples=0, status=status, earth_frame=1, filter_id=1,
                                unit_id=self.params["KF_UNIT_ID"], cov=[1e-4, 0, 0, 1e-4, 0, 4e-4])

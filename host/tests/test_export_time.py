@@ -82,3 +82,29 @@ def test_a_unit_without_a_clock_fit_says_what_host_fit_s_holds(tmp_path):
     comments, cols = _csv(Path(f["file"]))
     assert np.isnan(cols["host_fit_s"]).all()
     assert any("no clock fit (too few samples): host_fit_s is nan" in c for c in comments), comments
+
+
+def test_fake_unit_orientation_names_the_sample_it_follows(two_units, tmp_path):
+    """KF_ORIENTATION's time_boot_us and sample_counter are those of the newest KF_RAW_SAMPLE used
+    (dialect): the fake unit sent the time of sample k with counter k + 1 (one sample off, so a
+    match on the counter paired each quaternion with the next sample)."""
+    p, _, _ = two_units
+    export_csv(decode_file(p), tmp_path, ["KF_RAW_SAMPLE", "KF_ORIENTATION"])
+    raw = _csv(tmp_path / "KF_RAW_SAMPLE_s0_u1.csv")[1]
+    ori = _csv(tmp_path / "KF_ORIENTATION_s0_u1.csv")[1]
+    time_of = dict(zip(raw["sample_counter"], raw["time_boot_us"]))
+    pairs = [(c, t) for c, t in zip(ori["sample_counter"], ori["time_boot_us"]) if c in time_of]
+    assert len(pairs) > 0.9 * ori["sample_counter"].size > 0
+    assert all(time_of[c] == t for c, t in pairs), pairs[:3]
+    # and the quaternion is sensor -> ENU: it turns that sample's specific force to +g up
+    # and its field to north and down (the fake unit's earth field 0, 19, -45 µT)
+    ix = {c: k for k, c in enumerate(raw["sample_counter"])}
+    k = np.array([ix[c] for c, _ in pairs])
+    om = np.array([list(ori["sample_counter"]).index(c) for c, _ in pairs])
+    q = np.column_stack([ori[f"quat_{a}"][om] for a in "wxyz"])
+    for ch, unit, want, tol in (("acc", "mps2", (0, 0, 9.80665), 0.15), ("mag", "uT", (0, 19, -45), 1.5)):
+        v = np.column_stack([raw[f"{ch}_{a}_{unit}"][k] for a in "xyz"])
+        w, u = q[:, :1], q[:, 1:]
+        t = 2 * np.cross(u, v)
+        earth = v + w * t + np.cross(u, t)           # q v q*
+        assert np.abs(earth.mean(axis=0) - want).max() < tol, (ch, earth.mean(axis=0))
