@@ -20,7 +20,7 @@ def run(args) -> int:
     from kinefuse.codegen.fixed import RangeError
     try:
         if args.check:
-            stale = generate.check()
+            stale = _check(generate, args.filter) if args.filter else generate.check()
             if stale:
                 print("kinefuse codegen --check: stale generated files (run `kinefuse codegen` and "
                       "commit):\n  " + "\n  ".join(stale), file=sys.stderr)
@@ -36,3 +36,12 @@ def run(args) -> int:
         print(f"  {w}", file=sys.stderr)
     print(f"{len(written)} file(s) updated in {generate.GENERATED_DIR}", file=sys.stderr)
     return 0
+
+
+def _check(generate, names: list[str]) -> list[str]:
+    """``--check --filter``: the generated files of these filters that differ (``--filter`` was
+    ignored: every filter was checked, and an unknown name passed)."""
+    out_dir = generate.GENERATED_DIR
+    files = generate.render_all(names)          # ValueError on an unknown filter
+    return [rel for rel, text in files.items()
+            if not (out_dir / rel).exists() or (out_dir / rel).read_text() != text]

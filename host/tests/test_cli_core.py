@@ -91,6 +91,18 @@ def test_codegen_check_passes_on_committed_files():
     assert r.returncode == 0, r.stderr
 
 
+def test_codegen_check_honours_filter(tmp_path, monkeypatch, capsys):
+    # --filter was ignored by --check: every filter was checked and an unknown name passed
+    from kinefuse.codegen import generate
+    from kinefuse.host import cli
+    assert cli.main(["codegen", "--check", "--filter", "nosuch"]) == 2
+    assert "unknown filter 'nosuch'" in capsys.readouterr().err
+    monkeypatch.setattr(generate, "GENERATED_DIR", tmp_path)     # nothing generated there
+    assert cli.main(["codegen", "--check", "--filter", "madgwick"]) == 1
+    err = capsys.readouterr().err
+    assert "madgwick_f32.c" in err and "madgwick_q.c" in err and "flagship" not in err
+
+
 def test_bench_bitexact_json(short_trial):
     r = kf("bench", "bitexact", "--data", str(short_trial), "--filter", "complementary", "--json")
     assert r.returncode == 0, r.stderr
