@@ -165,6 +165,14 @@ def test_a_hex_record_with_a_bad_checksum_is_refused(capsys, tmp_path):
     assert code == 2 and "checksum" in err and err.count("\n") == 1
 
 
+def test_a_hex_record_that_is_not_hexadecimal_is_refused(capsys, tmp_path):
+    # was an internal error (ValueError from int(..., 16)) while looking for the load address
+    h = tmp_path / "bad.hex"
+    h.write_text(":ZZ0000000000\n")
+    code, _, err = run(capsys, "--image", str(h), "--mcu", "stm32f411re", "--dry-run")
+    assert code == 2 and "line 1 is not hexadecimal" in err and err.count("\n") == 1, err
+
+
 def test_dfu_util_needs_the_mcu_for_the_check(capsys, image):
     code, _, err = run(capsys, "--image", str(image / "fw.bin"), "--tool", "dfu-util", "--dry-run")
     assert code == 2 and "--mcu" in err and "memory map" in err and err.count("\n") == 1

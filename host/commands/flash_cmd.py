@@ -110,25 +110,12 @@ def _parse_address(text: str | None) -> int | None:
 
 
 def hex_load_address(path: Path) -> int:
-    """Lowest address of the data records of an Intel HEX file."""
-    base, low = 0, None
-    for n, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
-        line = line.strip()
-        if not line:
-            continue
-        if not line.startswith(":") or len(line) < 11:
-            raise KinefuseError(f"{path}: line {n} is not an Intel HEX record")
-        count, addr, kind = int(line[1:3], 16), int(line[3:7], 16), int(line[7:9], 16)
-        if kind == 0 and count:
-            a = base + addr
-            low = a if low is None else min(low, a)
-        elif kind == 2:
-            base = int(line[9:13], 16) << 4
-        elif kind == 4:
-            base = int(line[9:13], 16) << 16
-    if low is None:
+    """Lowest address of the data records of an Intel HEX file (records checked as by
+    :func:`hex_segments`: a non-hexadecimal record was an internal error here)."""
+    segs = hex_segments(path)
+    if not segs:
         raise KinefuseError(f"{path} holds no data")
-    return low
+    return min(a for a, _data in segs)
 
 
 def hex_segments(path: Path) -> list[tuple[int, bytes]]:
