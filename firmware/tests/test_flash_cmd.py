@@ -102,6 +102,16 @@ def test_user_errors_are_one_line(capsys, image, argv, text):
     assert code == 2 and text in err and err.count("\n") == 1 and "Traceback" not in err
 
 
+@pytest.mark.parametrize("value", ["nan", "inf", "0", "-1"])
+def test_timeout_must_be_a_positive_finite_number(capsys, image, value):
+    # nan was accepted (`nan <= 0` is false) and handed to subprocess.run
+    with pytest.raises(SystemExit) as exc:
+        main(["flash", "--image", str(image / "fw.hex"), "--mcu", "stm32f411re", "--dry-run",
+              "--timeout", value])
+    err = capsys.readouterr().err
+    assert exc.value.code == 2 and f"argument --timeout: {value} is not in (0, 86400]" in err
+
+
 def test_missing_tool_is_reported(capsys, image, monkeypatch):
     monkeypatch.setenv("PATH", str(image))
     code, _, err = run(capsys, "--image", str(image / "fw.hex"), "--mcu", "stm32f411re")

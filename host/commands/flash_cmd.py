@@ -28,6 +28,7 @@ import shutil
 import subprocess
 from pathlib import Path
 
+from kinefuse.host import argtypes
 from kinefuse.host.errors import KinefuseError
 
 TOOLS = ("pyocd", "dfu-util")
@@ -89,7 +90,7 @@ def register(subparsers) -> None:
     p.add_argument("--alt", type=int, default=0, metavar="N", help="dfu-util: alternate setting (default 0)")
     p.add_argument("--dfu-device", metavar="VID:PID", help="dfu-util: USB vendor:product id")
     p.add_argument("--serial", metavar="SERIAL", help="dfu-util: USB serial number of the device")
-    p.add_argument("--timeout", type=float, default=180.0, metavar="S", help="give up after S seconds (default 180)")
+    p.add_argument("--timeout", type=argtypes.real(0, 86400, lo_open=True), default=180.0, metavar="S", help="give up after S seconds (default 180)")
     p.add_argument("--dry-run", action="store_true", help="print the command line, do not run it")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=run)
