@@ -112,6 +112,14 @@ def test_timeout_must_be_a_positive_finite_number(capsys, image, value):
     assert exc.value.code == 2 and f"argument --timeout: {value} is not in (0, 86400]" in err
 
 
+@pytest.mark.parametrize("opt", [["--target", "m0"], ["--filters", "madgwick"]])
+def test_build_options_with_an_image_are_refused(capsys, image, opt):
+    # they were ignored: the --image was flashed whatever --target or --filters said
+    code, out, err = run(capsys, "--image", str(image / "fw.hex"), "--mcu", "stm32f411re", "--dry-run", *opt)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert f"{opt[0]} chooses what to build; --image {image / 'fw.hex'} is flashed as it is" in err
+
+
 def test_missing_tool_is_reported(capsys, image, monkeypatch):
     monkeypatch.setenv("PATH", str(image))
     code, _, err = run(capsys, "--image", str(image / "fw.hex"), "--mcu", "stm32f411re")

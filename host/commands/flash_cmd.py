@@ -75,7 +75,7 @@ BOARD_PORTS: dict[str, tuple[str, ...]] = {"mps2-an386": (), "mps2-an385": ()}
 def register(subparsers) -> None:
     p = subparsers.add_parser("flash", help="program a unit (pyOCD or dfu-util)",
                               description=__doc__.split("\n\n")[0].split(": ", 1)[-1])
-    p.add_argument("--target", choices=("m4f", "m0"), default="m4f",
+    p.add_argument("--target", choices=("m4f", "m0"), default=None,
                    help="build to flash when no --image: m4f (float32 filters) or m0 (fixed point); default m4f")
     p.add_argument("--image", metavar="FILE", help="flash this .hex/.elf/.bin instead of building")
     p.add_argument("--filters", metavar="A,B", help="build only these wired filters, or 'all' (default: all; "
@@ -333,6 +333,10 @@ def run(args) -> int:
     con = console(args.json)
     if args.timeout <= 0:
         raise KinefuseError("--timeout must be positive")
+    if args.image and (args.target or args.filters):     # (they were ignored: the image was flashed)
+        raise KinefuseError(f"{'--target' if args.target else '--filters'} chooses what to build; "
+                            f"--image {args.image} is flashed as it is: give one or the other")
+    args.target = args.target or "m4f"
     if args.tool == "pyocd" and not args.mcu:
         command_line(args, {"hex": None, "bin": None, "elf": None})   # the one-line error, before building
     if not args.image:      # before building: no board port matches any real MCU
