@@ -148,6 +148,9 @@ FRAME_TEXT = {"enu": "earth frame ENU (x East, y North, z Up)",
 #: yz, zz): written in the requested earth frame like q
 EARTH_QUATERNIONS = ("q6", "q9")
 EARTH_COVARIANCES = ("cov_att",)
+#: status outputs that are 3-vectors along the sensor axes (gyroscope bias and its variance,
+#: the ESKF's linear acceleration): the same in either earth frame
+SENSOR_VECTORS = ("bias", "var_bias", "lin_acc")
 
 
 def _cov6_enu_to_ned(c: np.ndarray) -> np.ndarray:
@@ -202,6 +205,17 @@ def write_estimates_csv(path, t, res: FilterResult, comment: str, status: bool =
             notes = ([f"{', '.join(k for k in EARTH_QUATERNIONS if k in res.outputs)} sensor->{f}"]
                      if any(k in res.outputs for k in EARTH_QUATERNIONS) else [])
             notes += [f"{k} in the {f} frame" for k in EARTH_COVARIANCES if k in res.outputs]
+            # what the numbered columns hold (k_0, k_1, ...)
+            width = {k: np.asarray(v).reshape(n, -1).shape[1] for k, v in res.outputs.items() if k != "q"}
+            quats = [k for k in EARTH_QUATERNIONS if width.get(k) == 4]
+            covs = [k for k in EARTH_COVARIANCES if width.get(k) == 6]
+            vecs = [k for k in SENSOR_VECTORS if width.get(k) == 3]
+            if quats:
+                notes.append(f"{', '.join(k + '_0..3' for k in quats)} = w, x, y, z")
+            if covs:
+                notes.append(f"{', '.join(k + '_0..5' for k in covs)} = xx, xy, xz, yy, yz, zz")
+            if vecs:
+                notes.append(f"{', '.join(k + '_0..2' for k in vecs)} = x, y, z of the sensor frame")
             comment = (f"{comment}; status columns: {', '.join(described)}"
                        + (f" ({'; '.join(notes)})" if notes else ""))
     try:

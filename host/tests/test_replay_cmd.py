@@ -231,3 +231,22 @@ def test_simulator_mat_replays_on_its_own_sample_times(run, tmp_path):
     err_deg = np.degrees(2 * np.arccos(dot))
     assert np.median(err_deg) < 1.0 and err_deg.max() < 20.0, (np.median(err_deg), err_deg.max())
     assert x[-1, header.index("rejected")] >= np.count_nonzero(np.diff(rec.t) == 0)
+
+
+@pytest.mark.parametrize("filt, notes", [
+    ("flagship", ["q6_0..3, q9_0..3 = w, x, y, z", "bias_0..2 = x, y, z of the sensor frame"]),
+    ("eskf", ["cov_att_0..5 = xx, xy, xz, yy, yz, zz",
+              "bias_0..2, var_bias_0..2, lin_acc_0..2 = x, y, z of the sensor frame"]),
+])
+def test_status_comment_says_what_the_numbered_columns_hold(run, tmp_path, filt, notes):
+    """--status wrote q6_0..q6_3, cov_att_0..cov_att_5, bias_0..2, lin_acc_0..2 with units but not
+    which component each number is (cov_att: six of nine entries in an unnamed order) nor that
+    bias and lin_acc are along the sensor axes (they stay so with --frame ned)."""
+    for frame in ("enu", "ned"):
+        out = tmp_path / f"{filt}-{frame}.csv"
+        code, _, err = run("run", "--input", TRIAL, "--out", out, "--filter", filt, "--status",
+                           "--frame", frame)
+        assert code == 0, err
+        comment = _csv(out)[0]
+        for note in notes:
+            assert note in comment, comment
