@@ -299,6 +299,18 @@ def main(argv=None) -> int:
     ap.add_argument("--json", action="store_true", help="print one JSON object")
     args = ap.parse_args(argv)
     try:
+        # options that do not apply to the action were ignored: refuse them
+        given = [o for o, v in (("--out", args.out), ("--opt", args.opt), ("--filters", args.filters),
+                                ("--no-leg", args.no_leg), ("--check", args.check)) if v]
+        applies = {"tables": ("--check",), "sizes": ()}.get(args.what,
+                                                            ("--out", "--opt", "--filters", "--no-leg"))
+        extra = [o for o in given if o not in applies]
+        if extra:
+            raise KinefuseError(f"{extra[0]} does not apply to {args.what}"
+                                + (" (its builds are fixed: every target, filter set and -O2/-Os)"
+                                   if args.what == "sizes" else ""))
+        if args.out and Path(args.out).exists() and not Path(args.out).is_dir():
+            raise KinefuseError(f"--out {args.out} is a file, not a folder")
         if args.what == "tables":
             if args.check:
                 stale = apptables.check()

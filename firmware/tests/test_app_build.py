@@ -113,3 +113,26 @@ def test_a_change_of_the_standard_flags_rebuilds(tmp_path, monkeypatch):
     assert targets.build([src], "m4f", hal=False).elf == first.elf            # cached
     monkeypatch.setattr(targets, "C_FLAGS", targets.C_FLAGS + ("-fno-strict-aliasing",))
     assert targets.build([src], "m4f", hal=False).elf != first.elf
+
+
+@pytest.mark.parametrize("argv, text", [
+    # each was accepted and ignored: sizes builds its fixed sets, tables builds nothing
+    (["sizes", "--filters", "madgwick"], "--filters does not apply to sizes"),
+    (["sizes", "--opt=-O3"], "--opt does not apply to sizes"),
+    (["sizes", "--out", "x"], "--out does not apply to sizes"),
+    (["tables", "--opt=-O2"], "--opt does not apply to tables"),
+    (["host", "--check"], "--check does not apply to host"),
+])
+def test_build_options_that_do_not_apply_are_refused(capsys, argv, text):
+    assert fb.main(argv) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.startswith(f"kinefuse: error: {text}")
+    assert err.count("\n") == 1
+
+
+def test_build_out_must_not_be_a_file(capsys, tmp_path):
+    # a file as --out was a FileExistsError traceback after the build
+    f = tmp_path / "f"
+    f.write_text("x")
+    assert fb.main(["host", "--out", str(f)]) == 2
+    assert capsys.readouterr().err == f"kinefuse: error: --out {f} is a file, not a folder\n"
