@@ -286,18 +286,30 @@ def size_report(opts=("-O2", "-Os")) -> list[dict]:
 
 # ------------------------------------------------------------------------------------- CLI
 
+#: what --opt takes (it is the compiler's first flag)
+OPT_LEVELS = ("-O0", "-O1", "-O2", "-O3", "-Os", "-Og", "-Oz")
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(prog="python -m kinefuse.firmware.build",
                                  description="build the kinefuse unit application")
     ap.add_argument("what", choices=("host", "host-q", "m4f", "m4f-q", "m0", "all", "tables", "sizes"))
     ap.add_argument("--out", help="copy the outputs into this folder")
-    ap.add_argument("--opt", help="optimisation flag (default -O2; m0: -Os)")
+    ap.add_argument("--opt", help="optimisation flag: " + ", ".join(OPT_LEVELS) + " (default -O2; m0: -Os)")
     ap.add_argument("--check", action="store_true", help="tables: exit 1 when the generated files are stale")
     ap.add_argument("--filters", help="comma-separated subset of the wired filters, or 'all' (default: all; "
                                       "m0: " + ",".join(DEFAULT_FILTERS["m0"]) + ")")
     ap.add_argument("--no-leg", action="store_true", help="float32 builds: leave the leg EKF (KF_EFFORTS) out")
     ap.add_argument("--json", action="store_true", help="print one JSON object")
+    # `--opt -O2` (README, help): argparse takes -O2 for an option and refused it ("expected one
+    # argument"); it is the value of --opt, as --opt=-O2 is
+    argv = list(sys.argv[1:] if argv is None else argv)
+    for i in range(len(argv) - 1, 0, -1):
+        if argv[i - 1] == "--opt" and argv[i].startswith("-"):
+            argv[i - 1:i + 1] = [f"--opt={argv[i]}"]
     args = ap.parse_args(argv)
+    if args.opt is not None and args.opt not in OPT_LEVELS:
+        ap.error(f"argument --opt: {args.opt!r} is not one of {', '.join(OPT_LEVELS)}")
     try:
         # options that do not apply to the action were ignored: refuse them
         given = [o for o, v in (("--out", args.out), ("--opt", args.opt), ("--filters", args.filters),

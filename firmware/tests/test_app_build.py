@@ -2,6 +2,7 @@
 unique, strict C99 with every warning an error, no heap, and the Cortex-M sizes."""
 from __future__ import annotations
 
+import json
 import shutil
 import subprocess
 
@@ -136,3 +137,15 @@ def test_build_out_must_not_be_a_file(capsys, tmp_path):
     f.write_text("x")
     assert fb.main(["host", "--out", str(f)]) == 2
     assert capsys.readouterr().err == f"kinefuse: error: --out {f} is a file, not a folder\n"
+
+
+@pytest.mark.skipif(shutil.which("arm-none-eabi-gcc") is None, reason="arm-none-eabi-gcc not installed")
+def test_build_opt_takes_a_dashed_value_as_the_readme_writes_it(capsys):
+    # `--opt -Os` was refused by argparse ("argument --opt: expected one argument")
+    assert fb.main(["m4f", "--opt", "-Os", "--filters", "madgwick", "--json"]) == 0
+    os_flash = json.loads(capsys.readouterr().out)["m4f"]["flash"]
+    assert fb.main(["m4f", "--opt=-O2", "--filters", "madgwick", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["m4f"]["flash"] != os_flash       # the flag was used
+    with pytest.raises(SystemExit) as exc:
+        fb.main(["m4f", "--opt", "-DKF_X=1"])     # the compiler's first flag: a level, nothing else
+    assert exc.value.code == 2 and "argument --opt: '-DKF_X=1' is not one of -O0" in capsys.readouterr().err
