@@ -2,8 +2,10 @@
 
 Euler angles are the ZYX (yaw-pitch-roll) sequence of the sensor -> ENU rotation,
 R = Rz(yaw)·Ry(pitch)·Rx(roll): yaw about Up, 0° when the sensor x axis points East, positive
-counter-clockwise seen from above; pitch about the once-rotated y axis (±90°); roll about the
-sensor x axis.  Matplotlib is used through its object API with the Agg canvas, so plotting never
+counter-clockwise seen from above; pitch about the once-rotated y axis (±90°), positive when the
+sensor x axis points below the horizontal (x·Up = −sin pitch: the opposite sign of the aviation
+nose-up pitch in NED); roll about the sensor x axis, positive when the sensor y axis points above
+the horizontal (y·Up = cos pitch · sin roll).  Matplotlib is used through its object API with the Agg canvas, so plotting never
 needs a display and never changes pyplot state.
 """
 from __future__ import annotations
@@ -15,6 +17,8 @@ import numpy as np
 from kinefuse.host import metrics
 
 EULER_NAMES = ("yaw", "pitch", "roll")
+#: the signs of pitch and roll, as the figure states them
+SIGNS = "pitch > 0: sensor x below the horizontal; roll > 0: sensor y above it"
 
 
 def euler_zyx_deg(q: np.ndarray) -> np.ndarray:
@@ -73,7 +77,7 @@ def plot_estimate(trial, q_est: np.ndarray, label: str, out: str | Path,
     axes = fig.subplots(5, 1, sharex=True, gridspec_kw={"height_ratios": heights})
     fig.suptitle(f"{trial.name}: {label} vs optical reference\n"
                  f"Euler angles ZYX (yaw-pitch-roll) of sensor→ENU; yaw 0° = sensor x toward East, "
-                 f"counter-clockwise about Up", fontsize=11)
+                 f"counter-clockwise about Up\n{SIGNS}", fontsize=11)
     ts = t[sel]
     moving = _runs(trial.movement[sel])
 

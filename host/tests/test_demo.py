@@ -125,3 +125,22 @@ def test_euler_zyx_from_hand_built_quaternions():
     q = mul(mul(q_axis([0, 0, 1], 130.0), q_axis([0, 1, 0], -35.0)), q_axis([1, 0, 0], 60.0))
     assert plots.euler_zyx_deg(q[None])[0] == pytest.approx([130.0, -35.0, 60.0], abs=1e-9)
     assert np.isnan(plots.euler_zyx_deg(np.full((1, 4), np.nan))).all()
+
+
+def test_plot_states_the_pitch_and_roll_signs(tmp_path, monkeypatch):
+    """ZYX of sensor->ENU gives pitch > 0 with the sensor x axis below the horizontal (the
+    opposite of the nose-up pitch of NED, which `kinefuse live` shows for a NED unit); the figure
+    said only 'ZYX of sensor->ENU', and the signs are checked here on hand-built poses."""
+    import math
+    from matplotlib.figure import Figure
+    h = math.radians(30) / 2
+    nose_down = np.array([[math.cos(h), 0.0, math.sin(h), 0.0]])     # +30° about y: x·Up = -0.5
+    y_up = np.array([[math.cos(h), math.sin(h), 0.0, 0.0]])          # +30° about x: y·Up = +0.5
+    assert plots.euler_zyx_deg(nose_down)[0] == pytest.approx([0.0, 30.0, 0.0], abs=1e-9)
+    assert plots.euler_zyx_deg(y_up)[0] == pytest.approx([0.0, 0.0, 30.0], abs=1e-9)
+    titles = []
+    monkeypatch.setattr(Figure, "savefig", lambda self, *a, **k: titles.append(self._suptitle.get_text()))
+    trial = broad.load_trial(broad.bundled_trials()[0]).window(0, 500)
+    plots.plot_estimate(trial, trial.quat_ref, "reference", tmp_path / "p.png")
+    assert "pitch > 0: sensor x below the horizontal" in titles[0], titles
+    assert "roll > 0: sensor y above it" in titles[0], titles
