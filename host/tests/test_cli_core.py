@@ -218,3 +218,16 @@ def test_impl_for_a_competitor_is_refused_not_ignored(cmd, short_trial, tmp_path
     r = kf(*args, "--filter", "vqf", "--impl", "q")
     assert r.returncode == 2 and r.stderr.count("\n") == 1 \
         and "vqf is a competitor and runs its own implementation" in r.stderr, r.stderr
+
+
+def test_run_writes_a_simulator_mat_s_own_sample_times(tmp_path):
+    """run wrote t = index / rate for a simulator .mat with jitter, drops and a 0.5 s gap (1.26 s
+    off at the end) while its filter already ran on the file's own times (as replay writes)."""
+    from kinefuse.hil_tests import sim
+    rec = sim.simulate("jitter_and_drops", seed=0, duration_s=25.0)
+    rec.save(str(tmp_path / "j.mat"))
+    out = tmp_path / "j.csv"
+    r = kf("run", "--filter", "madgwick", "--input", str(tmp_path / "j.mat"), "--out", str(out))
+    assert r.returncode == 0, r.stderr
+    x = np.loadtxt(out, delimiter=",", skiprows=2)
+    assert np.allclose(x[:, 0], rec.t, rtol=0, atol=1e-6) and x[-1, 0] > 24.9
