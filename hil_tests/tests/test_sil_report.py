@@ -60,6 +60,11 @@ def test_report_marks_mismatches_and_errors(tmp_path):
     (["--seconds", "nan"], "--seconds must be positive and finite"),
     (["--broad-seconds", "nan"], "--broad-seconds must be positive and finite"),
     (["--broad-seconds", "inf"], "--broad-seconds must be positive and finite"),
+    # accepted and ignored before
+    (["--jobs", "2"], "--jobs sets the firmware loops: add --firmware"),
+    (["--pil-samples", "10"], "--pil-samples sets the firmware loops: add --firmware"),
+    (["--broad", "none", "--broad-seconds", "5"], "--broad-seconds: this report has no BROAD trial (--broad none)"),
+    (["--ci", "--broad-seconds", "5"], "--broad-seconds: this report has no BROAD trial (--ci leaves it out"),
     (["--firmware", "--pil-samples", "-1"], "--pil-samples and --sil-samples must be >= 0"),
 ])
 def test_sil_report_bad_arguments(tmp_path, capsys, argv, msg):

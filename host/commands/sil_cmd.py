@@ -38,9 +38,9 @@ def register(subparsers) -> None:
     r.add_argument("--pil-samples", type=int, default=None, metavar="N",
                    help="--firmware: PIL runs the first N samples of each case (default 300; 0: whole cases; "
                         "QEMU's UART streams a few hundred samples/s)")
-    r.add_argument("--sil-samples", type=int, default=0, metavar="N",
+    r.add_argument("--sil-samples", type=int, default=None, metavar="N",
                    help="--firmware: SIL runs the first N samples of each case (default 0: whole cases)")
-    r.add_argument("--jobs", type=int, default=1,
+    r.add_argument("--jobs", type=int, default=None,
                    help="--firmware: firmware loops run at a time (one unit each; default 1)")
     r.add_argument("--cost", default=None, metavar="JSON",
                    help="include a cost table from `kinefuse bench cost --json` output")
@@ -62,8 +62,18 @@ def run_report(args: argparse.Namespace) -> int:
         raise KinefuseError("--seconds must be positive and finite")
     if args.broad_seconds is not None and not (math.isfinite(args.broad_seconds) and args.broad_seconds >= 0):
         raise KinefuseError("--broad-seconds must be positive and finite, or 0 for the whole trial")
-    if (args.pil_samples is not None and args.pil_samples < 0) or args.sil_samples < 0 or args.jobs < 1:
+    # the options of the firmware loops were ignored without --firmware
+    fw_only = [o for o, v in (("--pil-samples", args.pil_samples), ("--sil-samples", args.sil_samples),
+                              ("--jobs", args.jobs)) if v is not None]
+    if fw_only and not args.firmware:
+        raise KinefuseError(f"{fw_only[0]} sets the firmware loops: add --firmware (or leave it out)")
+    if (args.pil_samples is not None and args.pil_samples < 0) or (args.sil_samples or 0) < 0 \
+            or (args.jobs is not None and args.jobs < 1):
         raise KinefuseError("--pil-samples and --sil-samples must be >= 0, --jobs >= 1")
+    broad = "none" if args.ci and args.broad is None else args.broad
+    if broad == "none" and args.broad_seconds is not None:      # (was ignored)
+        raise KinefuseError("--broad-seconds: this report has no BROAD trial "
+                            + ("(--ci leaves it out; add --broad FILE)" if args.broad is None else "(--broad none)"))
     qemu = not args.no_qemu
     if qemu:
         from kinefuse.hil_tests.qemu import qemu_unavailable
@@ -90,7 +100,6 @@ def run_report(args: argparse.Namespace) -> int:
                      else scenarios.sim_case(n, seed=args.seed, seconds=seconds) for n in names]
         except SpecError as exc:
             raise KinefuseError(str(exc)) from None
-        broad = "none" if args.ci and args.broad is None else args.broad
         if broad != "none":
             path = broad or scenarios.default_broad_trial()
             if not Path(path).exists():
@@ -109,7 +118,7 @@ def run_report(args: argparse.Namespace) -> int:
                 raise KinefuseError(firmware_missing())
         rep = report.build_report(cases, filters, with_ref=args.with_ref, qemu=qemu,
                                   firmware=args.firmware, pil_samples=args.pil_samples,
-                                  sil_samples=args.sil_samples, jobs=args.jobs,
+                                  sil_samples=args.sil_samples or 0, jobs=args.jobs or 1,
                                   progress=lambda s: bar.update(task, description=s))
     rep.cost = cost
     png = report.write_png(rep, out)
