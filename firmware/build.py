@@ -91,6 +91,8 @@ def _subset(filters) -> list[str]:
     names = wired_filters()
     if filters is None or filters == "all" or list(filters) == ["all"]:
         return names
+    if not list(filters):      # `--filters ,` built an application with no filter at all
+        raise KinefuseError(f"no filter named: --filters takes wired filters ({', '.join(names)}) or all")
     bad = [f for f in filters if f not in names]
     if bad:
         raise KinefuseError(f"filter {bad[0]!r} is not wired into the application "

@@ -149,3 +149,10 @@ def test_build_opt_takes_a_dashed_value_as_the_readme_writes_it(capsys):
     with pytest.raises(SystemExit) as exc:
         fb.main(["m4f", "--opt", "-DKF_X=1"])     # the compiler's first flag: a level, nothing else
     assert exc.value.code == 2 and "argument --opt: '-DKF_X=1' is not one of -O0" in capsys.readouterr().err
+
+
+def test_build_with_an_empty_filter_list_is_refused(capsys):
+    # `--filters ,` built (and flash would have programmed) an application without any filter
+    assert fb.main(["m4f", "--filters", ","]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("kinefuse: error: no filter named: --filters takes wired filters (") and err.count("\n") == 1
