@@ -120,6 +120,19 @@ def test_build_options_with_an_image_are_refused(capsys, image, opt):
     assert f"{opt[0]} chooses what to build; --image {image / 'fw.hex'} is flashed as it is" in err
 
 
+@pytest.mark.parametrize("argv, text", [
+    # each was accepted and left out of the command line
+    (["--serial", "ABC"], "--serial is a dfu-util option; this flashes with pyocd (--tool)"),
+    (["--alt", "1"], "--alt is a dfu-util option; this flashes with pyocd (--tool)"),
+    (["--tool", "dfu-util", "--probe", "0240"], "--probe is a pyOCD option; this flashes with dfu-util (--tool)"),
+    (["--tool", "dfu-util", "--erase", "chip"], "--erase is a pyOCD option; this flashes with dfu-util (--tool)"),
+])
+def test_the_other_tools_options_are_refused(capsys, image, argv, text):
+    code, out, err = run(capsys, "--image", str(image / "fw.bin"), "--mcu", "stm32f411re",
+                         "--address", "0x08000000", "--dry-run", *argv)
+    assert code == 2 and out == "" and err == f"kinefuse: error: {text}\n"
+
+
 def test_missing_tool_is_reported(capsys, image, monkeypatch):
     monkeypatch.setenv("PATH", str(image))
     code, _, err = run(capsys, "--image", str(image / "fw.hex"), "--mcu", "stm32f411re")

@@ -87,7 +87,7 @@ def register(subparsers) -> None:
     p.add_argument("--erase", choices=("auto", "chip", "sector"), help="pyOCD erase mode")
     p.add_argument("--address", metavar="ADDR", help="dfu-util (or a .bin with pyOCD): load address, "
                                                      "e.g. 0x08000000 (default: from the image)")
-    p.add_argument("--alt", type=int, default=0, metavar="N", help="dfu-util: alternate setting (default 0)")
+    p.add_argument("--alt", type=int, default=None, metavar="N", help="dfu-util: alternate setting (default 0)")
     p.add_argument("--dfu-device", metavar="VID:PID", help="dfu-util: USB vendor:product id")
     p.add_argument("--serial", metavar="SERIAL", help="dfu-util: USB serial number of the device")
     p.add_argument("--timeout", type=argtypes.real(0, 86400, lo_open=True), default=180.0, metavar="S", help="give up after S seconds (default 180)")
@@ -303,9 +303,10 @@ def command_line(args, img: dict) -> list[str]:
         address = img.get("address")
     if address is None:
         raise KinefuseError("dfu-util needs the load address: --address 0x08000000 (or a .hex next to the .bin)")
-    if not 0 <= args.alt <= 255:
+    alt = 0 if args.alt is None else args.alt
+    if not 0 <= alt <= 255:
         raise KinefuseError("--alt must be 0..255")
-    cmd = ["dfu-util", "-a", str(args.alt)]
+    cmd = ["dfu-util", "-a", str(alt)]
     if args.dfu_device:
         if not re.fullmatch(r"[0-9a-fA-F]{4}:[0-9a-fA-F]{4}", args.dfu_device):
             raise KinefuseError(f"bad --dfu-device {args.dfu_device!r}: expected VID:PID such as 0483:df11")
@@ -337,6 +338,13 @@ def run(args) -> int:
         raise KinefuseError(f"{'--target' if args.target else '--filters'} chooses what to build; "
                             f"--image {args.image} is flashed as it is: give one or the other")
     args.target = args.target or "m4f"
+    # the other tool's options were ignored
+    other = ((("--alt", args.alt), ("--dfu-device", args.dfu_device), ("--serial", args.serial))
+             if args.tool == "pyocd" else (("--probe", args.probe), ("--erase", args.erase)))
+    unused = [o for o, v in other if v is not None]
+    if unused:
+        raise KinefuseError(f"{unused[0]} is a {'dfu-util' if args.tool == 'pyocd' else 'pyOCD'} option; "
+                            f"this flashes with {args.tool} (--tool)")
     if args.tool == "pyocd" and not args.mcu:
         command_line(args, {"hex": None, "bin": None, "elf": None})   # the one-line error, before building
     if not args.image:      # before building: no board port matches any real MCU
