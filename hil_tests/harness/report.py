@@ -284,6 +284,19 @@ def load_cost(path: str | Path) -> list[dict]:
     from kinefuse.host.errors import KinefuseError
     try:
         data = json.loads(Path(path).read_text())
-        return list(data["rows"])
-    except (OSError, ValueError, KeyError, TypeError) as exc:
+    except (OSError, ValueError) as exc:
         raise KinefuseError(f"cannot read cost JSON {path}: {exc}") from None
+    # checked here, before the report runs: a row without these keys was a KeyError from
+    # write_markdown once every loop had run
+    rows = data.get("rows") if isinstance(data, dict) else None
+    need = ("impl", "filter", "format", "target")
+    for k, r in enumerate(rows if isinstance(rows, list) else []):
+        ok = isinstance(r, dict) and all(x in r for x in need) and (
+            r.get("error") or all(isinstance(r.get(x), (int, float)) and not isinstance(r.get(x), bool)
+                                  for x in ("instructions_per_update", "flash_bytes", "ram_bytes")))
+        if not ok:
+            raise KinefuseError(f"{path}: row {k} of 'rows' is not a `kinefuse bench cost --json` row "
+                                f"(needs {', '.join(need)}, instructions_per_update, flash_bytes, ram_bytes)")
+    if not isinstance(rows, list):
+        raise KinefuseError(f"{path} is not `kinefuse bench cost --json` output (no 'rows' list)")
+    return rows

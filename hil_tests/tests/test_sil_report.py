@@ -83,6 +83,23 @@ def test_sil_report_refuses_seconds_shorter_than_a_sample(tmp_path, capsys):
     assert not (tmp_path / "sil_report.md").exists()
 
 
+@pytest.mark.parametrize("text, msg", [
+    ('{"rows": [{"filter": "madgwick"}]}', "row 0 of 'rows' is not a `kinefuse bench cost --json` row"),
+    ('[1]', "is not `kinefuse bench cost --json` output (no 'rows' list)"),
+    ('{}', "is not `kinefuse bench cost --json` output (no 'rows' list)"),
+])
+def test_sil_report_checks_the_cost_json_before_running(tmp_path, capsys, text, msg):
+    # a row without 'impl' was an internal error (KeyError) from the Markdown writer after every
+    # loop had run; a JSON that was not an object gave "list indices must be integers ..."
+    cost = tmp_path / "cost.json"
+    cost.write_text(text)
+    rc = main(["sil", "report", "--no-qemu", "--filters", "madgwick", "--scenarios", "rest",
+               "--seconds", "0.5", "--broad", "none", "--cost", str(cost), "--out", str(tmp_path / "r")])
+    err = capsys.readouterr().err
+    assert rc == 2 and msg in err and err.count("\n") == 1
+    assert not (tmp_path / "r").exists()
+
+
 def test_sil_report_keeps_an_earlier_report_unless_forced(tmp_path, capsys):
     (tmp_path / "sil_report.md").write_text("an earlier report")
     argv = ["sil", "report", "--filters", "madgwick", "--scenarios", "slow_rotation",
