@@ -12,8 +12,8 @@ import math
 from kinefuse.codegen.estimator import InputSpec, Var
 from kinefuse.codegen.ir import BOOL, INT
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
-from kinefuse.codegen.scalar import (all_of, any_of, assume, clamp, fabs, fmax, logical_and,
-                                     logical_not, rsqrt, select, sqrt)
+from kinefuse.codegen.scalar import (all_of, any_of, assume, clamp, fabs, fmax, fmin, logical_and,
+                                     logical_not, logical_or, rsqrt, select, sqrt)
 
 G = 9.81                                   # m/s^2, standard gravity used for ranges
 GYR_MAX = 2000.0 * math.pi / 180.0         # rad/s  (+-2000 deg/s full scale)
@@ -67,6 +67,24 @@ class SampleCheck:
         self.use_mag = all_of(core, u.mag_valid, mag_ok)   # ... and its magnetometer reading
         self.bad = logical_not(all_of(core, logical_not(logical_and(u.mag_valid,
                                                                     logical_not(mag_ok)))))
+
+
+#: the first orientation waits this long (s of valid samples) for a magnetometer reading.  A
+#: magnetometer slower than the gyroscope has no reading in most samples, and a start from gravity
+#: alone leaves the heading to the slow magnetic correction of madgwick, mahony and complementary
+#: (simulated slow rotation, magnetometer at 20 Hz, started on a sample without a reading: 34 deg
+#: of heading error, still 17-25 deg after 35 s).  Without a reading by then the start is 6D.
+MAG_WAIT_S = 0.5
+INIT_WAIT = Var("t_wait", 1, 0.0, MAG_WAIT_S, "s",
+                "time the start has waited for a magnetometer reading (saturates)", init=0.0)
+
+
+def start_gate(chk: "SampleCheck", initialised, t_wait):
+    """(start, next t_wait): the first valid sample with a usable magnetometer reading starts the
+    filter, or any valid sample once MAG_WAIT_S of them have had none (state INIT_WAIT)."""
+    waiting = logical_and(chk.ok, logical_not(initialised))
+    start = logical_and(waiting, logical_or(chk.use_mag, t_wait >= MAG_WAIT_S))
+    return start, select(waiting, fmin(t_wait + chk.dt, MAG_WAIT_S), t_wait)
 
 
 ACC_NORM_MIN_SQ = 1.0    # (m/s^2)^2: below |a| = 1 m/s^2 (free fall) gravity is not observable

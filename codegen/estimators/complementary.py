@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from kinefuse.codegen.estimator import Estimator, Param
-from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISED,
+from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISED, INIT_WAIT,
                                                 MAG_NORM_MIN_SQ, Q_OUT, Q_STATE, REJECTED,
                                                 SampleCheck, heading_correction,
-                                                initial_quaternion, integrate_gyro,
+                                                initial_quaternion, integrate_gyro, start_gate,
                                                 tilt_correction)
 from kinefuse.codegen.linalg import Quat, vselect
 from kinefuse.codegen.scalar import all_of, inc_if, logical_and, logical_not, logical_or, select, when
@@ -34,7 +34,7 @@ class Complementary(Estimator):
         Param("acc_gate", 0.0, "m/s^2", 0.0, 100.0,
               "accelerometer used only when | |a| - 9.81 | is below this (0: always used)"),
     )
-    state = (Q_STATE, INITIALISED, REJECTED)
+    state = (Q_STATE, INITIALISED, INIT_WAIT, REJECTED)
     outputs = (Q_OUT, REJECTED)
 
     def step(self, x, u, p):
@@ -58,13 +58,13 @@ class Complementary(Estimator):
         use_mag = logical_and(chk.use_mag, m2 >= MAG_NORM_MIN_SQ)
         q_new = vselect(use_mag, q_head, q_tilt)
 
-        start = logical_and(chk.ok, logical_not(x.initialised))
+        start, t_wait = start_gate(chk, x.initialised, x.t_wait)
         with when(start):   # only the first valid sample pays for the initial orientation
             q_init, init_ok = initial_quaternion(chk.acc, chk.mag, chk.use_mag)
         do_init = logical_and(start, init_ok)
         run = logical_and(chk.ok, x.initialised)
         q_next = vselect(do_init, q_init, vselect(run, q_new, q))
         rejected = inc_if(x.rejected, chk.bad)
-        return ({"q": q_next, "initialised": logical_or(x.initialised, do_init),
+        return ({"q": q_next, "initialised": logical_or(x.initialised, do_init), "t_wait": t_wait,
                  "rejected": rejected},
                 {"q": q_next, "rejected": rejected})

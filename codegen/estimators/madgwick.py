@@ -29,9 +29,9 @@ from kinefuse.codegen.scalar import (all_of, assume, clamp, fabs, fmax, fmin, in
                                      logical_and, logical_not, logical_or, rnorm, select, sqrt,
                                      when)
 from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, DT_MAX, IMU, INITIALISED,
-                                                MAG_MAX, MAG_NORM_MIN_SQ, Q_OUT, Q_STATE,
-                                                REJECTED, SampleCheck, initial_quaternion,
-                                                within)
+                                                INIT_WAIT, MAG_MAX, MAG_NORM_MIN_SQ, Q_OUT,
+                                                Q_STATE, REJECTED, SampleCheck, initial_quaternion,
+                                                start_gate, within)
 
 T_RUN_MAX = 60.0   # s; the run-time clock only needs to reach the end of the start-up phase
 DT_NEAR = 0.05     # s; time steps up to this take the Newton renormalisation
@@ -64,7 +64,7 @@ class Madgwick(Estimator):
     )
     state = (dataclasses.replace(Q_STATE, doc="orientation quaternion (w, x, y, z), sensor to "
                                   "earth, earth frame x north / z up (Madgwick's)"),
-             INITIALISED,
+             INITIALISED, INIT_WAIT,
              Var("t_run", 1, 0.0, T_RUN_MAX, "s", "time since initialisation (saturates)",
                  init=0.0),
              REJECTED)
@@ -129,7 +129,7 @@ class Madgwick(Estimator):
         # the long dependency chain above waits for them
         chk = SampleCheck(u)
         # first valid sample: orientation from gravity and magnetic north (ENU -> Madgwick frame)
-        start = logical_and(chk.ok, logical_not(x.initialised))
+        start, t_wait = start_gate(chk, x.initialised, x.t_wait)
         with when(start):
             q_init, init_ok = initial_quaternion(chk.acc, chk.mag, chk.use_mag)
             q_init = enu_to_nwu(q_init)
@@ -140,7 +140,7 @@ class Madgwick(Estimator):
         # t_run >= 0 and dt >= 0: only the upper limit can bind
         t_next = select(run, fmin(x.t_run + chk.dt, T_RUN_MAX), x.t_run)
         rejected = inc_if(x.rejected, chk.bad)
-        nx = {"q": q_next, "initialised": logical_or(x.initialised, do_init),
+        nx = {"q": q_next, "initialised": logical_or(x.initialised, do_init), "t_wait": t_wait,
               "t_run": t_next, "rejected": rejected}
         return nx, {"q": nwu_to_enu(q_next), "rejected": rejected}
 

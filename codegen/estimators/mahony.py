@@ -12,9 +12,10 @@ product, and the gyro bias integrated only below 0.175 rad/s of rotation).
 from __future__ import annotations
 
 from kinefuse.codegen.estimator import Estimator, Param, Var
-from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISED,
+from kinefuse.codegen.estimators.common import (ACC_NORM_MIN_SQ, IMU, INITIALISED, INIT_WAIT,
                                                 MAG_NORM_MIN_SQ, Q_OUT, Q_STATE, REJECTED,
-                                                SampleCheck, initial_quaternion, integrate_gyro)
+                                                SampleCheck, initial_quaternion, integrate_gyro,
+                                                start_gate)
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
 from kinefuse.codegen.scalar import (all_of, assume, clamp, fmax, inc_if, logical_and,
                                      logical_not, logical_or, select, sqrt, when)
@@ -65,7 +66,7 @@ class Mahony(Estimator):
     state = (Q_STATE,
              Var("bias", 3, -BIAS_MAX, BIAS_MAX, "rad/s", "gyroscope bias estimate (integral term)",
                  init=0.0),
-             INITIALISED, REJECTED)
+             INITIALISED, INIT_WAIT, REJECTED)
     outputs = (Q_OUT, Var("bias", 3, -BIAS_MAX, BIAS_MAX, "rad/s", "gyroscope bias estimate"),
                REJECTED)
 
@@ -109,7 +110,7 @@ class Mahony(Estimator):
         omega = chk.gyr - b_new + e * p.kp
         q_new = integrate_gyro(q, omega, chk.dt)
 
-        start = logical_and(chk.ok, logical_not(x.initialised))
+        start, t_wait = start_gate(chk, x.initialised, x.t_wait)
         with when(start):   # only the first valid sample pays for the initial orientation
             q_init, init_ok = initial_quaternion(chk.acc, chk.mag, chk.use_mag)
         do_init = logical_and(start, init_ok)
@@ -118,5 +119,6 @@ class Mahony(Estimator):
         b_next = vselect(run, b_new, b)
         rejected = inc_if(x.rejected, chk.bad)
         return ({"q": q_next, "bias": b_next, "initialised": logical_or(x.initialised, do_init),
+                 "t_wait": t_wait,
                  "rejected": rejected},
                 {"q": q_next, "bias": b_next, "rejected": rejected})
