@@ -25,22 +25,30 @@ SECTIONS = ("stream", "hil", "cost", "sizes")
 def register_bench(bench_subparsers) -> None:
     p = bench_subparsers.add_parser("firmware", help="unit application: streaming loss, HIL, cost, size",
                                     description=__doc__.split("\n\n")[0].split(": ", 1)[-1])
-    p.add_argument("--seconds", type=float, default=60.0, help="streaming duration (default 60)")
-    p.add_argument("--rate", type=int, default=1000, help="sensor / KF_RAW_SAMPLE rate in Hz (default 1000)")
+    p.add_argument("--seconds", type=float, default=None, help="streaming duration (default 60)")
+    p.add_argument("--rate", type=int, default=None, help="sensor / KF_RAW_SAMPLE rate in Hz (default 1000)")
     p.add_argument("--only", action="append", choices=SECTIONS, help="run only these sections (repeatable)")
-    p.add_argument("--hil-samples", type=int, default=3000, help="HIL samples per filter (default 3000)")
+    p.add_argument("--hil-samples", type=int, default=None, help="HIL samples per filter (default 3000)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=run)
 
 
 def run(args) -> int:
     from kinefuse.host.link.cli_util import console, print_json
+    todo = args.only or list(SECTIONS)
+    # a section's options were ignored when --only left it out
+    for opt, value, section in (("--seconds", args.seconds, "stream"), ("--rate", args.rate, "stream"),
+                                ("--hil-samples", args.hil_samples, "hil")):
+        if value is not None and section not in todo:
+            raise KinefuseError(f"{opt} sets the {section} section, which --only leaves out")
+    args.seconds = 60.0 if args.seconds is None else args.seconds
+    args.rate = 1000 if args.rate is None else args.rate
+    args.hil_samples = 3000 if args.hil_samples is None else args.hil_samples
     if not (math.isfinite(args.seconds) and args.seconds > 0) or not 1 <= args.rate <= 2000:
         raise KinefuseError("--seconds must be positive and finite and --rate within 1..2000 Hz")
     if args.hil_samples < 1:
         raise KinefuseError(f"--hil-samples {args.hil_samples}: must be at least 1")
     con = console(args.json)
-    todo = args.only or list(SECTIONS)
     out: dict = {}
     if "stream" in todo:
         from kinefuse.firmware.hostunit import stream_check

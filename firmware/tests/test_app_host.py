@@ -336,12 +336,16 @@ def test_replay_of_a_recording_that_started_late_matches_the_unit(tmp_path, caps
 
 
 @pytest.mark.parametrize("argv,msg", [
-    (["--hil-samples", "0"], "--hil-samples 0: must be at least 1"),      # was an IndexError
-    (["--hil-samples", "-5"], "--hil-samples -5: must be at least 1"),    # was a ValueError
-    (["--seconds", "inf"], "--seconds must be positive and finite"),      # streamed for ever
+    (["--only", "hil", "--hil-samples", "0"], "--hil-samples 0: must be at least 1"),    # was an IndexError
+    (["--only", "hil", "--hil-samples", "-5"], "--hil-samples -5: must be at least 1"),  # was a ValueError
+    (["--only", "stream", "--seconds", "inf"], "--seconds must be positive and finite"),  # streamed for ever
+    # accepted and ignored: --only left their section out
+    (["--only", "hil", "--seconds", "5"], "--seconds sets the stream section, which --only leaves out"),
+    (["--only", "cost", "--rate", "500"], "--rate sets the stream section, which --only leaves out"),
+    (["--only", "stream", "--hil-samples", "10"], "--hil-samples sets the hil section, which --only leaves out"),
 ])
 def test_bench_firmware_bad_arguments(capsys, argv, msg):
     from kinefuse.host.cli import main
-    rc = main(["bench", "firmware", "--only", "hil"] + argv)
+    rc = main(["bench", "firmware"] + argv)
     err = capsys.readouterr().err
     assert rc == 2 and msg in err and "Traceback" not in err and "internal error" not in err
