@@ -60,6 +60,9 @@ def test_report_marks_mismatches_and_errors(tmp_path):
     (["--seconds", "nan"], "--seconds must be positive and finite"),
     (["--broad-seconds", "nan"], "--broad-seconds must be positive and finite"),
     (["--broad-seconds", "inf"], "--broad-seconds must be positive and finite"),
+    # ran twice, each row repeated in the table and counted twice in "N of M identical"
+    (["--filters", "madgwick,madgwick"], "--filters names madgwick twice"),
+    (["--scenarios", "rest, rest"], "--scenarios names rest twice"),
     # accepted and ignored before
     (["--jobs", "2"], "--jobs sets the firmware loops: add --firmware"),
     (["--pil-samples", "10"], "--pil-samples sets the firmware loops: add --firmware"),

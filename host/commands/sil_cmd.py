@@ -58,6 +58,12 @@ def run_report(args: argparse.Namespace) -> int:
     bad = [f for f in filters if f not in loops.imu_filters()]
     if bad:
         raise KinefuseError(f"unknown IMU filter {bad[0]!r} (available: {', '.join(loops.imu_filters())})")
+    # a name given twice ran twice: every row repeated and the bit-exact count inflated
+    for opt, given in (("--filters", filters), ("--scenarios", args.scenarios.split(",") if args.scenarios else [])):
+        given = [g.strip() for g in given]
+        twice = [g for k, g in enumerate(given) if g in given[:k]]
+        if twice:
+            raise KinefuseError(f"{opt} names {twice[0]} twice")
     if args.seconds is not None and not (math.isfinite(args.seconds) and args.seconds > 0):
         raise KinefuseError("--seconds must be positive and finite")
     if args.broad_seconds is not None and not (math.isfinite(args.broad_seconds) and args.broad_seconds >= 0):
