@@ -152,6 +152,10 @@ def run(args: argparse.Namespace) -> int:
     if (not formats or not targets or any(f not in ("f32", "q") for f in formats)
             or any(t not in ("m4f", "m0") for t in targets)):
         raise KinefuseError("--formats takes f32,q and --targets m4f,m0")   # (an empty list measured nothing)
+    for opt, given in (("--filters", filters), ("--formats", formats), ("--targets", targets)):
+        twice = [g for k, g in enumerate(given) if g in given[:k]]
+        if twice:       # (each row was measured and listed twice)
+            raise KinefuseError(f"{opt} names {twice[0]} twice")
     if not 1 <= args.k <= 1000:
         raise KinefuseError("--k must be between 1 and 1000")
     if args.top < 1:

@@ -260,6 +260,19 @@ def test_bench_cost_refuses_an_empty_format_or_target_list(bench, opt):
     _one_line_error(code, out, err, "--formats takes f32,q and --targets m4f,m0")
 
 
+@pytest.mark.parametrize("opt, value", [("--filters", "angle-kf,angle-kf"), ("--formats", "f32,f32"),
+                                        ("--targets", "m4f, m4f")])
+def test_bench_cost_refuses_a_name_given_twice(bench, opt, value):
+    # each row was measured and listed twice
+    from kinefuse.hil_tests.qemu import qemu_unavailable
+    if qemu_unavailable():
+        pytest.skip(qemu_unavailable())
+    argv = {"--filters": "angle-kf", "--formats": "f32", "--targets": "m4f", opt: value}
+    code, out, err = bench("cost", *[x for kv in argv.items() for x in kv], "--no-competitors", "--no-mix",
+                           "--k", "10", "--json")
+    _one_line_error(code, out, err, f"{opt} names {value.split(',')[0]} twice")
+
+
 # angle-kf: the smallest update, so the single-step traces take seconds (angle-ekf q on the M0: 38 s)
 @pytest.mark.parametrize("fmt,target", [("f32", "m4f"), ("q", "m4f"), ("f32", "m0")])
 def test_bench_cost_profile_accounts_for_every_instruction(bench, fmt, target):
