@@ -105,6 +105,10 @@ def _run(args) -> int:
     err = Console(stderr=True)
     with err.status(f"simulating {sc.name} …", spinner="dots") if sys.stderr.isatty() else _Null():
         recs = run(sc, **changes)
+    if args.mag_rate is not None and not any(r.meta["sensor_model"].get("mag", {}).get("present", True)
+                                             for r in recs.values()):
+        # (was ignored: the summary even listed the rate of a magnetometer that is not there)
+        raise KinefuseError(f"--mag-rate: the {recs[next(iter(recs))].meta['preset']} sensor has no magnetometer")
     summary = {"scenario": sc.name, "seed": int(changes.get("seed", sc.seed)), "sensors": {}}
     # the file names follow the rig's sensor units, known once the motion is built: every one is
     # checked before the first is written

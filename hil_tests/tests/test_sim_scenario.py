@@ -234,3 +234,11 @@ def test_cli_refuses_a_rate_that_would_exhaust_memory(tmp_path, capsys):
     with pytest.raises(KinefuseError, match="at most"):
         _cli(["sim", "run", "rest", "--mag-rate", "1e8", "--out", str(tmp_path / "r.npz")], capsys)
     assert not (tmp_path / "r.npz").exists()
+
+
+def test_cli_refuses_a_mag_rate_for_a_sensor_without_magnetometer(tmp_path, capsys):
+    """--mag-rate on the MATRIX preset (no magnetometer) was ignored, and the summary listed it."""
+    with pytest.raises(KinefuseError, match="--mag-rate: the matrix sensor has no magnetometer"):
+        _cli(["sim", "run", "rest", "--preset", "matrix", "--mag-rate", "50", "--duration", "1",
+              "--out", str(tmp_path / "r.npz")], capsys)
+    assert not (tmp_path / "r.npz").exists()
