@@ -62,7 +62,8 @@ def _tolerance(e):
 
 def _estimator_step(q, gyr, acc, mag, dt, beta, mag_valid=True):
     est = estimators.get("madgwick")
-    x = SimpleNamespace(q=tuple(float(c) for c in q), initialised=True, t_run=0.0, rejected=0)
+    x = SimpleNamespace(q=tuple(float(c) for c in q), initialised=True, t_wait=0.0, t_run=0.0,
+                        rejected=0)
     u = SimpleNamespace(gyr=tuple(map(float, gyr)), acc=tuple(map(float, acc)),
                         mag=tuple(map(float, mag)), mag_valid=mag_valid, dt=float(dt))
     p = SimpleNamespace(beta=beta, beta_start=beta, start_time=0.0)

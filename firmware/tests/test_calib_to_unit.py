@@ -13,7 +13,8 @@ import pytest
 
 from kinefuse.firmware.hostunit import HostUnit, hil_run, joint_hil_run, joint_model, unit_model
 from kinefuse.host import cli
-from kinefuse.host.calib import unitfile
+from kinefuse.host.calib import unitfile, unitparams
+from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.params import ParamClient
 
 pytestmark = pytest.mark.skipif(shutil.which("gcc") is None, reason="gcc not installed")
@@ -112,10 +113,16 @@ def test_a_file_of_another_unit_is_refused_and_changes_nothing(unit, tmp_path, c
 
 def test_out_of_range_values_are_refused_before_connecting(tmp_path, capsys):
     path = tmp_path / "far.json"
-    unitfile.save(_doc(mag_b=(1500.0, 0.0, 0.0)), str(path))
+    with pytest.raises(KinefuseError, match="outside the unit's range"):     # never written
+        unitfile.save(_doc(mag_b=(1500.0, 0.0, 0.0)), str(path))
+    path.write_text(json.dumps(_doc(mag_b=(1500.0, 0.0, 0.0))))               # a hand-made file
     code, out, err = _run(capsys, "calibrate", "apply", "--calib", path, "--port", "tcp:127.0.0.1:1")
     assert code == 2 and len(err.strip().splitlines()) == 1
-    assert "KF_MAG_B0" in err and "outside the unit's range" in err
+    assert "sensors.mag: b value 1500 b[0] is outside the unit's range [-1000, 1000]" in err, err
+    # the range check of the apply itself (the unit's parameter names), on a map within the file check
+    doc = _doc()
+    vals = unitparams.plan(doc, "x")
+    assert vals["KF_MAG_B0"] == 15.0
     path2 = tmp_path / "ok.json"
     unitfile.save(_doc(), str(path2))
     code, out, err = _run(capsys, "calibrate", "apply", "--calib", path2, "--dry-run", "--json")
@@ -232,10 +239,9 @@ def test_apply_sensor_1_warns_on_a_one_sensor_unit_and_checks_its_ranges(unit, t
     lines = err.strip().splitlines()
     assert code == 0 and len(lines) == 1 and "KF_JOINT_ID 0" in lines[0], err
     assert "of sensor 1" in out
-    far = tmp_path / "far.json"
-    unitfile.save(_doc(mag_b=(1500.0, 0.0, 0.0)), str(far))
-    code, out, err = _run(capsys, "calibrate", "apply", "--calib", far, "--dry-run", "--sensor", "1")
-    assert code == 2 and "KF_MAG2_B0" in err and "outside the unit's range" in err and ": b value" in err
+    # sensor 1's parameters have sensor 0's ranges: the apply names sensor 1's parameter
+    with pytest.raises(KinefuseError, match=r"KF_MAG2_B0\) is outside the unit's range"):
+        unitparams.plan(json.loads(json.dumps(_doc(mag_b=(1500.0, 0.0, 0.0)))), "far.json", 1)
     with pytest.raises(SystemExit):
         cli.main(["calibrate", "apply", "--calib", str(path), "--dry-run", "--sensor", "2"])
     assert "invalid choice" in capsys.readouterr().err

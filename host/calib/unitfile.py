@@ -131,7 +131,7 @@ def validate(doc, source: str = "calibration") -> dict:
         # a map the unit would refuse is refused here too (calibrate apply, report --unit-cal):
         # |M_ij| <= 2 and b within the sensor's range hold for any real calibration
         from kinefuse.host.calib import unitparams
-        why = unitparams.out_of_range(unitparams.sensor_values(name, M, b))
+        why = unitparams.out_of_range(unitparams.sensor_values(name, M, b), named=False)
         if why:
             bad(f"sensors.{name}: {why}")
     history = doc.get("history", {})

@@ -72,14 +72,17 @@ def sensor_values(key: str, M, b, sensor: int = 0) -> dict[str, float]:
     return {k: f32(v) for k, v in vals.items()}
 
 
-def out_of_range(vals: dict[str, float], sensor: int = 0) -> str | None:
-    """The first value outside the unit's parameter range, as a phrase (None: all inside)."""
+def out_of_range(vals: dict[str, float], sensor: int = 0, named: bool = True) -> str | None:
+    """The first value outside the unit's parameter range, as a phrase (None: all inside);
+    ``named``: with its parameter name (a file check names the entry instead: M[i][j], b[i])."""
     rng = _ranges(_sensor(sensor))
     for name, v in vals.items():
         _, lo, hi = rng[name]
         if not (math.isfinite(v) and lo <= v <= hi):
-            what = "M" if name.rsplit("_", 1)[1].startswith("M") else "b"   # KF_MAG_B0 is a b
-            return f"{what} value {v:.6g} ({name}) is outside the unit's range [{lo:g}, {hi:g}]"
+            part = name.rsplit("_", 1)[1]                 # M01, B0 (KF_MAG_B0 is a b)
+            what = "M" if part.startswith("M") else "b"
+            where = f"({name})" if named else (f"M[{part[1]}][{part[2]}]" if what == "M" else f"b[{part[1]}]")
+            return f"{what} value {v:.6g} {where} is outside the unit's range [{lo:g}, {hi:g}]"
     return None
 
 
