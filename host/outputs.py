@@ -5,6 +5,7 @@ command's input is never its output, ``--force`` or not.
 """
 from __future__ import annotations
 
+import contextlib
 from pathlib import Path
 
 from kinefuse.host.errors import KinefuseError
@@ -57,3 +58,28 @@ def check_output_dir(path, force: bool, names=None, *, pattern: str | None = Non
         raise KinefuseError(f"{out} already holds {', '.join(found[:3])}{more} from an earlier run "
                             f"(use --force to overwrite, or another {option})")
     return out
+
+
+@contextlib.contextmanager
+def output_folder(path, option: str = "--out"):
+    """Create folder ``path`` (and missing parents) before the work, so an impossible one fails
+    first; if the command then fails before writing into it, the folders this created are
+    removed again (no empty folder is left behind)."""
+    out = Path(path)
+    made, p = [], out
+    while not p.exists() and p != p.parent:
+        made.append(p)
+        p = p.parent
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise KinefuseError(f"{option} {out}: cannot create the folder ({exc.strerror})") from None
+    try:
+        yield out
+    except BaseException:
+        for d in made:                  # innermost first; a folder that received files stays
+            try:
+                d.rmdir()
+            except OSError:
+                break
+        raise

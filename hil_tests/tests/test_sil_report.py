@@ -84,6 +84,14 @@ def test_sil_report_refuses_seconds_shorter_than_a_sample(tmp_path, capsys):
     err = capsys.readouterr().err
     assert rc == 2 and "--seconds keeps no sample of rest (100 Hz): give at least 0.01 s" in err
     assert not (tmp_path / "sil_report.md").exists()
+    # a report that stops before writing leaves no empty folder behind (it was created first)
+    out = tmp_path / "new" / "report"
+    rc = main(["sil", "report", "--no-qemu", "--filters", "madgwick", "--scenarios", "rest",
+               "--seconds", "0.001", "--broad", "none", "--out", str(out)])
+    assert rc == 2 and not (tmp_path / "new").exists()
+    (tmp_path / "blocker").write_text("x")
+    rc = main(["sil", "report", "--no-qemu", "--out", str(tmp_path / "blocker" / "r")])
+    assert rc == 2 and "cannot create the folder" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("text, msg", [

@@ -9,7 +9,7 @@ from pathlib import Path
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host import argtypes
-from kinefuse.host.outputs import add_force_arg, check_output_dir
+from kinefuse.host.outputs import add_force_arg, check_output_dir, output_folder
 
 # what a report writes into --out (report.write_markdown, report.write_png, the full JSON)
 REPORT_FILES = ("sil_report.md", "sil_report.png", "sil_report.json")
@@ -91,13 +91,8 @@ def run_report(args: argparse.Namespace) -> int:
              else list(scenarios.CI_SCENARIOS if args.ci else scenarios.FULL_SCENARIOS))
     seconds = args.seconds if args.seconds is not None else (scenarios.CI_SECONDS if args.ci else None)
     out = check_output_dir(args.out, args.force, REPORT_FILES)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise KinefuseError(f"cannot create {out}: {exc.strerror}") from None
-
     from kinefuse.host.bench.common import progress
-    with progress(not args.json) as bar:
+    with output_folder(out) as out, progress(not args.json) as bar:
         task = bar.add_task("simulating scenarios", total=None)
         try:
             # the CI subset's pieces include each scenario's event (scenarios.ci_case)

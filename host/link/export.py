@@ -119,15 +119,17 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
             if m.upper() not in d:
                 raise KinefuseError(f"unknown message {m!r} (e.g. KF_RAW_SAMPLE, KF_ORIENTATION)")
             wanted.add(d[m].msgid)
-    try:   # after the checks: a refused export leaves no empty folder
-        out_dir.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise KinefuseError(f"cannot create {out_dir}: {exc.strerror or exc}") from None
     by_msg: dict[int, list] = {}
     for sid, ds in df.streams.items():
         for mid, arr in ds.arrays.items():
             if wanted is None or mid in wanted:
                 by_msg.setdefault(mid, []).append((sid, arr, ds.host_ns.get(mid)))
+    if not by_msg:      # nothing to write: no (empty) folder either
+        return []
+    try:   # after the checks: a refused export leaves no empty folder
+        out_dir.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise KinefuseError(f"cannot create {out_dir}: {exc.strerror or exc}") from None
     start_mono = df.start_monotonic_ns
     start_unix = df.start_unix_ns
     from kinefuse.host.link.stats import host_time_from_fit, unit_clock_segments

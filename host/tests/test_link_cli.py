@@ -248,6 +248,9 @@ def test_export_into_a_folder_of_an_earlier_export_warns(run, tmp_path):
     assert code == 0 and any("6 CSV file(s)" in w for w in json.loads(stdout)["warnings"])
     _one_line_error(*run("export", one, "--out", tmp_path / "new", "--messages", "NOPE"), "unknown message")
     assert not (tmp_path / "new").exists()
+    # a message the recording does not hold: nothing to write, and no empty folder either
+    code, stdout, _ = run("export", one, "--out", tmp_path / "none", "--messages", "HIL_SENSOR")
+    assert code == 0 and "no messages to export" in stdout and not (tmp_path / "none").exists()
     (tmp_path / "junk.kfr").write_bytes(b"\x00garbage" * 100)
     code, stdout, err = run("export", tmp_path / "junk.kfr", "--out", tmp_path / "j")
     assert code == 2 and stdout == "", repr(stdout)
