@@ -257,7 +257,7 @@ def _build_trial(path: Path, raw: dict) -> Trial:
         if a.shape[0] != n:
             raise KinefuseError(f"{path}: {keys.get(key, key)} has {a.shape[0]} samples, "
                                 f"{keys.get('gyr', 'gyr')} has {n}")
-    for key, a in (("gyr", gyr), ("acc", acc), ("mag", mag)):
+    for key, a in (("gyr", gyr), ("acc", acc)):
         if not np.all(np.isfinite(a)):
             raise KinefuseError(f"{path}: {keys.get(key, key)} contains NaN or infinite samples")
     try:
@@ -275,6 +275,14 @@ def _build_trial(path: Path, raw: dict) -> Trial:
         if mag_valid.shape[0] != n or not np.all(np.isin(mag_valid, (0.0, 1.0))):
             raise KinefuseError(f"{path}: mag_valid must hold one 0/1 flag per sample ({n})")
         mag_valid = mag_valid.astype(bool)
+        # a simulated sensor without a magnetometer (or between its readings) may hold NaN there:
+        # those samples carry no reading, so zeros, never NaN, reach the filters
+        blank = ~mag_valid & ~np.all(np.isfinite(mag), axis=1)
+        if np.any(blank):
+            mag = np.where(blank[:, None], 0.0, mag)
+    if not np.all(np.isfinite(mag)):
+        raise KinefuseError(f"{path}: {keys.get('mag', 'mag')} contains NaN or infinite samples"
+                            + (" where mag_valid flags a reading" if mag_valid is not None else ""))
     t, steps = np.arange(n) / rate, None
     if "t" in raw and "mag_valid" in raw:   # the simulator's .mat: its own sample times
         try:

@@ -103,8 +103,10 @@ def broad_case(path: str | Path, start: int = 0, stop: int | None = None) -> Cas
     tr = load_trial(path)
     n = tr.n
     case = Case(name=tr.name, source="broad", rate_hz=float(tr.rate_hz),
-                inputs=_inputs(tr.gyr, tr.acc, tr.mag, np.ones(n, bool),
-                               np.full(n, 1.0 / float(tr.rate_hz))),
+                # a simulator .mat brings its magnetometer flags and sample times; BROAD has neither
+                inputs=_inputs(tr.gyr, tr.acc, tr.mag,
+                               np.ones(n, bool) if tr.mag_valid is None else tr.mag_valid,
+                               np.full(n, 1.0 / float(tr.rate_hz)) if tr.steps is None else tr.steps),
                 q_true=np.asarray(tr.quat_ref, float), movement=np.asarray(tr.movement, bool),
                 t=np.asarray(tr.t, float))
     if start or stop is not None:

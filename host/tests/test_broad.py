@@ -259,3 +259,24 @@ def test_simulator_mat_keeps_its_sample_times(tmp_path):
     scipy.io.savemat(tmp_path / "bad.mat", m)
     with pytest.raises(KinefuseError, match="t must hold one finite, non-decreasing time"):
         broad.load_trial(tmp_path / "bad.mat")
+
+
+def test_simulator_mat_without_a_magnetometer_reads_back(tmp_path):
+    """`sim run --preset matrix --out x.mat` (no magnetometer) wrote imu_mag as NaN with mag_valid
+    all 0, and load_trial refused it ("imu_mag contains NaN"), though the .npz error tells users
+    to write a .mat.  The samples without a reading carry zeros; a NaN where mag_valid flags a
+    reading is still refused; `sil report --broad` gets the file's flags and times."""
+    from kinefuse.hil_tests import sim
+    from kinefuse.hil_tests.harness import scenarios
+    rec = sim.simulate("jitter_and_drops", seed=0, duration_s=8.0, sensor={"preset": "matrix"})
+    assert not rec.mag_valid.any() and np.isnan(rec.mag).all()
+    rec.save(str(tmp_path / "m.mat"))
+    trial = broad.load_trial(tmp_path / "m.mat")
+    assert not trial.mag_valid.any() and np.all(trial.mag == 0.0)
+    case = scenarios.broad_case(tmp_path / "m.mat")
+    assert not case.inputs["mag_valid"].any() and np.allclose(case.inputs["dt"][1:], np.diff(rec.t))
+    raw = {k: v for k, v in scipy.io.loadmat(tmp_path / "m.mat").items() if not k.startswith("__")}
+    raw["mag_valid"] = np.ones_like(raw["mag_valid"])
+    scipy.io.savemat(tmp_path / "bad.mat", raw)
+    with pytest.raises(KinefuseError, match="contains NaN or infinite samples where mag_valid flags a reading"):
+        broad.load_trial(tmp_path / "bad.mat")
