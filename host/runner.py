@@ -58,6 +58,14 @@ def check_params(name: str, params: dict | None = None, preset: str | None = Non
         raise KinefuseError(str(exc)) from None
 
 
+def output_times(trial) -> np.ndarray:
+    """The t column (s) of a trial's estimates: its own sample times when it has them (a
+    simulator .mat with timing effects), else index x sample period (BROAD)."""
+    if getattr(trial, "steps", None) is not None:
+        return np.asarray(trial.t, dtype=np.float64)
+    return np.arange(trial.n) * float(trial.dt)
+
+
 def imu_inputs(trial, mag_every: int = 1) -> dict[str, np.ndarray]:
     """A recording's arrays as the 'imu' input record (dt per sample in seconds)."""
     n = len(trial.gyr)

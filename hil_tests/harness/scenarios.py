@@ -99,14 +99,13 @@ def sim_case(name: str, seed: int = 1, seconds: float | None = None, **replace) 
 def broad_case(path: str | Path, start: int = 0, stop: int | None = None) -> Case:
     """A BROAD trial (``.mat`` or the bundled ``.npz`` excerpt), optionally a window."""
     from kinefuse.host.broad import load_trial
+    from kinefuse.host.runner import imu_inputs
 
     tr = load_trial(path)
     n = tr.n
+    # the input record `kinefuse run` gives the filters (a simulator .mat's flags and times)
     case = Case(name=tr.name, source="broad", rate_hz=float(tr.rate_hz),
-                # a simulator .mat brings its magnetometer flags and sample times; BROAD has neither
-                inputs=_inputs(tr.gyr, tr.acc, tr.mag,
-                               np.ones(n, bool) if tr.mag_valid is None else tr.mag_valid,
-                               np.full(n, 1.0 / float(tr.rate_hz)) if tr.steps is None else tr.steps),
+                inputs=_inputs(**imu_inputs(tr)),
                 q_true=np.asarray(tr.quat_ref, float), movement=np.asarray(tr.movement, bool),
                 t=np.asarray(tr.t, float))
     if start or stop is not None:
@@ -146,8 +145,9 @@ def ci_case(name: str, seconds: float = CI_SECONDS, seed: int = 1) -> Case:
     than that (the field doubling of magnetic_disturbance at 15 s, the gap of jitter_and_drops
     at 20 s), the ``seconds`` from EVENT_LEAD_S before that event: a head alone would test the
     scenario without what it is named for."""
-    late = [a for a, _b in scenario_events(name) if a > seconds - EVENT_LEAD_S]
-    if not late or any(a <= seconds - EVENT_LEAD_S for a, _b in scenario_events(name)):
+    starts = [a for a, _b in scenario_events(name)]
+    late = [a for a in starts if a > seconds - EVENT_LEAD_S]
+    if not late or len(late) < len(starts):        # no event, or one within the head
         return sim_case(name, seed=seed, seconds=seconds)
     case = sim_case(name, seed=seed)
     start = int(round((late[0] - EVENT_LEAD_S) * case.rate_hz))

@@ -72,12 +72,9 @@ def run(args) -> int:
         from kinefuse.host.broad import load_trial
         trial = load_trial(path)
         inputs = trial                      # the same input as `kinefuse run`
-        if trial.steps is None:
-            t = np.arange(trial.n) * float(trial.dt)
-            time_base = "s from the first sample (constant rate)"
-        else:                               # a simulator .mat with timing effects: its own times
-            t = np.asarray(trial.t, dtype=np.float64)
-            time_base = "s, the file's sample times"
+        t = runner.output_times(trial)
+        time_base = ("s from the first sample (constant rate)" if trial.steps is None
+                     else "s, the file's sample times")
     else:
         from rich.console import Console
         from kinefuse.host.link.cli_util import progress

@@ -58,11 +58,7 @@ def run(args) -> int:
     trial = load_trial(args.input)
     res = runner.run_filter(name, args.impl, trial, prm, args.preset)
     n = len(res.q)
-    if trial.steps is None:              # constant rate (BROAD)
-        t = np.arange(n) * float(trial.dt) if np.ndim(trial.dt) == 0 else np.cumsum(trial.dt)
-    else:                                # a simulator .mat with timing effects: its own times
-        t = np.asarray(trial.t, dtype=np.float64)
-    runner.write_estimates_csv(args.out, t, res, f"kinefuse run --filter {name} --impl {args.impl}; t in s; "
+    runner.write_estimates_csv(args.out, runner.output_times(trial), res, f"kinefuse run --filter {name} --impl {args.impl}; t in s; "
                                f"quaternion w,x,y,z sensor->earth, {runner.FRAME_TEXT[args.frame]}; "
                                f"input {args.input}", status=args.status, frame=args.frame)
     print(f"wrote {n} rows to {args.out} ({name}, {args.impl})", file=sys.stderr)
