@@ -32,6 +32,7 @@ import os
 
 import numpy as np
 
+from kinefuse.host.calib import unitparams
 from kinefuse.host.calib.affine import apply_affine
 from kinefuse.host.errors import KinefuseError
 
@@ -130,7 +131,6 @@ def validate(doc, source: str = "calibration") -> dict:
             bad(f"sensors.{name}: 'method' must be a string")
         # a map the unit would refuse is refused here too (calibrate apply, report --unit-cal):
         # |M_ij| <= 2 and b within the sensor's range hold for any real calibration
-        from kinefuse.host.calib import unitparams
         why = unitparams.out_of_range(unitparams.sensor_values(name, M, b), named=False)
         if why:
             bad(f"sensors.{name}: {why}")
