@@ -42,8 +42,8 @@ def run(args) -> int:
     from kinefuse.host.link import command as C
     from kinefuse.host.link.connection import open_connection, parse_baud
     from kinefuse.host.link.session import Session
-    if args.rate is not None and (args.action != "start" or not 0 < args.rate <= 10_000):
-        raise KinefuseError("--rate goes with start and must be in (0, 10000] Hz")
+    from kinefuse.host.link.cli_util import check_raw_rate
+    check_raw_rate(args.rate, None if args.action == "start" else "start")
     if args.reset_counter and args.action != "start":
         raise KinefuseError("--reset-counter goes with start")
     if args.heading is not None and args.action != "tare":

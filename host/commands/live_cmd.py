@@ -126,10 +126,13 @@ class UnitView:
             words.append(f"{int(s.samples_dropped)} dropped on unit")
         return ", ".join(words)
 
-    def requested_text(self) -> str:
+    def requested_text(self, unit: bool = False) -> str:
+        """The requested rate: "?" unknown, "off", or the number (with " Hz" if ``unit``)."""
         if self.requested_hz is None:
             return "?"
-        return "off" if self.requested_hz == 0 else f"{self.requested_hz:g}"
+        if self.requested_hz == 0:
+            return "off"
+        return f"{self.requested_hz:g}" + (" Hz" if unit else "")
 
     def orientation_text(self) -> str:
         if self.rpy_deg is None:
@@ -174,7 +177,7 @@ class LiveMonitor:
         for (sid, sysid), u in sorted(self.units.items()):
             rate = u.rate_hz
             out.append(f"[{el:6.1f} s] unit {sysid} ({u.connection}): rate "
-                       f"{'-' if rate is None else f'{rate:.1f}'} Hz (requested {u.requested_text()} Hz), "
+                       f"{'-' if rate is None else f'{rate:.1f}'} Hz (requested {u.requested_text(unit=True)}), "
                        f"lost {u.lost}" + (f" ({u.resets} counter resets)" if u.resets else "")
                        + f", CRC errors {self.crc_errors(sid)}, {u.orientation_text()}, "
                          f"battery {u.battery_text()}, {u.status_text()}")
@@ -279,9 +282,8 @@ def run(args) -> int:
         raise KinefuseError("--interval must be positive")
     if args.unit is not None and not 0 < args.unit < 256:
         raise KinefuseError("--unit must be a unit (MAVLink system) id 1..255")
-    if args.rate is not None and (not args.start or not 0 < args.rate <= 10_000):
-        raise KinefuseError("--rate goes with --start and must be in (0, 10000] Hz")
-    from kinefuse.host.link.cli_util import check_distinct_ports
+    from kinefuse.host.link.cli_util import check_distinct_ports, check_raw_rate
+    check_raw_rate(args.rate, None if args.start else "--start")
     check_distinct_ports(args.port)
     baud = parse_baud(args.baud)
     key = key_from_args(args)

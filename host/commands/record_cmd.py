@@ -47,13 +47,13 @@ def register(subparsers) -> None:
 
 def run(args) -> int:
     from kinefuse.host.link.connection import parse_baud
+    from kinefuse.host.link.cli_util import check_raw_rate
     from kinefuse.host.link.recorder import Recorder
     out = check_new_file(args.out, args.force, inputs=_port_paths(args.port))
     check_distinct_ports(args.port)
     if args.duration is not None and not args.duration > 0:   # NaN too (it recorded until Ctrl-C)
         raise KinefuseError("--duration must be positive")
-    if args.rate is not None and not 0 < args.rate <= 100_000:
-        raise KinefuseError("--rate must be in (0, 100000] Hz")
+    check_raw_rate(args.rate)
     baud = parse_baud(args.baud)
     key = key_from_args(args)
     rec = Recorder(out, args.port, baud=baud, note=args.note, timesync=not args.no_timesync,

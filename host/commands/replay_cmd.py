@@ -60,6 +60,9 @@ def run(args) -> int:
     if name not in runner.filter_names():
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
     prm = runner.parse_params(args.param)
+    if args.unit is not None and not args.unit.strip():
+        # e.g. --unit "$UNSET": read as no --unit, so the only unit of the file was replayed
+        raise KinefuseError("--unit is empty: give a unit (system) id such as 2, s1 or s1:2")
     path = str(args.rec)
     check_new_file(args.out, args.force, inputs=[path])
     broad = Path(path).suffix.lower() in BROAD_SUFFIXES

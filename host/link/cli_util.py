@@ -52,6 +52,22 @@ def check_distinct_ports(ports) -> None:
         seen[key] = url
 
 
+RAW_RATE_MAX_HZ = 10_000   # the unit refuses message intervals below 100 us (firmware/app/kf_handle.c)
+
+
+def check_raw_rate(rate, goes_with: str | None = None) -> None:
+    """--rate (KF_RAW_SAMPLE, Hz) within what the unit accepts; ``goes_with`` names the option or
+    action it needs when that is missing (None: it is present or not needed)."""
+    from kinefuse.host.errors import KinefuseError
+    if rate is None:
+        return
+    if goes_with is not None:
+        raise KinefuseError(f"--rate goes with {goes_with}")
+    if not 0 < rate <= RAW_RATE_MAX_HZ:   # NaN too
+        raise KinefuseError(f"--rate must be in (0, {RAW_RATE_MAX_HZ}] Hz (the unit refuses faster "
+                            f"rates), not {rate:g}")
+
+
 def fmt_rate(x) -> str:
     return "-" if x is None else f"{x:,.1f}"
 

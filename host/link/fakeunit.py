@@ -195,7 +195,8 @@ class FakeUnit:
     def _orientation(self, t_us: int, counter: int) -> bytes:
         """KF_ORIENTATION after the sample of time ``t_us`` and ``counter``: the dialect's
         time_boot_us and sample_counter of the newest KF_RAW_SAMPLE used (the same pair)."""
-        status = 1 | 8 | (64 if self.tared else 0)  # INITIALISED | MAG_USED
+        # INITIALISED (| HEADING_TARED); not MAG_USED: filter_id 1 is gyroscope strapdown
+        status = 1 | (64 if self.tared else 0)
         return self.enc.encode(MSG_ORI, time_boot_us=t_us, sample_counter=counter,
                                q_w=float(self.q[0]), q_x=float(self.q[1]), q_y=float(self.q[2]), q_z=float(self.q[3]),
                                rejected_samples=0, status=status, earth_frame=1, filter_id=1,

@@ -113,6 +113,12 @@ def test_params_set_writes_nothing_when_an_item_is_bad(run, monkeypatch, second,
     (["params", "--port", "fake:", "--key", "", "--set", "KF_RATE_HZ=500"], "--key is empty"),
     (["command", "--port", "fake:", "--key-file", " ", "start"], "--key-file is empty"),
     (["live", "--port", "fake:", "--rate", "5", "--seconds", "1"], "--rate goes with --start"),
+    # record took up to 100 kHz, which the unit refuses (intervals below 100 us): the recording
+    # went on at the old rate with only a warning about the refused command
+    (["record", "--port", "fake:", "--rate", "20000", "--out", "x.kfr"], "--rate must be in (0, 10000] Hz"),
+    (["record", "--port", "fake:", "--rate", "nan", "--out", "x.kfr"], "--rate must be in (0, 10000] Hz"),
+    (["live", "--port", "fake:", "--start", "--rate", "0", "--seconds", "1"], "--rate must be in (0, 10000]"),
+    (["command", "--port", "fake:", "start", "--rate", "1e5"], "--rate must be in (0, 10000] Hz"),
     (["signing", "--port", "fake:", "--new-key", "0" * 64], "use --clear"),
     (["signing"], "--port"),
     (["signing", "--port", "fake:", "--unit", "300"], "--unit must be a unit (MAVLink system) id"),
@@ -123,3 +129,18 @@ def test_params_set_writes_nothing_when_an_item_is_bad(run, monkeypatch, second,
 def test_argument_errors_are_one_line(run, argv, text):
     code, out, err = run(*argv)
     assert code == 2 and err.count("\n") == 1 and text in err, err
+
+
+def test_fake_unit_orientation_status_matches_its_strapdown_filter():
+    """The fake unit's KF_ORIENTATION (gyroscope strapdown, filter_id 1) carried MAG_USED."""
+    from kinefuse.host.link.decoder import StreamDecoder
+    from kinefuse.host.link.dialect import kinefuse as D
+    from kinefuse.host.link.fakeunit import FakeUnit
+    unit = FakeUnit(conn=None)
+    for tared in (False, True):
+        unit.tared = tared
+        (f,) = StreamDecoder().feed(unit._orientation(1000, 1))
+        assert f.msg.filter_id == D.KF_FILTER_GYRO_STRAPDOWN
+        assert f.msg.status & D.KF_ORIENTATION_STATUS_INITIALISED
+        assert not f.msg.status & D.KF_ORIENTATION_STATUS_MAG_USED
+        assert bool(f.msg.status & D.KF_ORIENTATION_STATUS_HEADING_TARED) == tared

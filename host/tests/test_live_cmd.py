@@ -10,7 +10,7 @@ import pytest
 from kinefuse.host import cli
 
 MINE = ("live_cmd",)
-LINE = re.compile(r"\[\s*([\d.]+) s\] unit (\d+) \((.+?)\): rate ([\d.]+) Hz \(requested (\S+) Hz\), lost (\d+), "
+LINE = re.compile(r"\[\s*([\d.]+) s\] unit (\d+) \((.+?)\): rate ([\d.]+) Hz \(requested (\S+?)(?: Hz)?\), lost (\d+), "
                   r"CRC errors (\d+), (.+?), battery (.+?), (.+)$")
 
 
@@ -145,3 +145,17 @@ def test_bad_input_gives_one_line(run, tmp_path, argv, text):
     assert code == 2, (code, out, err)
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("kinefuse: error:") and text in lines[0], err
+
+
+def test_plain_line_states_requested_rate_off_without_unit():
+    """A unit streaming with its raw rate off printed '(requested off Hz)'."""
+    from types import SimpleNamespace
+    from kinefuse.host.commands.live_cmd import LiveMonitor, UnitView
+    s = SimpleNamespace(conn=SimpleNamespace(url="fake:"),
+                        decoder=SimpleNamespace(counters=SimpleNamespace(crc_errors=0, bytes_in=0)))
+    mon = LiveMonitor([s])
+    u = mon.units[(0, 1)] = UnitView(0, 1, s.conn.url)
+    u.requested_hz = 0.0
+    assert "(requested off)" in mon.lines()[0], mon.lines()
+    u.requested_hz = 250.0
+    assert "(requested 250 Hz)" in mon.lines()[0], mon.lines()

@@ -139,6 +139,9 @@ def test_bad_input_gives_one_line(run, tmp_path, argv, text):
 def test_kfr_errors(run, kfr_files, tmp_path):
     one, _ = kfr_files
     _one_line_error(*run("replay", one, "--out", tmp_path / "o.csv", "--unit", "7"), "unit 7 is not in this recording")
+    # --unit "" (an unset variable) replayed the file's only unit as if no --unit were given
+    _one_line_error(*run("replay", one, "--out", tmp_path / "e.csv", "--unit", " "), "--unit is empty")
+    assert not (tmp_path / "e.csv").exists()
 
 
 def test_out_naming_the_recording_itself_is_refused(run, kfr_files, tmp_path):
