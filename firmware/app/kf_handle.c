@@ -183,7 +183,10 @@ static uint8_t set_interval(kf_app *app, float msgid_f, float interval_us)
     } else if (interval_us < 100.0f) {
         return MAV_RESULT_DENIED;                        /* faster than 10 kHz */
     } else {
-        v.u = (uint32_t)(1e6f / interval_us + 0.5f);
+        v.u = (uint32_t)(1e6f / interval_us + 0.5f);     /* whole Hz */
+        if (v.u == 0u) {
+            return MAV_RESULT_DENIED;                    /* slower than 0.5 Hz: not "off" */
+        }
     }
     return kf_config_set(app, idx, v) == 0u ? MAV_RESULT_ACCEPTED : MAV_RESULT_DENIED;
 }

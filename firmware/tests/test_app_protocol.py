@@ -250,6 +250,11 @@ def test_stream_stop_start_and_counter_reset(unit):
 def test_set_message_interval_and_request_message(unit):
     assert ack(command(unit, 511, 52501, 20000), 511) == 0      # KF_ORIENTATION at 50 Hz
     assert unit.param("KF_ORI_RATE_HZ") == 50
+    # an interval above 2 s rounded to 0 Hz and turned the stream off; now refused, rate kept
+    assert ack(command(unit, 511, 52501, 3e6), 511) == 2
+    assert ack(command(unit, 511, 52501, float("inf")), 511) == 2
+    assert unit.param("KF_ORI_RATE_HZ") == 50
+    assert ack(command(unit, 511, 52500, 250), 511) == 2        # KF_RAW_SAMPLE at 4 kHz: above KF_RATE_HZ's 2000
     assert ack(command(unit, 511, 52501, -1), 511) == 0         # off
     assert unit.param("KF_ORI_RATE_HZ") == 0
     assert ack(command(unit, 511, 33, 1000), 511) == 3          # unsupported message
