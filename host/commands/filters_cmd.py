@@ -9,6 +9,7 @@ from kinefuse.host.console import print_table
 
 def register(sub):
     p = sub.add_parser("filters", help="list filters, parameters, defaults and units")
+    p.add_argument("names", nargs="*", metavar="NAME", help="only these filters (default: all)")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
     p.set_defaults(func=run)
 
@@ -32,6 +33,12 @@ def describe() -> dict:
 
 def run(args) -> int:
     info = describe()
+    if args.names:
+        from kinefuse.host.errors import KinefuseError
+        unknown = [n for n in args.names if n not in info]
+        if unknown:
+            raise KinefuseError(f"unknown filter {unknown[0]!r} (available: {', '.join(info)})")
+        info = {n: info[n] for n in dict.fromkeys(args.names)}
     if args.json:
         print(json.dumps(info, indent=1))
         return 0

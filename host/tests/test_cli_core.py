@@ -38,6 +38,17 @@ def test_filters_lists_parameters_with_units_and_defaults():
     assert info["madgwick"]["presets"]["seed001"]["beta"] == 0.03
 
 
+def test_filters_names_one_filter_or_gives_one_line():
+    """`kinefuse filters guo` was 'unrecognized arguments'."""
+    r = kf("filters", "--json", "guo", "vac", "guo")
+    assert r.returncode == 0, r.stderr
+    assert list(json.loads(r.stdout)) == ["guo", "vac"]
+    r = kf("filters", "guo")
+    assert r.returncode == 0 and "guo — " in r.stdout and "madgwick" not in r.stdout, r.stdout
+    r = kf("filters", "gou")
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "unknown filter 'gou'" in r.stderr, r.stderr
+
+
 def test_run_writes_one_row_per_sample(short_trial, tmp_path):
     out = tmp_path / "est.csv"
     r = kf("run", "--filter", "madgwick", "--impl", "q", "--input", str(short_trial), "--out", str(out))
