@@ -586,23 +586,39 @@ def render_all() -> dict[str, str]:
 
 def parameter_table() -> list[dict]:
     """Every generated parameter in table order (calibration, filters, joint step, leg EKF, sensor
-    1's calibration with ``"sensor": 1``): name, owner, field, default, range, choices (empty: any
-    value in the range; else a switch, exactly these values)."""
+    1's calibration with ``"sensor": 1``): name, owner, field, default, range, unit, doc (the
+    estimator's), choices (empty: any value in the range; else a switch, exactly these values)."""
     filters, calib = collect(read_list())
-    rows = [{"name": n, "owner": CALIB, "field": p.name, "default": p.default, "min": p.lo, "max": p.hi,
-             "unit": p.unit, "choices": tuple(p.choices)} for p, n in zip(calib["params"], calib["names"])]
+
+    def rows_of(owner, params, names, **extra):
+        return [{"name": n, "owner": owner, "field": p.name, "default": p.default, "min": p.lo,
+                 "max": p.hi, "unit": p.unit, "doc": p.doc, "choices": tuple(p.choices), **extra}
+                for p, n in zip(params, names)]
+
+    rows = rows_of(CALIB, calib["params"], calib["names"])
     for f in filters:
-        rows += [{"name": n, "owner": f.entry.name, "field": p.name, "default": p.default, "min": p.lo,
-                  "max": p.hi, "unit": p.unit, "choices": tuple(p.choices)} for p, n in zip(f.params, f.names)]
-    J = calib["joint"]
-    rows += [{"name": n, "owner": JOINT, "field": p.name, "default": p.default, "min": p.lo,
-              "max": p.hi, "unit": p.unit, "choices": tuple(p.choices)} for p, n in zip(J["params"], J["names"])]
-    G = calib["leg"]
-    rows += [{"name": n, "owner": LEG, "field": p.name, "default": p.default, "min": p.lo,
-              "max": p.hi, "unit": p.unit, "choices": tuple(p.choices)} for p, n in zip(G["params"], G["names"])]
-    rows += [{"name": n, "owner": CALIB, "sensor": 1, "field": p.name, "default": p.default, "min": p.lo,
-              "max": p.hi, "unit": p.unit, "choices": tuple(p.choices)} for p, n in zip(calib["params"], calib["names2"])]
+        rows += rows_of(f.entry.name, f.params, f.names)
+    rows += rows_of(JOINT, calib["joint"]["params"], calib["joint"]["names"])
+    rows += rows_of(LEG, calib["leg"]["params"], calib["leg"]["names"])
+    rows += rows_of(CALIB, calib["params"], calib["names2"], sensor=1)
     return rows
+
+
+def app_parameters(app_dir: Path = APP_DIR) -> dict[str, dict]:
+    """The application's own parameters (KF_RATE_HZ, ...): MAVLink name -> default, min, max
+    (from the ``KF_APP_ROW`` lines of ``kf_params.c``) and meaning (the comments of the
+    ``KF_P_*`` enum in ``kf_params.h``), read from the C where they are written."""
+    text = (app_dir / "kf_params.h").read_text()
+    body = text[text.index("enum {", text.index("Application parameters")):]
+    body = body[:body.index("KF_P_APP_COUNT")]
+    docs = {"KF_" + m.group(1): " ".join(w for w in m.group(2).split() if w != "*")
+            for m in re.finditer(r"KF_P_(\w+),\s*/\*(.*?)\*/", body, re.S)}
+    out = {}
+    row = re.compile(r'KF_APP_ROW\("(\w+)",\s*KF_PT_\w+,\s*(\w+),\s*(\w+),\s*(\w+),')
+    for m in row.finditer((app_dir / "kf_params.c").read_text()):
+        default, lo, hi = (int(v.rstrip("uU"), 0) for v in m.group(2, 3, 4))
+        out[m.group(1)] = {"default": default, "min": lo, "max": hi, "doc": docs.get(m.group(1), "")}
+    return out
 
 
 def write(out_dir: Path = APP_DIR) -> list[str]:

@@ -1,6 +1,7 @@
 """``kinefuse params``: read and write a unit's parameters (MAVLink parameter protocol).
 
     kinefuse params --port /dev/ttyUSB0                       # list all
+    kinefuse params --port /dev/ttyUSB0 --describe            # ... with unit, range and meaning
     kinefuse params --port /dev/ttyUSB0 --get KF_RATE_HZ
     kinefuse params --port /dev/ttyUSB0 --set KF_RATE_HZ=500 --set KF_MAG_ENABLE=0
     kinefuse params --port /dev/ttyUSB0 --key-file unit.key --set KF_RATE_HZ=500   # signed writes
@@ -27,6 +28,9 @@ def register(subparsers) -> None:
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE", help="write one parameter (repeatable)")
     p.add_argument("--timeout", type=float, default=3.0, metavar="S", help="wait this long for the unit (default 3)")
     add_key_args(p, "parameter writes")
+    p.add_argument("--describe", action="store_true",
+                   help="also show each parameter's unit, range, default and meaning (from this "
+                        "host's firmware tables: a unit with other firmware may differ)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(func=run)
 
@@ -68,6 +72,40 @@ def _choices() -> dict[str, tuple]:
         return {r["name"]: r["choices"] for r in parameter_table() if r.get("choices")}
     except KinefuseError:       # generated models missing: the unit still checks
         return {}
+
+
+def describe(names) -> dict[str, dict]:
+    """MAVLink name -> {unit, min, max, default, choices, meaning} for the names this host's
+    firmware tables know (the generated parameter table and the application's own rows); names
+    they do not know are left out."""
+    from kinefuse.firmware import apptables
+    try:
+        table = {r["name"]: r for r in apptables.parameter_table()}
+    except KinefuseError:       # generated models missing: the application's own rows only
+        table = {}
+    app = apptables.app_parameters()
+    out: dict[str, dict] = {}
+    for n in names:
+        if n in table:
+            r = table[n]
+            owner = r["owner"] + (" (sensor 1)" if r.get("sensor") == 1 else "")
+            out[n] = {"unit": r["unit"], "min": r["min"], "max": r["max"], "default": r["default"],
+                      "choices": list(r["choices"]), "meaning": f"{owner} {r['field']}: {r['doc']}"}
+        elif n in app:
+            r = app[n]
+            out[n] = {"unit": "", "min": r["min"], "max": r["max"], "default": r["default"],
+                      "choices": [], "meaning": r["doc"]}
+    return out
+
+
+def _describe_text(d: dict | None) -> str:
+    if d is None:
+        return "  (not in this host's firmware tables)"
+    num = lambda v: str(v) if isinstance(v, int) else f"{v:g}"   # noqa: E731 (counts stay whole)
+    rng = ("one of " + " | ".join(num(c) for c in d["choices"]) if d["choices"]
+           else f"[{num(d['min'])}, {num(d['max'])}]")
+    unit = f"{d['unit']}, " if d["unit"] else ""
+    return f"  ({unit}{rng}, default {num(d['default'])}) {d['meaning']}"
 
 
 def run(args) -> int:
@@ -128,11 +166,17 @@ def run(args) -> int:
             result["get"] = {name: client.get(name) for name in args.get}
         if not sets and not args.get:
             result["params"] = client.fetch_all(timeout=max(args.timeout, 5.0))
+    info = None
+    if args.describe:
+        info = describe([n for k in ("set", "get", "params") for n in result.get(k, {})])
+        result["describe"] = info
     if args.json:
         print_json(result)
         return 0
     con = console()
     for key in ("set", "get", "params"):
         for name, value in result.get(key, {}).items():
-            con.print(f"{name} = {value}" + ("  (written)" if key == "set" else ""))
+            con.print(f"{name} = {value}" + ("  (written)" if key == "set" else "")
+                      + (_describe_text(info.get(name)) if info is not None else ""), markup=False,
+                      soft_wrap=True)
     return 0
