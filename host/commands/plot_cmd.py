@@ -1,4 +1,7 @@
-"""``kinefuse plot``: an orientation estimate against the BROAD optical reference, as a PNG."""
+"""``kinefuse plot``: an orientation estimate as a PNG -- against the optical reference of a BROAD
+trial (or simulator .mat), or, for a unit or vendor recording (.kfr, Xsens DOT, MATRIX,
+MetaBase, kinefuse CSV), with the sensor magnitudes, lost samples, the filter's status and (a
+.kfr) the unit's own on-board orientation."""
 from __future__ import annotations
 
 import sys
@@ -12,13 +15,18 @@ from kinefuse.host.outputs import add_force_arg, check_new_file
 
 def register(sub) -> None:
     p = sub.add_parser(
-        "plot", help="plot a filter's orientation against the BROAD reference (PNG)",
+        "plot", help="plot a filter's orientation (PNG): vs the BROAD reference, or of a recording",
         description="Run a filter on one trial and plot estimate vs optical reference as Euler "
                     "angles (ZYX yaw-pitch-roll of sensor->ENU), the total/heading/inclination "
-                    "error over time, the movement phases and the filter's status flags.")
+                    "error over time, the movement phases and the filter's status flags.  A unit "
+                    "or vendor recording (no reference) is plotted with its sensor magnitudes, "
+                    "lost samples, the filter's status and, for a .kfr, the unit's own "
+                    "KF_ORIENTATION.")
     p.add_argument("--input", required=True, metavar="TRIAL",
                    help="trial file (.mat/.npz), or a trial name or number such as 32 looked "
-                        "up in the default data (shared BROAD folder or bundled excerpt)")
+                        "up in the default data (shared BROAD folder or bundled excerpt); or a "
+                        "recording (.kfr, Xsens DOT / MATRIX / MetaBase / kinefuse CSV)")
+    p.add_argument("--unit", metavar="ID", help="unit of a multi-unit .kfr (as `kinefuse replay`)")
     p.add_argument("--filter", metavar="NAME",
                    help="kinefuse filter or competitor (vqf, imufusion, ...); default: the "
                         "default kinefuse filter")
@@ -54,28 +62,107 @@ def resolve_trial(arg: str) -> Path:
     raise KinefuseError(f"{arg}: no such file, and no trial of that name in the default data")
 
 
+def _check_window_args(args) -> None:
+    """--start/--end on their own (before any work): finite, and start < end."""
+    for opt, v in (("--start", args.start), ("--end", args.end)):
+        if v is not None and not abs(v) < float("inf"):
+            raise KinefuseError(f"{opt} must be a finite time in s, not {v}")
+    if args.start is not None and args.end is not None and not args.start < args.end:
+        raise KinefuseError(f"--start/--end: need start < end, got {args.start:g} and {args.end:g}")
+
+
+def _window(args, t0: float, t1: float, what: str):
+    """--start/--end (s on the plot's time axis, which runs from t0 to t1) or None."""
+    if args.start is None and args.end is None:
+        return None
+    start = t0 if args.start is None else args.start
+    end = t1 if args.end is None else args.end
+    if start >= t1:
+        raise KinefuseError(f"--start {start:g}: {what} ends at {t1:.1f} s")
+    if end <= max(t0, 0.0) or not start < end:
+        raise KinefuseError(f"--start/--end: {what} runs from {max(t0, 0.0):.1f} to {t1:.1f} s; "
+                            f"got {start:g} to {end:g}")
+    return start, end
+
+
+def _out_path(args, stem: str, spec, input_file: Path) -> Path:
+    safe = spec.label.replace(" (", "_").replace(")", "").replace(" ", "_")
+    out = Path(args.out) if args.out else Path(f"{stem}_{safe}.png")
+    if out.suffix.lower() != ".png":
+        raise KinefuseError(f"--out {out}: the plot is written as PNG, name it *.png")
+    check_new_file(out, args.force, inputs=[input_file])
+    return out
+
+
+def _plot_recording(args, spec, path: Path) -> int:
+    """A recording without reference: replay it through the filter, then plot."""
+    import numpy as np
+    from rich.console import Console
+
+    from kinefuse.host import runner
+    from kinefuse.host.commands.replay_cmd import read_imu_recording, time_base_text, unit_orientation
+    from kinefuse.host.link.cli_util import progress
+    from kinefuse.host.plots import plot_recording
+
+    if spec.kind == "competitor":
+        raise KinefuseError(f"{spec.name}: competitors are run on BROAD trials (constant rate, a "
+                            f"magnetometer reading in every sample); plot a recording with a "
+                            f"kinefuse filter")
+    if args.unit is not None and not args.unit.strip():
+        raise KinefuseError("--unit is empty: give a unit (system) id such as 2, s1 or s1:2")
+    out = _out_path(args, path.stem, spec, path) if args.out else None   # before any work
+    err = Console(stderr=True)
+    with progress(err, f"reading {path}"):
+        rec = read_imu_recording(str(path), args.unit)
+    inputs = runner.recording_inputs(rec)
+    t = np.asarray(inputs.t, dtype=np.float64)
+    if len(t) < 2:
+        raise KinefuseError(f"{path}: {len(t)} sample(s): nothing to plot")
+    window = _window(args, float(t[0]), float(t[-1]), "the recording")
+    who = f" unit {rec.metadata['unit']}" if rec.fmt == "kfr" else ""
+    if out is None:
+        several = rec.fmt == "kfr" and len(rec.metadata.get("units_in_file", [])) > 1
+        out = _out_path(args, path.stem + (f"_u{rec.metadata['sysid']}" if several else ""), spec, path)
+    for w in rec.warnings:
+        print(f"kinefuse: warning: {w}", file=sys.stderr)
+    unit_q = None
+    if rec.fmt == "kfr":
+        try:
+            idx, q_u, _note, _total = unit_orientation(str(path), rec)
+            unit_q = (idx, q_u)
+        except KinefuseError as exc:
+            print(f"kinefuse: note: no on-board orientation plotted ({exc})", file=sys.stderr)
+    with err.status(f"running {spec.label} on {path.name}{who} ({len(t):,} samples)"):
+        res = runner.run_filter(spec.name, spec.impl, inputs, spec.params_dict())
+    try:
+        plot_recording(t, res.q, spec.label, f"{path.name}{who}", out, inputs.gyr, inputs.acc,
+                       None if rec.mag is None else inputs.mag, inputs.mag_valid, inputs.dt,
+                       status=res.status, unit_q=unit_q, window=window,
+                       time_text=f"s, {time_base_text(rec)}")
+    except OSError as exc:
+        raise KinefuseError(f"{out}: cannot write the plot ({exc.strerror or exc})") from None
+    rejected = runner.rejected_count(res)
+    print(f"{spec.label} on {path.name}{who}: {len(t):,} samples"
+          + ("" if rejected is None else f", {rejected} rejected by the filter"), file=sys.stderr)
+    print(str(out))
+    return 0
+
+
 def run(args) -> int:
     params = accuracy.parse_params(args.param)
     name = (args.filter or "").strip() or accuracy.default_filter_name()
     if name == "all":
         raise KinefuseError("plot takes one filter, not 'all'")
     spec = accuracy.resolve(name, args.impl, params, impl_given=True)[0]
+    _check_window_args(args)
     trial_file = resolve_trial(args.input)
+    if trial_file.suffix.lower() not in broad.TRIAL_SUFFIXES:
+        return _plot_recording(args, spec, trial_file)
+    if args.unit is not None:
+        raise KinefuseError("--unit applies to .kfr unit recordings, not to BROAD trials")
     trial = broad.load_trial(trial_file)
-    window = None
-    if args.start is not None or args.end is not None:
-        start = 0.0 if args.start is None else args.start
-        end = trial.duration_s if args.end is None else args.end
-        if start >= trial.duration_s:
-            raise KinefuseError(f"--start {start}: the trial is only {trial.duration_s:.1f} s long")
-        if not 0.0 <= start < end:
-            raise KinefuseError(f"--start/--end: need 0 <= start < end, got {start} and {end}")
-        window = (start, end)
-    safe = spec.label.replace(" (", "_").replace(")", "").replace(" ", "_")
-    out = Path(args.out) if args.out else Path(f"{trial.name}_{safe}.png")
-    if out.suffix.lower() != ".png":
-        raise KinefuseError(f"--out {out}: the plot is written as PNG, name it *.png")
-    check_new_file(out, args.force, inputs=[trial_file])
+    window = _window(args, 0.0, trial.duration_s, "the trial")
+    out = _out_path(args, trial.name, spec, trial_file)
     from rich.console import Console
 
     err = Console(stderr=True)

@@ -82,13 +82,13 @@ def run(args) -> int:
         from rich.console import Console
         from kinefuse.host.link.cli_util import progress
         with progress(Console(stderr=True), f"reading {path}"):    # moves with a .kfr's decoding
-            rec = _read(path, args.unit)
+            rec = read_imu_recording(path, args.unit)
         for w in rec.warnings:
             print(f"kinefuse: warning: {w}", file=sys.stderr)
         inputs = runner.recording_inputs(rec)
         t = inputs.t
-        time_base = _time_base(rec)
-    unit_q = _unit_orientation(path, rec) if args.compare_unit else None
+        time_base = time_base_text(rec)
+    unit_q = unit_orientation(path, rec) if args.compare_unit else None
 
     res = _run_filter(name, args.impl, inputs, prm, args.preset)
     dt = np.atleast_1d(getattr(inputs, "dt", None))
@@ -119,7 +119,9 @@ def _run_filter(name, impl, inputs, prm, preset):
     return runner.run_filter(name, impl, inputs, prm, preset)
 
 
-def _read(path: str, unit):
+def read_imu_recording(path: str, unit):
+    """A recording that replay (and plot) can feed to an IMU filter: read with its format's reader
+    (``unit``: a .kfr's unit), one-line errors for a missing accelerometer or gyroscope."""
     from kinefuse.host.readers import ReaderError, detect_format, read_recording
     fmt = detect_format(path)
     if unit is not None and fmt != "kfr":
@@ -137,7 +139,7 @@ def _read(path: str, unit):
     return rec
 
 
-def _time_base(rec) -> str:
+def time_base_text(rec) -> str:
     if rec.fmt == "kfr":
         if rec.metadata.get("time_base") == "host":
             start = rec.metadata.get("start_utc")
@@ -147,7 +149,7 @@ def _time_base(rec) -> str:
 
 
 # ------------------------------------------------------------------------------ --compare-unit
-def _unit_orientation(path: str, rec):
+def unit_orientation(path: str, rec):
     """The unit's KF_ORIENTATION quaternions (ENU) matched to the replayed samples by device time:
     (sample indices, quaternions, note)."""
     if rec is None or rec.fmt != "kfr":

@@ -97,8 +97,8 @@ def test_plot_keeps_an_earlier_png_unless_forced(kf, tmp_path, monkeypatch):
     (["--input", "/no/such/file.mat"], "/no/such/file.mat: no such file"),
     (["--input", "24", "--filter", "all"], "plot takes one filter"),
     (["--input", "24", "--out", "x.jpg"], "name it *.png"),
-    (["--input", "24", "--start", "30", "--end", "10"], "need 0 <= start < end"),
-    (["--input", "24", "--start", "999"], "only 75.0 s long"),
+    (["--input", "24", "--start", "30", "--end", "10"], "need start < end, got 30 and 10"),
+    (["--input", "24", "--start", "999"], "the trial ends at 75.0 s"),
     (["--input", "24", "--filter", "bogus"], "unknown filter 'bogus'"),
 ])
 def test_plot_errors(kf, monkeypatch, argv, message):

@@ -1,0 +1,94 @@
+"""``kinefuse plot`` of a unit recording (no reference): replayed orientation, sensor magnitudes,
+lost samples, status and the unit's own KF_ORIENTATION; and its one-line errors."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from kinefuse.host import cli
+from kinefuse.host.broad import EXCERPT_DIR
+from kinefuse.host.plots import lost_before, status_flags
+
+MINE = ("plot_cmd",)
+TRIAL = EXCERPT_DIR / "24_disturbed_tapping_A.npz"
+
+
+@pytest.fixture
+def run(monkeypatch, capsys):
+    monkeypatch.setattr(cli, "COMMAND_MODULES", [m for m in cli.COMMAND_MODULES if m.rsplit(".", 1)[-1] in MINE])
+    monkeypatch.setattr(cli, "BENCH_MODULES", [])
+
+    def _run(*argv):
+        code = cli.main([str(a) for a in argv])
+        out, err = capsys.readouterr()
+        return code, out, err
+    return _run
+
+
+def _one_line_error(res, text):
+    code, out, err = res
+    lines = err.strip().splitlines()
+    assert code == 2 and len(lines) == 1 and text in lines[0], res
+    assert "Traceback" not in err
+
+
+@pytest.fixture(scope="module")
+def kfr_files(tmp_path_factory):
+    from kinefuse.host.link.recorder import Recorder
+    d = tmp_path_factory.mktemp("plotrec")
+    one, two = d / "one.kfr", d / "two.kfr"
+    Recorder(one, ["fake:rate=500,drop=40"]).run(1.0)
+    Recorder(two, ["fake:rate=200", "fake:unit=2,rate=200"]).run(0.5)
+    return one, two
+
+
+def test_lost_samples_and_status_flags():
+    dt = np.full(100, 0.002)
+    dt[[10, 50, 51]] = [0.004, 0.006, 0.0031]
+    assert np.flatnonzero(lost_before(dt)).tolist() == [10, 50, 51]
+    flags = status_flags({"rest": np.array([0, 1, 1, 0, 0]), "rejected": np.array([0, 0, 1, 1, 3]),
+                          "bias": np.zeros((5, 3)), "mag_disturbed": np.array([True, False] * 2 + [True])}, 5)
+    assert list(flags) == ["rest", "rejected", "mag disturbed"]
+    assert flags["rest"].tolist() == [False, True, True, False, False]
+    # a running count: the samples where it grows (it was painted on every sample after the first)
+    assert flags["rejected"].tolist() == [False, False, True, False, True]
+
+
+def test_plot_of_a_unit_recording(run, kfr_files, tmp_path):
+    one, two = kfr_files
+    out = tmp_path / "one.png"
+    code, stdout, err = run("plot", "--input", one, "--impl", "f32", "--out", out)
+    assert code == 0, err
+    assert stdout.strip() == str(out) and out.stat().st_size > 20_000
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "flagship (f32) on one.kfr unit 1:" in err and "rejected by the filter" in err
+    _one_line_error(run("plot", "--input", one, "--impl", "f32", "--out", out), "exists")
+    # a two-unit file: the unit is chosen, and the default name says which
+    _one_line_error(run("plot", "--input", two, "--out", tmp_path / "t.png"), "choose one with --unit")
+    code, stdout, err = run("plot", "--input", two, "--unit", "2", "--impl", "f32",
+                            "--start", "0.1", "--end", "0.4")
+    assert code == 0, err
+    made = stdout.strip()
+    assert made.endswith("two_u2_flagship_f32.png"), made
+    import os
+    os.remove(made)
+
+
+@pytest.mark.parametrize("argv, text", [
+    (["--filter", "vqf"], "competitors are run on BROAD trials"),
+    (["--unit", " "], "--unit is empty"),
+    (["--start", "99"], "--start 99: the recording ends at"),
+    (["--end", "inf"], "--end must be a finite time"),
+    (["--start", "0.5", "--end", "0.2"], "need start < end, got 0.5 and 0.2"),
+    (["--end", "-1"], "the recording runs from 0.0 to"),
+    (["--filter", "angle-kf"], "angle-kf"),
+])
+def test_recording_errors_are_one_line(run, kfr_files, tmp_path, argv, text):
+    one, _ = kfr_files
+    _one_line_error(run("plot", "--input", one, "--out", tmp_path / "x.png", *argv), text)
+    assert not (tmp_path / "x.png").exists()
+
+
+def test_unit_option_is_refused_for_a_broad_trial(run, tmp_path):
+    _one_line_error(run("plot", "--input", TRIAL, "--unit", "2", "--out", tmp_path / "b.png"),
+                    "--unit applies to .kfr unit recordings")
