@@ -19,6 +19,7 @@ COMMAND_MODULES = [
     "kinefuse.host.commands.filters_cmd",
     "kinefuse.host.commands.run_cmd",
     "kinefuse.host.commands.replay_cmd",
+    "kinefuse.host.commands.opensense_cmd",
     "kinefuse.host.commands.demo_cmd",
     "kinefuse.host.commands.plot_cmd",
     "kinefuse.host.commands.codegen_cmd",
