@@ -63,11 +63,49 @@ def summarize(df) -> dict:
     return out
 
 
+def check_input(path, raw: bool) -> None:
+    """What decode, export and stats refuse before decoding, in one line:
+
+    - an empty FILE argument (it was read as the current folder);
+    - a device (a serial port given as FILE with --raw hung reading it to its end; /dev/zero
+      filled the memory) or a pipe (see below);
+    - an empty file (a .kfr said "not a kinefuse recording; use --raw", with --raw it was
+      summarised as 0 frames);
+    - ``--raw`` on a .kfr recording or a .tlog: the decoder reads those by their own format
+      whatever --raw says, so the recording's summary, CSVs (with host times) or statistics
+      came back instead of the raw capture asked for."""
+    from pathlib import Path
+    from kinefuse.host.link.frames import is_recording
+    if not str(path).strip():
+        raise KinefuseError("FILE is empty: give a .kfr recording (or a raw capture with --raw)")
+    p = Path(path)
+    if p.is_char_device() or p.is_block_device():   # a serial port, /dev/zero: read to an end that never came
+        raise KinefuseError(f"{p} is a device, not a file: decode, export and stats read recordings and "
+                            f"capture files (record a port with kinefuse record --port {p})")
+    if p.exists() and not p.is_dir() and not p.is_file():
+        # a pipe (/dev/stdin, <(...)): the file is opened twice (its magic, then its bytes), and
+        # the first read took a buffer's worth: 10 of 100 frames were decoded, without a word
+        raise KinefuseError(f"{p} is a pipe, not a file: save it to a file first (it is read more than once)")
+    if not p.is_file():
+        return      # the decoder says what is wrong with it (missing, a directory)
+    if p.stat().st_size == 0:
+        raise KinefuseError(f"{p} is empty (0 bytes): nothing was recorded in it")
+    if not raw:
+        return
+    if is_recording(p):
+        raise KinefuseError(f"{p} is a kinefuse recording (.kfr), not a plain MAVLink capture: "
+                            f"leave out --raw (it reads the file as its chunks, with host times)")
+    if p.suffix.lower() == ".tlog":
+        raise KinefuseError(f"{p} is read as a MAVLink telemetry log (.tlog, time-stamped frames), "
+                            f"not a plain MAVLink capture: leave out --raw (or rename a plain capture)")
+
+
 def run(args) -> int:
     from kinefuse.host.link.cli_util import progress
     from kinefuse.host.link.frames import decode_file
     if args.show < 0:
         raise KinefuseError("--show must be 0 or more (messages per type)")
+    check_input(args.file, args.raw)
     with progress(console(args.json), f"decoding {args.file}") as tick:
         df = decode_file(args.file, raw=args.raw, progress=tick)
     summary = summarize(df)

@@ -33,6 +33,10 @@ def run(args) -> int:
     if messages == []:   # --messages "" (an empty variable) exported every message
         raise KinefuseError("--messages names no message: give names such as KF_RAW_SAMPLE,KF_ORIENTATION "
                             "(or leave it out for all)")
+    from kinefuse.host.commands.decode_cmd import check_input
+    check_input(args.file, args.raw)
+    if not args.out.strip():   # Path("") is the current folder: the CSVs landed there
+        raise KinefuseError("--out is empty: give the folder for the CSV files")
     check_output_dir(args.out, args.force, pattern="*.csv")
     with Progress(console=con, transient=True, disable=not con.is_terminal) as prog:   # piped: no blank line
         task = prog.add_task("decoding", total=None)

@@ -26,6 +26,8 @@ def run(args) -> int:
     from kinefuse.host.link import stats
     from kinefuse.host.link.frames import decode_file
     from kinefuse.host.link.cli_util import progress
+    from kinefuse.host.commands.decode_cmd import check_input
+    check_input(args.file, args.raw)
     with progress(console(args.json), f"decoding {args.file}") as tick:
         result = stats.compute(decode_file(args.file, raw=args.raw, progress=tick))
     if args.json:

@@ -10,11 +10,16 @@ CSVs of several units; as ``kinefuse stats`` fits it: lower envelope, a leading 
 frames left out, one fit per device-clock segment), ``stream``, ``sysid``, ``compid``, ``seq``
 and the payload fields; other messages start with ``host_time_s``.  Comment lines (``#``)
 before the header name the recording, the unit (stream, connection, system id, firmware) and
-its clock fit.  Fields carry their unit as a
+its clock fit, and for KF_RAW_SAMPLE and KF_ORIENTATION the frames of their vectors and
+quaternion.  Fields carry their unit as a
 suffix (``time_boot_us``, ``acc_x_mps2``); kinefuse messages are converted to SI first:
 
-- KF_RAW_SAMPLE: ``acc_*_mps2``, ``gyr_*_radps``, ``mag_*_uT``, ``temperature_degC``;
-- KF_ORIENTATION: ``quat_w..z`` (sensor to earth), covariance ``cov_*_rad2``;
+- KF_RAW_SAMPLE: ``acc_*_mps2``, ``gyr_*_radps``, ``mag_*_uT``, ``temperature_degC`` (``nan`` where the
+  sample does not flag it valid);
+- KF_ORIENTATION: ``quat_w..z`` (sensor to earth), covariance ``cov_*_rad2`` (``nan`` where the unit
+  sends none: all six zero);
+- KF_UNIT_STATUS: ``battery_voltage_mV`` and ``battery_remaining_pct`` are ``nan`` where the unit
+  does not know them (UINT16_MAX, -1);
 - KF_EFFORTS: entries named after the model (e.g. ``tau1_Nm``, ``Fx_N``) when one model is used
   throughout, ``effort_<i>_si`` otherwise.
 These names match the "plain kinefuse CSV" of ``kinefuse.host.readers`` (``t_s``, ``acc_x_mps2``,
@@ -25,7 +30,9 @@ A raw MAVLink capture (no host times) gets no host columns.
 """
 from __future__ import annotations
 
+import contextlib
 import csv
+import os
 from pathlib import Path
 
 import numpy as np
@@ -46,6 +53,8 @@ EFFORT_LAYOUTS = {  # KF_EFFORT_MODEL -> [(name, unit suffix)]; see kinefuse.xml
     2: [("hip_torque", "Nm"), ("knee_torque", "Nm")],
 }
 COV_NAMES = ["xx", "xy", "xz", "yy", "yz", "zz"]
+# measurements whose "unknown" value (kinefuse.xml) is written as nan
+_UNKNOWN = {("KF_UNIT_STATUS", "battery_voltage"): 0xFFFF, ("KF_UNIT_STATUS", "battery_remaining"): -1}
 
 
 def _suffix(unit: str | None) -> str:
@@ -64,7 +73,11 @@ def _columns(spec: MessageSpec, arr: np.ndarray) -> list[tuple[str, np.ndarray, 
         for sensor, prefix, unit in (("acc", "acc", "mps2"), ("gyro", "gyr", "radps"), ("mag", "mag", "uT")):
             for ax in "xyz":
                 cols.append((f"{prefix}_{ax}_{unit}", arr[f"{sensor}_{ax}"] * RAW_SCALE[sensor], "%.6g"))
-        cols.append(("temperature_degC", arr["temperature"] * RAW_SCALE["temperature"], "%.2f"))
+        # the field holds a measurement only with KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID (32): was
+        # exported as a temperature (0.00 degC) without it; nan there, as the kfr reader does
+        valid = (arr["flags"].astype(np.int64) & 32) != 0
+        cols.append(("temperature_degC", np.where(valid, arr["temperature"] * RAW_SCALE["temperature"], np.nan),
+                     "%.2f"))
         cols.append(("unit_id", arr["unit_id"], "%d"))
         cols.append(("flags", arr["flags"], "%d"))
         return cols
@@ -73,6 +86,9 @@ def _columns(spec: MessageSpec, arr: np.ndarray) -> list[tuple[str, np.ndarray, 
         models = np.unique(arr["model_id"])
         if models.size == 1 and int(models[0]) in EFFORT_LAYOUTS:
             efforts_model = EFFORT_LAYOUTS[int(models[0])]
+    no_cov = None
+    if name == "KF_ORIENTATION" and "cov" in arr.dtype.names:   # all zero: "not provided" (kinefuse.xml), was
+        no_cov = ~np.any(arr["cov"] != 0, axis=1)              # exported as a zero (perfectly certain) covariance
     for field, ctype, n in zip(spec.fields, spec.types, spec.array_lengths):
         unit = spec.units.get(field)
         if field == "time_boot_us":
@@ -98,7 +114,13 @@ def _columns(spec: MessageSpec, arr: np.ndarray) -> list[tuple[str, np.ndarray, 
                     cname = f"{field}_{k}_si"
                 else:
                     cname = f"{field}_{k}{_suffix(unit)}"
-                cols.append((cname, arr[field][:, k], fmt))
+                values = arr[field][:, k]
+                if no_cov is not None and field == "cov":
+                    values = np.where(no_cov, np.nan, values)
+                cols.append((cname, values, fmt))
+        elif (name, field) in _UNKNOWN:   # the dialect's "unknown" value: was exported as 65535 mV, -1 %
+            v = arr[field].astype(np.float64)
+            cols.append((field + _suffix(unit), np.where(v == _UNKNOWN[(name, field)], np.nan, v), "%.9g"))
         else:
             cols.append((field + _suffix(unit), arr[field], fmt))
     if name in ("PARAM_VALUE", "PARAM_SET") and arr.size:  # integers travel bytewise in param_value
@@ -126,10 +148,40 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
                 by_msg.setdefault(mid, []).append((sid, arr, ds.host_ns.get(mid)))
     if not by_msg:      # nothing to write: no (empty) folder either
         return []
+    made, p = [], out_dir
+    while not p.exists() and p != p.parent:
+        made.append(p)
+        p = p.parent
     try:   # after the checks: a refused export leaves no empty folder
         out_dir.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise KinefuseError(f"cannot create {out_dir}: {exc.strerror or exc}") from None
+    # Every CSV is written under a temporary name and renamed once all are complete: a full
+    # disk or an interrupt part-way left a cut CSV (and the files before it) that read as a
+    # whole export; now it leaves nothing (and, with --force, the earlier export as it was).
+    parts: list[tuple[Path, Path]] = []
+    try:
+        written = _export(df, d, by_msg, out_dir, parts, progress)
+        for tmp, final in parts:
+            os.replace(tmp, final)
+    except BaseException as exc:
+        for tmp, _final in parts:
+            with contextlib.suppress(OSError):
+                tmp.unlink()
+        for folder in made:             # innermost first
+            with contextlib.suppress(OSError):
+                folder.rmdir()
+        if isinstance(exc, OSError):    # the rename
+            raise KinefuseError(f"cannot write into {out_dir}: {exc.strerror or exc} (nothing exported)") from None
+        if isinstance(exc, KinefuseError):
+            raise KinefuseError(f"{exc} (nothing exported)") from None
+        raise
+    return written
+
+
+def _export(df: DecodedFile, d, by_msg: dict, out_dir: Path, temps: list, progress) -> list[dict]:
+    """Write the CSVs of :func:`export_csv` under temporary names, listed in ``temps`` as
+    (temporary, final path) as each is opened."""
     start_mono = df.start_monotonic_ns
     start_unix = df.start_unix_ns
     from kinefuse.host.link.stats import host_time_from_fit, unit_clock_segments
@@ -174,12 +226,25 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
             cols += _columns(spec, arr)
             fname = spec.name if unit is None else f"{spec.name}_s{unit[0]}_u{unit[1]}"
             path = out_dir / f"{fname}.csv"
-            _write(path, cols, arr.size, _comments(df, spec.name, pairs, clock if has_host else None))
+            tmp = out_dir / f".{fname}.csv.partial"
+            temps.append((tmp, path))
+            _write(tmp, cols, arr.size, _comments(df, spec.name, pairs, clock if has_host else None), shown=path)
             written.append({"message": spec.name, "file": str(path), "rows": int(arr.size),
                             **({} if unit is None else {"stream": unit[0], "sysid": unit[1]})})
             if progress is not None:
                 progress(spec.name, arr.size)
     return written
+
+
+_FRAMES = {   # the frames of the vectors and quaternions (kinefuse.xml), stated in the CSV itself
+    "KF_RAW_SAMPLE": "acc_*_mps2 (specific force: a unit at rest with +z up reads acc_z_mps2 = +9.81), "
+                     "gyr_*_radps (right-hand rule, relative to inertial space), mag_*_uT: along the sensor "
+                     "axes x, y, z; temperature_degC: nan where the sample does not flag it valid",
+    "KF_ORIENTATION": "quat_w, quat_x, quat_y, quat_z: rotation sensor -> earth frame (v_earth = q v_sensor "
+                      "conj(q)); earth_frame: 1 ENU (x East, y North, z Up), 2 NED (x North, y East, z Down), "
+                      "0 unknown; cov_*_rad2: covariance of the orientation error (small rotation vector in the "
+                      "earth frame), nan where the unit sends none",
+}
 
 
 def _comments(df: DecodedFile, name: str, pairs, clock) -> list[str]:
@@ -204,6 +269,8 @@ def _comments(df: DecodedFile, name: str, pairs, clock) -> list[str]:
             else:
                 line += "; no clock fit (too few samples): host_fit_s is nan"   # it said "empty"
         out.append(line)
+    if name in _FRAMES:
+        out.append(_FRAMES[name])
     if clock is not None and name.startswith("KF_"):
         out.append("t_s: unit clock, s since boot; host_time_s: host receive time, s since the recording "
                    "started; host_unix_s: the same as UNIX time; host_fit_s: t_s on the host clock "
@@ -211,11 +278,13 @@ def _comments(df: DecodedFile, name: str, pairs, clock) -> list[str]:
     return out
 
 
-def _write(path: Path, cols, rows: int, comments=(), block: int = 50_000) -> None:
+def _write(path: Path, cols, rows: int, comments=(), block: int = 50_000, shown: Path | None = None) -> None:
+    """Write one CSV to ``path`` (errors name ``shown``, the file it becomes)."""
+    shown = path if shown is None else shown
     try:
         f = open(path, "w", newline="")
     except OSError as exc:
-        raise KinefuseError(f"cannot write {path}: {exc.strerror or exc}") from None
+        raise KinefuseError(f"cannot write {shown}: {exc.strerror or exc}") from None
     try:   # a full disk fails here, not at open
         with f:
             for c in comments:
@@ -234,4 +303,4 @@ def _write(path: Path, cols, rows: int, comments=(), block: int = 50_000) -> Non
                     table[:, k] = c[1][a:b].tolist()
                 f.write("\n".join(fmt % tuple(row) for row in table) + ("\n" if b > a else ""))
     except OSError as exc:
-        raise KinefuseError(f"cannot write {path}: {exc.strerror or exc}") from None
+        raise KinefuseError(f"cannot write {shown}: {exc.strerror or exc}") from None

@@ -79,7 +79,9 @@ def make_header(streams: list[dict], note: str | None = None, extra: dict | None
         "format": "kinefuse-recording",
         "version": VERSION,
         "start_unix_ns": unix,
-        "start_utc": time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime(unix / 1e9)) + f".{unix % 10**9 // 1000:06d}Z",
+        # whole seconds by integer division: unix / 1e9 rounded up within 0.12 us of a second,
+        # and the stamp read a second late (":04.999999Z" for 03.99999995 s)
+        "start_utc": time.strftime("%Y-%m-%dT%H:%M:%S", time.gmtime(unix // 10**9)) + f".{unix % 10**9 // 1000:06d}Z",
         "start_monotonic_ns": mono,
         "host": {"hostname": platform.node(), "platform": platform.platform(), "python": platform.python_version()},
         "software": _software_versions(),

@@ -223,15 +223,17 @@ def unit_clock_segments(ds, sysid: int, start_ns: int) -> list[dict]:
             continue
         dev = arr["time_boot_us"][rows].astype(np.int64)
         h = host_ns[rows].astype(np.int64)
-        cuts = sorted({0, dev.size, *(int(k) + 1 for k in np.flatnonzero(np.diff(dev) < 0)),
-                       *(int(k) for k in (clock_jumps(dev, arr["sample_counter"][rows])
-                                          if "sample_counter" in arr.dtype.names else ()))})
+        counter = arr["sample_counter"][rows] if "sample_counter" in arr.dtype.names else None
+        starts, keep = device_segments(dev, counter)     # a repeated frame is no reboot
+        cuts = sorted({0, dev.size, *starts, *(int(k) for k in (clock_jumps(dev, counter)
+                                                                if counter is not None else ()))})
         out = []
         for a, b in zip(cuts[:-1], cuts[1:]):
-            x, y = dev[a:b] / 1e6, (h[a:b] - start_ns) / 1e9
-            fit = fit_clock_checked(x, y) if b - a >= 10 else None
+            fresh = keep[a:b]                             # repeats (late frames) are not fitted
+            x, y = dev[a:b][fresh] / 1e6, (h[a:b][fresh] - start_ns) / 1e9
+            fit = fit_clock_checked(x, y) if x.size >= 10 else None
             if fit is None:   # too few points for the robust fit: the offset of the lower envelope
-                fit = {"slope": 1.0, "offset_s": float(np.min(y - x)), "drift_ppm": 0.0, "points": int(b - a),
+                fit = {"slope": 1.0, "offset_s": float(np.min(y - x)), "drift_ppm": 0.0, "points": int(x.size),
                        "excluded_leading": 0, "warnings": ["too few samples for a drift fit: offset only"]}
             out.append({"host_from_ns": int(h[a]), **{k: fit[k] for k in ("offset_s", "slope", "drift_ppm", "points",
                                                                          "excluded_leading", "warnings")},
@@ -254,13 +256,76 @@ def host_time_from_fit(segments: list[dict], device_us, host_ns) -> np.ndarray:
     return off + slope * t
 
 
-def _last_segment(t_us: np.ndarray, counter=None) -> slice:
-    """Rows after the last reset of the device clock (time going backwards) or, with the
-    sample counter, its last forward jump (:func:`clock_jumps`)."""
-    cuts = list(np.flatnonzero(np.diff(t_us.astype(np.int64)) < 0) + 1)
+def device_segments(t_us, counter=None) -> tuple[list[int], np.ndarray]:
+    """(start indices of the device-clock segments, mask of the frames that are not repeats)
+    of one unit's frames of one message, in arrival order.
+
+    A step back of the device clock onto a time (with the same sample counter, when there is
+    one) already sent in the current segment is a repeat -- a frame the link delivered again,
+    or late -- not a reboot; a step back onto a time not sent before starts a new segment (a
+    reboot).  A repeat is a frame whose device time is not after every earlier one of its
+    segment.  The kfr reader uses the same rule; stats and export took every step back for a
+    reboot, so a frame replayed late counted a reset, the jump from it back onto the stream's
+    latest sample that many samples lost (14 lost for 6), and the rate and clock fit were
+    those after the replay."""
+    dev = np.asarray(t_us, np.int64)
+    cnt = None if counter is None else np.asarray(counter, np.int64)
+    starts = [0]
+    backs = np.flatnonzero(np.diff(dev) < 0) + 1
+    if backs.size:
+        # prev[i]: the latest earlier frame with the same (time, counter), -1 if none (one sort,
+        # not a scan of the segment per step back: a flaky hour-long link has thousands)
+        n = dev.size
+        keys = (np.arange(n), dev) if cnt is None else (np.arange(n), cnt, dev)
+        order = np.lexsort(keys)
+        same = dev[order][1:] == dev[order][:-1]
+        if cnt is not None:
+            same &= cnt[order][1:] == cnt[order][:-1]
+        prev = np.full(n, -1, np.int64)
+        prev[order[1:][same]] = order[:-1][same]
+        for b in backs:
+            if prev[b] < starts[-1]:      # not sent before in this segment: a reboot
+                starts.append(int(b))
+    keep = np.ones(dev.size, bool)
+    for s, e in zip(starts, starts[1:] + [dev.size]):
+        d = dev[s:e]
+        if d.size:
+            prev = np.maximum.accumulate(np.concatenate([[np.iinfo(np.int64).min], d[:-1]]))
+            keep[s:e] = d > prev
+    return starts, keep
+
+
+def sample_loss(t_us, counter) -> dict:
+    """:func:`counter_analysis` of a unit's frames, segment by segment (:func:`device_segments`):
+    repeats left out (counted as ``duplicates``), ``resets`` = reboots."""
+    starts, keep = device_segments(t_us, counter)
+    c = np.asarray(counter, np.int64)
+    lost = received = dup = 0
+    strides: dict = {}
+    for s, e in zip(starts, starts[1:] + [c.size]):
+        part = c[s:e][keep[s:e]]
+        ca = counter_analysis(part)
+        lost += ca["samples_lost"]
+        dup += ca["duplicates"]
+        received += part.size
+        if ca["stride"] is not None and part.size >= 2:
+            strides[ca["stride"]] = strides.get(ca["stride"], 0) + part.size
+    expected = received + lost
+    return {"stride": max(strides, key=strides.get) if strides else None, "samples_lost": int(lost),
+            "loss_fraction": lost / expected if expected else 0.0, "resets": len(starts) - 1,
+            "duplicates": int(dup + np.count_nonzero(~keep))}
+
+
+def _last_segment(t_us: np.ndarray, counter=None) -> tuple[slice, np.ndarray]:
+    """(rows after the last reset of the device clock -- time going back to a time not sent
+    before, :func:`device_segments` -- or, with the sample counter, its last forward jump
+    (:func:`clock_jumps`); mask of those rows that are not repeats)."""
+    starts, keep = device_segments(t_us, counter)
+    cuts = starts[1:]
     if counter is not None:
-        cuts += list(clock_jumps(t_us, counter))
-    return slice(int(max(cuts)) if cuts else 0, None)
+        cuts += [int(j) for j in clock_jumps(t_us, counter)]
+    seg = slice(int(max(cuts)) if cuts else 0, None)
+    return seg, keep[seg]
 
 
 def _rate_change(status_rows, field: str) -> tuple[int | None, int]:
@@ -308,7 +373,8 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
         m: dict = {"count": int(a.size)}
         if "time_boot_us" in a.dtype.names and a.size >= 2:
             counter = a["sample_counter"] if "sample_counter" in a.dtype.names else None
-            seg = a[_last_segment(a["time_boot_us"], counter)]
+            last, fresh = _last_segment(a["time_boot_us"], counter)
+            seg = a[last][fresh]        # repeats are not samples of the rate
             if statuses is not None and mid in REQUESTED_FIELD:
                 since_us, changes = _rate_change(statuses, REQUESTED_FIELD[mid])
                 if changes:
@@ -321,7 +387,7 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
                 m["rate_hz"] = (seg.size - 1) / span
                 m["device_span_s"] = span
             if "sample_counter" in a.dtype.names:
-                m.update(counter_analysis(a["sample_counter"]))
+                m.update(sample_loss(a["time_boot_us"], a["sample_counter"]))
         req = None
         if status is not None and mid in REQUESTED_FIELD:
             req = float(status[REQUESTED_FIELD[mid]]) or None
@@ -339,15 +405,15 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
         rows = arr["_sysid"] == sysid
         t_us = arr["time_boot_us"][rows]
         counter = arr["sample_counter"][rows] if "sample_counter" in arr.dtype.names else None
-        seg = _last_segment(t_us, counter)
+        seg, fresh = _last_segment(t_us, counter)
         jumps = clock_jumps(t_us, counter) if counter is not None else ()
         if len(jumps):
             by = (int(t_us[jumps[0]]) - int(t_us[jumps[0] - 1])) / 1e6
             out.setdefault("warnings", []).append(
                 f"unit {sysid}: its clock jumped forward {len(jumps)} time(s) with the sample counter running on "
                 f"(first by {by:,.1f} s): rate and clock fit are those of the last clock segment")
-        host = (ds.host_ns[clock_ref][rows][seg] - start_ns) / 1e9
-        fit = fit_clock_checked(t_us[seg].astype(np.float64) / 1e6, host)
+        host = (ds.host_ns[clock_ref][rows][seg][fresh] - start_ns) / 1e9
+        fit = fit_clock_checked(t_us[seg][fresh].astype(np.float64) / 1e6, host)
         if fit is not None:
             fit["reference"] = d.get(clock_ref).name
             out["clock"] = fit

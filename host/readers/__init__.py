@@ -32,11 +32,17 @@ READERS = {
 __all__ = ["READERS", "ReaderError", "Recording", "detect_format", "read_recording"]
 
 
-def detect_format(path: str) -> str:
+def _check_file(path: str) -> None:
     if not os.path.exists(path):
         raise ReaderError(path, "file not found")
     if os.path.isdir(path):
         raise ReaderError(path, "is a directory; give one recording file")
+    if not os.path.isfile(path):   # a pipe is read more than once (detection, then the reader): data went missing
+        raise ReaderError(path, "is not a regular file (a pipe or a device): save the recording to a file first")
+
+
+def detect_format(path: str) -> str:
+    _check_file(path)
     if path.lower().endswith((".mat", ".npz")):
         return broad.FORMAT
     if path.lower().endswith((".kfr", ".tlog")):   # a telemetry log: read as kfr.py says
@@ -75,4 +81,5 @@ def read_recording(path: str, fmt: str | None = None, **options) -> Recording:
     fmt = fmt or detect_format(path)
     if fmt not in READERS:
         raise ReaderError(path, f"unknown format {fmt!r}; choose one of {', '.join(READERS)}")
+    _check_file(path)   # with fmt given too: a folder was an internal IsADirectoryError ("file not found" for .mat)
     return READERS[fmt](path, **options)

@@ -24,14 +24,16 @@ def read(path: str, **_) -> Recording:
         d = scipy.io.loadmat(path)
     except FileNotFoundError:
         raise ReaderError(path, "file not found") from None
+    except IsADirectoryError:
+        raise ReaderError(path, "is a directory; give one recording file") from None
     except Exception as exc:  # scipy raises several types for non-MAT files
         raise ReaderError(path, f"not a MATLAB v5 file ({type(exc).__name__})") from None
     for k in ("imu_acc", "imu_gyr", "sampling_rate"):
         if k not in d:
             raise ReaderError(path, f"missing variable {k!r} (not a BROAD trial?)")
     fs = float(np.asarray(d["sampling_rate"]).ravel()[0])
-    if not fs > 0:
-        raise ReaderError(path, f"sampling_rate {fs} is not positive")
+    if not (np.isfinite(fs) and fs > 0):
+        raise ReaderError(path, f"sampling_rate {fs} is not a positive number")
     acc = np.asarray(d["imu_acc"], dtype=float)
     gyr = np.asarray(d["imu_gyr"], dtype=float)
     n = len(acc)
@@ -47,11 +49,19 @@ def read(path: str, **_) -> Recording:
         mag = np.asarray(d["imu_mag"], dtype=float)
         if mag.shape != (n, 3):
             raise ReaderError(path, f"imu_mag has shape {mag.shape}, expected N×3")
+        if not np.all(np.isfinite(mag)):   # was passed on: NaN headings downstream
+            raise ReaderError(path, "imu_mag has non-finite values")
         rec.mag = mag
-    if "opt_quat" in d:
-        rec.channels["opt_quat_wxyz"] = np.asarray(d["opt_quat"], dtype=float)
+    if "opt_quat" in d:   # NaN rows are lost markers (allowed); a wrong shape is no reference
+        q = np.asarray(d["opt_quat"], dtype=float)
+        if q.shape != (n, 4):
+            raise ReaderError(path, f"opt_quat has shape {q.shape}, expected N×4 (N = {n} IMU samples)")
+        rec.channels["opt_quat_wxyz"] = q
     if "movement" in d:
-        rec.channels["movement"] = np.asarray(d["movement"], dtype=float).ravel()
+        mv = np.asarray(d["movement"], dtype=float).ravel()
+        if mv.size != n:
+            raise ReaderError(path, f"movement has {mv.size} values, expected one per IMU sample ({n})")
+        rec.channels["movement"] = mv
     return rec
 
 

@@ -153,14 +153,10 @@ def _select(path: str, found: list[dict], unit) -> dict:
 
 def _segments(dev: np.ndarray, cnt: np.ndarray) -> list[int]:
     """Start indices of device-clock segments: the clock goes back to a time not sent before in
-    this segment (a reboot); a step back onto an already-sent (time, counter) is a repeat."""
-    starts = [0]
-    for b in np.flatnonzero(np.diff(dev) < 0) + 1:
-        s = starts[-1]
-        same = np.flatnonzero(dev[s:b] == dev[b])
-        if not np.any(cnt[s:b][same] == cnt[b]):
-            starts.append(int(b))
-    return starts
+    this segment (a reboot); a step back onto an already-sent (time, counter) is a repeat.  The
+    rule of ``kinefuse stats`` (:func:`kinefuse.host.link.stats.device_segments`)."""
+    from kinefuse.host.link.stats import device_segments
+    return device_segments(dev, cnt)[0]
 
 
 def _unwrap(cnt: np.ndarray) -> np.ndarray:

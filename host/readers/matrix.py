@@ -47,8 +47,8 @@ def _parse_clock(path: str, s: str, line: int) -> _dt.datetime:
 
 def read(path: str, *, fs: float | None = None, acc_range_g: float | None = 8.0, **_) -> Recording:
     fs = 100.0 if fs is None else float(fs)
-    if not fs > 0:
-        raise ReaderError(path, f"sampling rate must be positive, got {fs}")
+    if not (np.isfinite(fs) and fs > 0):   # inf made every time 0
+        raise ReaderError(path, f"sampling rate must be a positive number, got {fs}")
     tab = T.read(path, header_pred=sniff)
     lines = tab.lines
     names = ["acc_x", "acc_y", "acc_z", "gyr_x", "gyr_y", "gyr_z"]

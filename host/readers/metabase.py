@@ -16,7 +16,8 @@ Two layouts are accepted.
   ``epoc (ms), timestamp (±hh:mm), elapsed (s), x-axis (<unit>), y-axis (…), z-axis (…)``
   with unit ``g``, ``deg/s`` or ``T``.  Give any one of them: siblings from the same session
   (file names that differ only in ``Accelerometer``/``Gyroscope``/``Magnetometer``) are found
-  and merged.  Assumption: the file names follow MetaBase's
+  and merged, aligned on the ``epoc (ms)`` of their first samples (each file's ``elapsed (s)``
+  starts at its own first sample).  Assumption: the file names follow MetaBase's
   ``<device>_<date>_<MAC>_<Sensor>_<rate>Hz_<fw>.csv`` pattern.
 
 Units: acc g → m/s², gyro °/s → rad/s, mag T → µT.  The magnetometer is held onto the 100 Hz
@@ -139,13 +140,20 @@ def _siblings(path: str) -> dict:
 
 
 def _read_native(path: str, tab: T.Table):
-    """One native MetaBase file → (sensor, t, xyz, lines)."""
+    """One native MetaBase file → (sensor, t, xyz, lines, start): ``start`` is the UNIX time
+    in ms at which its ``elapsed (s)`` is 0, from its first ``epoc (ms)`` (None without one;
+    kept in ms: differences of UNIX seconds lose a fraction of a microsecond)."""
     low = [h.strip().lower() for h in tab.header]
     e = tab.col("elapsed (s)")
     for unit, sensor in (("g", "Accelerometer"), ("deg/s", "Gyroscope"), ("t", "Magnetometer")):
         if f"x-axis ({unit})" in low:
             t, x, ln = _column_stream(path, tab, e, _axes(tab, unit if unit != "t" else "T", e), sensor)
-            return sensor, t, x, ln
+            start = None
+            if "epoc (ms)" in low and len(t):
+                ep = tab.numeric([low.index("epoc (ms)")], allow_empty=True)[0, 0]
+                if np.isfinite(ep):
+                    start = ep - 1e3 * t[0]
+            return sensor, t, x, ln, start
     raise ReaderError(path, "no x-axis (g), x-axis (deg/s) or x-axis (T) column", 1)
 
 
@@ -163,15 +171,32 @@ def read(path: str, *, gyro_range_dps: float | None = None, **_) -> Recording:
         streams = {}
         for s, p in files.items():
             tb = tab if p == path else T.read(p, header_pred=sniff)
-            sensor, ts, x, lns = _read_native(p, tb)
-            streams[sensor] = (ts, x, lns, p)
+            sensor, ts, x, lns, start = _read_native(p, tb)
+            streams[sensor] = (ts, x, lns, p, start)
         meta["layout"] = "native MetaBase files"
         meta["files"] = {k: v[3] for k, v in streams.items()}
         if "Accelerometer" not in streams or "Gyroscope" not in streams:
             raise ReaderError(path, "MetaBase session needs the Accelerometer and Gyroscope files "
                                     f"(found: {', '.join(streams) or 'none'})")
-        t, acc_g, ln, pa = streams["Accelerometer"]
-        t2, gyr, _, pg = streams["Gyroscope"]
+        t, acc_g, ln, pa, a_start = streams["Accelerometer"]
+        t2, gyr, _, pg, g_start = streams["Gyroscope"]
+        # Each file's elapsed (s) starts at its own first sample: the streams were paired by
+        # index and the magnetometer held on as if all had started together, however far apart
+        # their epoc (ms) said they started.  Aligned on epoc: a later-starting gyroscope drops
+        # the accelerometer samples before its first (and vice versa); magnetometer times shift.
+        if a_start is not None and g_start is not None and len(t) >= 2:
+            dt_a = float(np.median(np.diff(t)))
+            k = int(round((g_start - a_start) / 1e3 / dt_a)) if dt_a > 0 else 0
+            if k:
+                if k > 0:
+                    t, acc_g, ln = t[k:], acc_g[k:], ln[k:]
+                else:
+                    gyr = gyr[-k:]
+                warnings.append(f"{path}: the gyroscope file starts {abs(g_start - a_start):.0f} ms "
+                                f"{'after' if k > 0 else 'before'} the accelerometer file (epoc (ms)): "
+                                f"the first {abs(k)} {'accelerometer' if k > 0 else 'gyroscope'} sample(s) "
+                                f"dropped to pair them")
+                t2 = t2[:len(gyr)]
         n = min(len(t), len(t2))
         if len(t) != len(t2):
             warnings.append(f"{path}: accelerometer has {len(t)} and gyroscope {len(t2)} samples; "
@@ -179,7 +204,9 @@ def read(path: str, *, gyro_range_dps: float | None = None, **_) -> Recording:
         t, acc_g, gyr, ln = t[:n], acc_g[:n], gyr[:n], ln[:n]
         mag_t = mag = None
         if "Magnetometer" in streams:
-            mag_t, mag, mln, pm = streams["Magnetometer"]
+            mag_t, mag, mln, pm, m_start = streams["Magnetometer"]
+            if m_start is not None and a_start is not None:
+                mag_t = mag_t + (m_start - a_start) / 1e3   # onto the accelerometer's elapsed (s)
             fsm, w = check_time(pm, mag_t, mln, what="magnetometer elapsed (s)")
             warnings += w
             check_rate(pm, fsm, (MAG_RATE_HZ,), "magnetometer", warnings)

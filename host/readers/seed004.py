@@ -40,8 +40,8 @@ def sniff_lines(lines: list[str]) -> bool:
 
 def read(path: str, *, fs: float | None = None, **_) -> Recording:
     fs = 35.0 if fs is None else float(fs)
-    if not fs > 0:
-        raise ReaderError(path, f"sampling rate must be positive, got {fs}")
+    if not (np.isfinite(fs) and fs > 0):   # inf made every time 0
+        raise ReaderError(path, f"sampling rate must be a positive number, got {fs}")
     tab = T.read(path, has_header=False, sep=",")
     rows, lines = tab.rows, tab.lines
     if rows and not any(_is_number(c) for c in rows[0]):

@@ -79,12 +79,17 @@ def read(path: str, *, header_pred=None, max_preamble: int = 20, has_header: boo
     """Read a delimited file; the header is the first line satisfying ``header_pred(cells)``."""
     if not os.path.exists(path):
         raise ReaderError(path, "file not found")
+    if os.path.isdir(path):
+        raise ReaderError(path, "is a directory; give one recording file")
     try:
-        with open(path, encoding="utf-8-sig", newline="") as f:
-            text = f.read()
-    except UnicodeDecodeError:
-        with open(path, encoding="latin-1", newline="") as f:
-            text = f.read()
+        try:
+            with open(path, encoding="utf-8-sig", newline="") as f:
+                text = f.read()
+        except UnicodeDecodeError:
+            with open(path, encoding="latin-1", newline="") as f:
+                text = f.read()
+    except OSError as exc:
+        raise ReaderError(path, f"cannot open ({exc.strerror or exc})") from None
     all_lines = text.splitlines()
     if not any(l.strip() for l in all_lines):
         raise ReaderError(path, "file is empty")

@@ -53,7 +53,10 @@ def read(path: str, **_) -> Recording:
     # --- the all-zero (or implausible) first sample
     keep = np.ones(len(st), dtype=bool)
     if len(st) > 2:
-        zero_first = all(a is None or not np.any(a[0]) for a in (acc, gyr))
+        # only the columns present: an orientation-only export (no Acc_*, Gyr_*) lost its first
+        # sample, "empty", whatever it held
+        present = [a for a in (acc, gyr) if a is not None] or [quat]
+        zero_first = all(not np.any(a[0]) for a in present)
         if acc is not None and not zero_first:
             med = np.median(np.linalg.norm(acc[1:], axis=1))
             zero_first = np.linalg.norm(acc[0]) < 1.0 and med > 5.0
