@@ -60,8 +60,20 @@ def run(args) -> int:
         for f in files:
             con.print(f"{f['file']}: {f['rows']:,} rows")
         if not files:
-            con.print("no messages to export")
+            con.print("no messages to export" + _held_text(df, messages))
     return 0
+
+
+def _held_text(df, messages) -> str:
+    """For --messages naming none the file holds: what it does hold."""
+    if not messages:
+        return ""
+    from kinefuse.host.link.spec import kinefuse_dialect
+    d = kinefuse_dialect()
+    held = {mid for ds in df.streams.values() for mid, a in ds.arrays.items() if a.size}
+    names = sorted(d[mid].name for mid in held if mid in d)
+    return (f": {df.path} holds no {', '.join(m.upper() for m in messages)}"
+            + (f" (it holds {', '.join(names)})" if names else " (it holds no messages)"))
 
 
 def _warnings(df) -> list[str]:

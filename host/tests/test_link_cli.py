@@ -251,6 +251,8 @@ def test_export_into_a_folder_of_an_earlier_export_warns(run, tmp_path):
     # a message the recording does not hold: nothing to write, and no empty folder either
     code, stdout, _ = run("export", one, "--out", tmp_path / "none", "--messages", "HIL_SENSOR")
     assert code == 0 and "no messages to export" in stdout and not (tmp_path / "none").exists()
+    # ... and it says what the file does hold (it only said "no messages to export")
+    assert "holds no HIL_SENSOR" in stdout and "KF_RAW_SAMPLE" in stdout.split("it holds", 1)[1], stdout
     (tmp_path / "junk.kfr").write_bytes(b"\x00garbage" * 100)
     code, stdout, err = run("export", tmp_path / "junk.kfr", "--out", tmp_path / "j")
     assert code == 2 and stdout == "", repr(stdout)
