@@ -60,7 +60,7 @@ def run(args) -> int:
         for f in files:
             con.print(f"{f['file']}: {f['rows']:,} rows")
         if not files:
-            con.print("no messages to export" + _held_text(df, messages))
+            con.print("no messages to export" + _held_text(df, messages), soft_wrap=True, markup=False)
     return 0
 
 
