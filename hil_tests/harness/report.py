@@ -46,6 +46,9 @@ def rmse_errors(q_est: np.ndarray, case: Case) -> dict[str, float]:
     mask = case.movement & np.all(np.isfinite(case.q_true), axis=1)
     if not mask.any():                     # static scenarios: score every sample with a reference
         mask = np.all(np.isfinite(case.q_true), axis=1)
+    if not mask.any():      # no reference at all (a BROAD head before the optical markers
+        # are seen): was NaN with numpy's "Mean of empty slice" warnings, and NaN in the JSON
+        return {"total": None, "heading": None, "inclination": None, "scored": 0}
     tot, hd, inc = motion.errors_deg(q_est[mask], case.q_true[mask])
     return {"total": float(np.sqrt(np.mean(tot ** 2))), "heading": float(np.sqrt(np.mean(hd ** 2))),
             "inclination": float(np.sqrt(np.mean(inc ** 2))), "scored": int(mask.sum())}
@@ -190,7 +193,8 @@ def write_markdown(rep: Report, out_dir: Path, png_name: str | None) -> Path:
              "Errors: BROAD metric (e = q_est ⊗ q_true⁻¹; RMSE over scored samples; degrees; "
              "ENU earth frame).", ""]
     systems = sorted({s for (_f, _c, s) in rep.errors}, key=["ref", "f32", "q"].index)
-    lines += ["## Orientation error against ground truth (total RMSE, degrees)", ""]
+    lines += ["## Orientation error against ground truth (total RMSE, degrees)", "",
+              "Each cell: total (h heading, i inclination), RMSE in degrees.", ""]
     for system in systems:
         lines += [f"### {system}", "", "| scenario | " + " | ".join(rep.filters) + " |",
                   "|---|" + "---:|" * len(rep.filters)]
@@ -198,7 +202,8 @@ def write_markdown(rep: Report, out_dir: Path, png_name: str | None) -> Path:
             cells = []
             for f in rep.filters:
                 e = rep.errors.get((f, c, system))
-                cells.append(f"{e['total']:.2f} (h {e['heading']:.2f}, i {e['inclination']:.2f})" if e else "–")
+                cells.append("–" if not e else "n/a (no reference sample)" if e["total"] is None else
+                             f"{e['total']:.2f} (h {e['heading']:.2f}, i {e['inclination']:.2f})")
             lines.append(f"| {c} | " + " | ".join(cells) + " |")
         lines.append("")
     lines += ["## Bit-exactness (every output bit of every sample against the Python model)", "",
@@ -264,7 +269,8 @@ def write_png(rep: Report, out_dir: Path) -> Path | None:
     x = np.arange(len(rep.cases))
     for ax, system in zip(axes[:, 0], systems):
         for i, f in enumerate(rep.filters):
-            vals = [rep.errors.get((f, c, system), {}).get("total", np.nan) for c in rep.cases]
+            vals = [rep.errors.get((f, c, system), {}).get("total") for c in rep.cases]
+            vals = [np.nan if v is None else v for v in vals]
             ax.bar(x + i * width - 0.4 + width / 2, vals, width, label=f)
         ax.set_yscale("log")
         ax.set_ylabel("total RMSE [deg]")
@@ -299,4 +305,6 @@ def load_cost(path: str | Path) -> list[dict]:
                                 f"(needs {', '.join(need)}, instructions_per_update, flash_bytes, ram_bytes)")
     if not isinstance(rows, list):
         raise KinefuseError(f"{path} is not `kinefuse bench cost --json` output (no 'rows' list)")
+    if not rows:        # (the report then had no cost table, without a word)
+        raise KinefuseError(f"{path}: its 'rows' list is empty: no cost to include")
     return rows

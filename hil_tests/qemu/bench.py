@@ -33,10 +33,10 @@ def register_bench(bench_subparsers) -> None:
     p.add_argument("--parts", default=",".join(PARTS),
                    help=f"comma-separated subset of {','.join(PARTS)} (default: all)")
     p.add_argument("--targets", default="m4f,m0", help="comma-separated targets (default m4f,m0)")
-    p.add_argument("--records", type=int, default=60_000, help="batch records (default 60000)")
-    p.add_argument("--uart-bytes", type=int, default=20_000,
-                   help="bytes echoed over UART0 (default 20000)")
-    p.add_argument("--cases", default=None, help="competitor cases (default all: "
+    p.add_argument("--records", type=int, default=None, help="batch part: records (default 60000)")
+    p.add_argument("--uart-bytes", type=int, default=None,
+                   help="uart part: bytes echoed over UART0 (default 20000)")
+    p.add_argument("--cases", default=None, help="competitors part: cases (default all: "
                    "fusion-ahrs-9d,fusion-ahrs-6d,vqf-9d,vqf-6d,vqf-9d-f32,vqf-6d-f32)")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
     p.set_defaults(func=run)
@@ -45,22 +45,40 @@ def register_bench(bench_subparsers) -> None:
 def run(args: argparse.Namespace) -> int:
     from kinefuse.firmware.targets import TARGETS
     from kinefuse.hil_tests.qemu import qemu_unavailable
+    from kinefuse.hil_tests.qemu.competitors import CASES
+    from kinefuse.host.bench.common import name_list
 
-    reason = qemu_unavailable()
-    if reason:
-        raise KinefuseError(reason)
-    parts = [p.strip() for p in args.parts.split(",") if p.strip()]
-    targets = [t.strip() for t in args.targets.split(",") if t.strip()]
+    # the options first (one-line errors without QEMU too); an empty list measured nothing
+    # and exited 0, a name given twice was measured and listed twice
+    parts = name_list("--parts", args.parts, PARTS, ",".join(PARTS))
+    targets = name_list("--targets", args.targets, TARGETS, "m4f,m0")
+    cases = name_list("--cases", args.cases, CASES, ",".join(CASES))
     bad = [p for p in parts if p not in PARTS] + [t for t in targets if t not in TARGETS]
     if bad:
         raise KinefuseError(f"unknown part or target: {', '.join(bad)}")
-    if args.records <= 0 or args.uart_bytes <= 0:
+    # options of a part not run: refused, not ignored
+    unused = [o for o, part, v in (("--records", "batch", args.records),
+                                   ("--uart-bytes", "uart", args.uart_bytes),
+                                   ("--cases", "competitors", args.cases))
+              if v is not None and part not in parts]
+    if unused:
+        raise KinefuseError(f"{', '.join(unused)}: option(s) of a part not run (--parts "
+                            f"{','.join(parts)}); --records applies to batch, --uart-bytes to "
+                            f"uart, --cases to competitors")
+    records = 60_000 if args.records is None else args.records
+    uart_bytes = 20_000 if args.uart_bytes is None else args.uart_bytes
+    if records <= 0 or uart_bytes <= 0:
         raise KinefuseError("--records and --uart-bytes must be positive")
-    from kinefuse.hil_tests.qemu.competitors import CASES
-    cases = [c.strip() for c in args.cases.split(",")] if args.cases else list(CASES)
     unknown = [c for c in cases if c not in CASES]
     if unknown:
         raise KinefuseError(f"unknown competitor case {unknown[0]!r} (known: {', '.join(CASES)})")
+    for opt, names in (("--parts", parts), ("--targets", targets), ("--cases", cases)):
+        twice = [n for k, n in enumerate(names) if n in names[:k]]
+        if twice:
+            raise KinefuseError(f"{opt} names {twice[0]} twice")
+    reason = qemu_unavailable()
+    if reason:
+        raise KinefuseError(reason)
 
     from rich.console import Console
     from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
@@ -80,8 +98,8 @@ def run(args: argparse.Namespace) -> int:
             progress.update(task, description=f"{part}: {' '.join(what)}")
             if not err.is_terminal and not args.json:
                 err.print(f"measuring {part} {' '.join(what)}")
-            fn = {"loop": bench_loop, "batch": lambda t: bench_batch(t, args.records),
-                  "uart": lambda t: bench_uart(t, args.uart_bytes),
+            fn = {"loop": bench_loop, "batch": lambda t: bench_batch(t, records),
+                  "uart": lambda t: bench_uart(t, uart_bytes),
                   "competitors": bench_competitor}[part]
             result.setdefault(part, []).append(fn(*what))
             progress.advance(task)

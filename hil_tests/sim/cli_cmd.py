@@ -72,6 +72,9 @@ def _load_scenario(arg: str):
     from .scenario import Scenario
     if arg in names():
         return scenario(arg)
+    if not arg.strip():     # (was read as the current folder: "cannot read scenario file : Is a directory")
+        raise KinefuseError(f"scenario {arg!r}: empty; give a library name (see `kinefuse sim list`) "
+                            f"or a scenario .json file")
     p = Path(arg)
     if p.suffix == ".json" or p.exists():
         try:
@@ -84,11 +87,14 @@ def _load_scenario(arg: str):
 
 def _run(args) -> int:
     from .scenario import run
+    from kinefuse.host.bench.common import given
+    given("--preset", args.preset, "a sensor preset: xsens_dot, matrix, metamotionr or ideal")  # (was ignored)
+    given("--out", args.out, "a .npz, .mat or .bin file name")        # (was ignored: nothing written)
     if args.out:
         _out_path(args.out, "x", 1)          # reject a bad file type before simulating
     sc = _load_scenario(args.scenario)
     sensor = dict(sc.sensor)
-    if args.preset:
+    if args.preset is not None:
         sensor = {"preset": args.preset}   # a new preset replaces the scenario's overrides
         keep = {k: v for k, v in sc.sensor.items() if k in ("rate_hz", "mag_rate_hz")}
         sensor.update(keep)
@@ -114,12 +120,23 @@ def _run(args) -> int:
     # checked before the first is written
     paths = {name: check_new_file(_out_path(args.out, name, len(recs)), args.force)
              for name in recs} if args.out else {}
-    for name, r in recs.items():
-        s = _summary(r)
-        if name in paths:
-            _write(r, paths[name])
-            s["file"] = str(paths[name])
-        summary["sensors"][name] = s
+    # every file is written under a temporary name and renamed once all are written: a failed
+    # or interrupted write left the first sensor's file (or a truncated one) under its name
+    partial = {}
+    try:
+        for name, r in recs.items():
+            s = _summary(r)
+            if name in paths:
+                partial[name] = paths[name].with_name(f".{paths[name].stem}.partial{paths[name].suffix}")
+                _write(r, partial[name], shown=paths[name])
+                s["file"] = str(paths[name])
+            summary["sensors"][name] = s
+        for name, tmp in partial.items():
+            tmp.replace(paths[name])
+    except BaseException:
+        for tmp in partial.values():
+            tmp.unlink(missing_ok=True)
+        raise
     if args.json:
         print(json.dumps(summary))
         return 0
@@ -127,7 +144,7 @@ def _run(args) -> int:
     t = Table("sensor", "samples", "s", "Hz acc/mag", "drop/dup", "max|gyr| °/s", "|acc| m/s²", "|mag| µT",
               title=f"{sc.name} (seed {summary['seed']})")
     for name, s in summary["sensors"].items():
-        t.add_row(name, str(s["samples"]), f"{s['duration_s']:.1f}", f"{s['rate_hz']:g}/{s['mag_rate_hz']:g}",
+        t.add_row(name, str(s["samples"]), f"{s['duration_s']:.1f}", f"{s['rate_hz']:g}/" + ("–" if s["mag_rate_hz"] is None else f"{s['mag_rate_hz']:g}"),
                   f"{s['dropped']}/{s['duplicated']}", f"{s['gyr_max_dps']:.1f}",
                   f"{s['acc_norm_min']:.2f}–{s['acc_norm_max']:.2f}",
                   "none" if s["mag_norm_min"] is None else f"{s['mag_norm_min']:.1f}–{s['mag_norm_max']:.1f}")
@@ -153,7 +170,9 @@ def _summary(r) -> dict:
     has_mag = bool(np.any(np.isfinite(mn)))
     n_nominal = int(r.index.max()) + 1 if len(r) else 0
     return {"samples": len(r), "duration_s": float(r.t[-1] - r.t[0]) if len(r) else 0.0,
-            "rate_hz": r.meta["rate_hz"], "mag_rate_hz": r.meta["mag_rate_hz"], "preset": r.meta["preset"],
+            # (a sensor without magnetometer was listed with one at the acc/gyro rate)
+            "rate_hz": r.meta["rate_hz"], "mag_rate_hz": r.meta["mag_rate_hz"] if has_mag else None,
+            "preset": r.meta["preset"],
             "dropped": n_nominal - len(np.unique(r.index)), "duplicated": len(r) - len(np.unique(r.index)),
             "gyr_max_dps": float(np.degrees(np.max(np.linalg.norm(r.gyr, axis=1)))),
             "acc_norm_min": float(an.min()), "acc_norm_max": float(an.max()),
@@ -169,11 +188,11 @@ def _out_path(out: str, sensor: str, count: int) -> Path:
     return p if count == 1 else p.with_name(f"{p.stem}_{sensor}{p.suffix}")
 
 
-def _write(r, path: Path) -> None:
+def _write(r, path: Path, shown: Path | None = None) -> None:
     try:
         if path.suffix == ".bin":
             path.write_bytes(r.to_raw().tobytes())
         else:
             r.save(str(path))
     except OSError as exc:
-        raise KinefuseError(f"cannot write {path}: {exc.strerror}") from None
+        raise KinefuseError(f"cannot write {shown or path}: {exc.strerror}") from None

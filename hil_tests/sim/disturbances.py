@@ -59,6 +59,8 @@ class Disturbances:
     @classmethod
     def from_list(cls, items: list | None, rng: np.random.Generator) -> "Disturbances":
         me, mb, ine = [], [], []
+        if items is not None and not isinstance(items, list):   # (a dict read as its keys)
+            raise SpecError(f"disturbances: expected a list of objects, got {type(items).__name__}")
         for i, d in enumerate(items or []):
             w = f"disturbances[{i}]"
             if not isinstance(d, dict) or "type" not in d:

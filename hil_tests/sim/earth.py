@@ -45,6 +45,9 @@ class Earth:
             e = cls(**{k: float(v) for k, v in d.items()})
         except (TypeError, ValueError):
             raise SpecError(f"earth: values must be numbers, got {d!r}") from None
+        bad = [k for k, v in asdict(e).items() if not np.isfinite(v)]
+        if bad:                 # (a NaN dip or an infinite field: NaN magnetometer samples)
+            raise SpecError(f"earth.{bad[0]}: must be finite")
         if not (e.g > 0 and e.field_uT >= 0):
             raise SpecError("earth: g must be > 0 and field_uT >= 0")
         return e

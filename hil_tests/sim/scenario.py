@@ -117,6 +117,12 @@ def build(sc: Scenario) -> Built:
 
 
 def _build(sc: Scenario) -> Built:
+    # (a seed of 1.5 ran as seed 1; a "sensor" that is not an object, e.g. [], as the default)
+    whole = isinstance(sc.seed, (int, np.integer)) or (isinstance(sc.seed, float) and sc.seed.is_integer())
+    if isinstance(sc.seed, bool) or not whole or sc.seed < 0:
+        raise SpecError(f"seed: expected a whole number >= 0, got {sc.seed!r}")
+    if sc.sensor is not None and not isinstance(sc.sensor, dict):
+        raise SpecError(f"sensor: expected an object, got {type(sc.sensor).__name__}")
     if not isinstance(sc.motion, dict) or sc.motion.get("kind") not in RIGS:
         got = sc.motion.get("kind") if isinstance(sc.motion, dict) else sc.motion
         raise SpecError(f"motion.kind: unknown {got!r}; known: {', '.join(RIGS)}")
@@ -252,6 +258,15 @@ def _simulate_sensor(sc: Scenario, b: Built, name: str, track, ss) -> Recording:
         "earth": b.earth.to_dict(), "sensor_model": model.to_dict(), "rig": b.rig.info,
         "scenario_spec": sc.to_dict(),
     }
+    # a NaN or infinite number somewhere in the scenario (a disturbance's factor, a tap's peak,
+    # a segment's rate) gave NaN samples and exit 0: refused, naming the streams it reached
+    streams = {"t": t_out, "gyr": gyr[src], "acc": acc[src], "q_true": k.q[src]}
+    if model.mag.present:
+        streams["mag"] = mag[src]
+    bad = [s for s, v in streams.items() if not np.all(np.isfinite(v))]
+    if bad:
+        raise SpecError(f"scenario {sc.name!r}: sensor {name}: non-finite {', '.join(bad)} samples "
+                        f"(a NaN or infinite number in the scenario's motion or disturbances)")
     return Recording(t=t_out, dt=dt, gyr=gyr[src], acc=acc[src], mag=mag[src], mag_valid=valid,
                      q_true=k.q[src], movement=moving[src], pos_true=k.p[src], t_true=t_true[src],
                      index=src.astype(np.int64), truth=truth, meta=meta)

@@ -117,12 +117,18 @@ class ChannelModel:
                 name, fac = keys[k]
                 if name == "lsb":
                     c.lsb = float(v) * fac
-                    if c.lsb < 0:
-                        raise SpecError(f"{w}: must be >= 0")
+                    if not (np.isfinite(c.lsb) and c.lsb >= 0):     # (NaN: no quantisation)
+                        raise SpecError(f"{w}: must be a finite number >= 0")
                 else:
                     val = _v3(v, w) * fac
                     if name in ("range",) and np.any(val <= 0):
                         raise SpecError(f"{w}: must be > 0")
+                    # (an infinite noise, bias or scale gave infinite samples; a negative
+                    # standard deviation or random-walk density was taken as its magnitude)
+                    if name != "range" and not np.all(np.isfinite(val)):
+                        raise SpecError(f"{w}: must be finite")
+                    if name in ("noise_std", "bias_rw") and np.any(val < 0):
+                        raise SpecError(f"{w}: must be >= 0 (a standard deviation)")
                     setattr(c, name, val)
             elif k in ("misalignment", "soft_iron"):
                 m = np.asarray(v, dtype=float)
@@ -135,7 +141,13 @@ class ChannelModel:
                     raise SpecError(f"{w}: must be in 2..32")
             elif k == "noise_ref_rate_hz":
                 c.noise_ref_rate_hz = None if v is None else float(v)
+                # (0 was a ZeroDivisionError, a negative or NaN rate NaN samples)
+                if c.noise_ref_rate_hz is not None and not (np.isfinite(c.noise_ref_rate_hz)
+                                                            and c.noise_ref_rate_hz > 0):
+                    raise SpecError(f"{w}: must be a rate > 0 Hz, or null (noise fixed)")
             elif k == "present":
+                if not isinstance(v, (bool, np.bool_)):    # (bool("no") is True)
+                    raise SpecError(f"{w}: expected true or false")
                 c.present = bool(v)
         return c
 

@@ -39,6 +39,11 @@ class Timing:
                        for k, v in d.items()})
         except (TypeError, ValueError):
             raise SpecError(f"timing: invalid values {d!r}") from None
+        for k in ("jitter_s", "stamp_jitter_s", "stamp_resolution_s", "clock_drift_ppm"):
+            if not np.isfinite(getattr(t, k)):      # (NaN or inf: NaN time stamps)
+                raise SpecError(f"timing.{k}: must be finite")
+        if not t.clock_drift_ppm > -1e6:            # (-1e6 ppm: a stopped clock, infinite instants)
+            raise SpecError("timing.clock_drift_ppm: must be > -1000000 (a clock that runs)")
         for k in ("jitter_s", "stamp_jitter_s", "stamp_resolution_s"):
             if getattr(t, k) < 0:
                 raise SpecError(f"timing.{k}: must be >= 0")

@@ -67,6 +67,39 @@ def test_bad_specs_give_one_line_errors(bad, msg):
     assert msg in str(exc.value) and "\n" not in str(exc.value)
 
 
+_REST1 = {"name": "x", "motion": {"kind": "body", "segments": [{"type": "rest", "duration": 1}]}}
+
+
+@pytest.mark.parametrize("change,msg", [
+    ({"seed": 1.5}, "seed: expected a whole number"),                      # ran as seed 1
+    ({"sensor": []}, "sensor: expected an object"),                         # ran the default sensor
+    ({"sensor": {"acc": {"noise_ref_rate_hz": 0}}}, "noise_ref_rate_hz"),   # ZeroDivisionError (exit 3)
+    ({"sensor": {"acc": {"noise_ref_rate_hz": -100}}}, "noise_ref_rate_hz"),  # NaN samples
+    ({"sensor": {"acc": {"noise_mg": -1}}}, "noise_mg: must be >= 0"),      # taken as +1 mg
+    ({"sensor": {"gyr": {"bias_rw_dps_per_rt_s": -0.1}}}, "bias_rw_dps_per_rt_s: must be >= 0"),
+    ({"sensor": {"acc": {"noise_mg": float("inf")}}}, "noise_mg: must be finite"),  # infinite samples
+    ({"sensor": {"acc": {"lsb_mg": float("nan")}}}, "lsb_mg: must be a finite number"),  # no quantisation
+    ({"sensor": {"mag": {"present": "no"}}}, "present: expected true or false"),  # bool("no") is True
+    ({"timing": {"jitter_s": float("nan")}}, "timing.jitter_s: must be finite"),      # NaN instants
+    ({"timing": {"clock_drift_ppm": float("inf")}}, "timing.clock_drift_ppm: must be finite"),
+    ({"timing": {"clock_drift_ppm": -1e6}}, "clock_drift_ppm: must be > -1000000"),  # a stopped clock
+    ({"earth": {"dip_deg": float("nan")}}, "earth.dip_deg: must be finite"),          # NaN field
+    ({"earth": {"field_uT": float("inf")}}, "earth.field_uT: must be finite"),
+])
+def test_bad_sensor_and_seed_values_give_one_line_errors(change, msg):
+    with pytest.raises(KinefuseError) as exc:
+        sim.Scenario.from_dict({**_REST1, **change})
+    assert msg in str(exc.value) and "\n" not in str(exc.value)
+
+
+def test_whole_float_seed_and_valid_sensor_values_still_run():
+    sc = sim.Scenario.from_dict({**_REST1, "seed": 3.0,
+                                 "sensor": {"preset": "ideal", "acc": {"noise_mg": 0, "noise_ref_rate_hz": None},
+                                            "mag": {"present": False}}})
+    rec = sim.simulate(sc)
+    assert rec.meta["seed"] == 3 and not rec.mag_valid.any()
+
+
 def test_multi_unit_selection():
     with pytest.raises(KinefuseError, match="pass unit="):
         sim.simulate("gait")
@@ -242,3 +275,25 @@ def test_cli_refuses_a_mag_rate_for_a_sensor_without_magnetometer(tmp_path, caps
         _cli(["sim", "run", "rest", "--preset", "matrix", "--mag-rate", "50", "--duration", "1",
               "--out", str(tmp_path / "r.npz")], capsys)
     assert not (tmp_path / "r.npz").exists()
+
+
+@pytest.mark.parametrize("disturbances,stream", [
+    ([{"type": "field_scale", "t_start_s": 0, "t_end_s": 1, "factor": float("nan")}], "mag"),
+    ([{"type": "taps", "times_s": [0.5], "acc_peak_ms2": float("nan")}], "acc"),
+])
+def test_nan_in_a_disturbance_is_refused_not_simulated(disturbances, stream):
+    # (NaN magnetometer / accelerometer samples, and `kinefuse sim run` exited 0)
+    with pytest.raises(KinefuseError) as exc:
+        sim.simulate({**_REST1, "disturbances": disturbances})
+    assert f"non-finite {stream}" in str(exc.value) and "\n" not in str(exc.value)
+
+
+def test_disturbances_must_be_a_list():
+    # a single object was read as its keys: "disturbances[0]: expected an object with a 'type'"
+    with pytest.raises(KinefuseError, match="disturbances: expected a list"):
+        sim.Scenario.from_dict({**_REST1, "disturbances": {"type": "field_scale"}})
+
+
+def test_a_sensor_without_magnetometer_is_not_refused_for_its_nan_field():
+    rec = sim.simulate({**_REST1, "sensor": {"preset": "matrix"}})
+    assert not rec.mag_valid.any() and np.all(np.isfinite(rec.acc))

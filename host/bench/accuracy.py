@@ -471,8 +471,12 @@ def register_bench(sub) -> None:
 def run(args) -> int:
     if args.jobs is not None and args.jobs < 1:
         raise KinefuseError("--jobs must be at least 1")
+    from kinefuse.host.bench.common import given
+    # given but empty (an unset shell variable) silently meant the default filter or data
+    given("--filter", args.filter, "a filter name, a competitor or 'all'")
+    given("--data", args.data, "a BROAD folder or trial file")
     params = parse_params(args.param)
-    filter_arg = (args.filter or "").strip() or default_filter_name()
+    filter_arg = args.filter.strip() if args.filter is not None else default_filter_name()
     main = resolve(filter_arg, args.impl, params, impl_given=True)
     compare: list[Spec] = []
     compare_names = [n.strip() for n in (args.compare or "").split(",") if n.strip()]

@@ -73,7 +73,10 @@ def compare_inputs(name: str, inputs: dict, params: dict, with_ref: bool = True)
 
 
 def run(args) -> int:
-    name = args.filter or runner.default_filter()
+    from kinefuse.host.bench.common import given
+    given("--filter", args.filter, "a filter name")        # (meant the default filter)
+    given("--data", args.data, "a BROAD folder, trial file or angle series")
+    name = args.filter.strip() if args.filter is not None else runner.default_filter()
     if name not in runner.filter_names():
         from kinefuse.host.errors import KinefuseError
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")

@@ -9,9 +9,38 @@ import numpy as np
 from kinefuse.host.errors import KinefuseError
 
 
+def given(option: str, value: str | None, what: str) -> str | None:
+    """An option's value, refused when given but empty or blank (``--filter ""`` from an unset
+    shell variable silently meant the default); None (not given) stays None."""
+    if value is not None and not value.strip():
+        raise KinefuseError(f"{option} {value!r}: empty; give {what} (or leave the option out)")
+    return value
+
+
+def name_list(option: str, value: str | None, default, example: str) -> list[str]:
+    """The comma-separated names of ``option`` (``default`` when not given), refused when they
+    name nothing (``--parts ""`` measured nothing and exited 0)."""
+    if value is None:
+        return list(default)
+    names = [n.strip() for n in value.split(",") if n.strip()]
+    if not names:
+        raise KinefuseError(f"{option} {value!r}: names nothing (comma-separated names, e.g. "
+                            f"{example})")
+    return names
+
+
+def no_repeats(option: str, names: list[str]) -> list[str]:
+    """``names`` unless one is given twice (it was run twice and listed once, or twice)."""
+    twice = [n for k, n in enumerate(names) if n in names[:k]]
+    if twice:
+        raise KinefuseError(f"{option} names {twice[0]} twice")
+    return names
+
+
 def trial_files(data: str | None) -> tuple[list[Path], str]:
     """--data DIR|FILE, or the default (shared BROAD folder, else the bundled excerpt)."""
     from kinefuse.host import broad
+    given("--data", data, "a BROAD folder or trial file")
     if data is None:
         files, where = broad.default_data()
     else:
@@ -26,9 +55,12 @@ def progress(enabled: bool = True):
     from rich.console import Console
     from rich.progress import (BarColumn, MofNCompleteColumn, Progress, TextColumn,
                                TimeElapsedColumn)
+    console = Console(stderr=True)
+    # (not a terminal: the bar drew nothing but left an empty line on stderr, before a
+    # command's one-line error too)
     return Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
-                    TimeElapsedColumn(), console=Console(stderr=True), disable=not enabled,
-                    transient=True)
+                    TimeElapsedColumn(), console=console,
+                    disable=not enabled or not console.is_terminal, transient=True)
 
 
 def quat_angle_deg(a: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -49,7 +49,7 @@ def register_bench(bench_subparsers) -> None:
     p.add_argument("--profile", action="store_true",
                    help="also show where each of our updates spends its instructions: by function "
                         "(libgcc, libm, runtime helpers) and by line of the Python reference")
-    p.add_argument("--top", type=int, default=12, help="profile entries shown (default 12)")
+    p.add_argument("--top", type=int, default=None, help="--profile: entries shown (default 12)")
     p.add_argument("--jobs", type=argtypes.integer(1, 256), default=2, help="parallel measurements (default 2)")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
     p.set_defaults(func=run)
@@ -137,12 +137,12 @@ def run(args: argparse.Namespace) -> int:
     from kinefuse.hil_tests.harness import loops
     from kinefuse.hil_tests.qemu import qemu_unavailable
 
-    reason = qemu_unavailable()
-    if reason:
-        raise KinefuseError(reason)
     from kinefuse.host.angle_series import angle_filter_names
+    from kinefuse.host.bench.common import name_list
     costable = loops.imu_filters() + angle_filter_names()
-    filters = [f.strip() for f in args.filters.split(",")] if args.filters else costable
+    # (an empty --filters meant every filter: the longest run of all instead of an error)
+    name_list("--filters", args.filters, costable, "madgwick,flagship")
+    filters = [f.strip() for f in args.filters.split(",")] if args.filters is not None else costable
     unknown = [f for f in filters if f not in costable]
     if unknown:
         raise KinefuseError(f"unknown IMU filter or joint-angle smoother {unknown[0]!r} "
@@ -158,8 +158,14 @@ def run(args: argparse.Namespace) -> int:
             raise KinefuseError(f"{opt} names {twice[0]} twice")
     if not 1 <= args.k <= 1000:
         raise KinefuseError("--k must be between 1 and 1000")
-    if args.top < 1:
+    if args.top is not None and not args.profile:      # (was ignored)
+        raise KinefuseError("--top sets the --profile listing: add --profile (or leave it out)")
+    top = 12 if args.top is None else args.top
+    if top < 1:
         raise KinefuseError("--top must be at least 1")
+    reason = qemu_unavailable()        # after the options: their errors need no QEMU
+    if reason:
+        raise KinefuseError(reason)
     jobs = [("ours", f, s, t) for f in filters for s in formats if s in loops.systems(f)
             for t in targets if t in TARGETS[s]]
     if not args.no_competitors and "f32" in formats:
@@ -169,7 +175,7 @@ def run(args: argparse.Namespace) -> int:
     rows = []
     with progress(not args.json) as bar, ProcessPoolExecutor(max(1, args.jobs)) as pool:
         task = bar.add_task("cost on M4F/M0", total=len(jobs))
-        futs = [pool.submit(_job, kind, a, b, c, args.k, not args.no_mix, args.profile, args.top)
+        futs = [pool.submit(_job, kind, a, b, c, args.k, not args.no_mix, args.profile, top)
                 for kind, a, b, c in jobs]
         for fut in futs:
             rows.append(fut.result())

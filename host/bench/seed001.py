@@ -194,6 +194,8 @@ def filter_list(arg: str | None) -> list[str]:
         if not names:
             raise KinefuseError(f"--filters {arg!r}: names no filter (comma-separated names, e.g. "
                                 f"{','.join(SEED_FILTERS)})")
+    from kinefuse.host.bench.common import no_repeats
+    no_repeats("--filters", names)      # (the filter ran twice, its column shown once)
     for n in names:
         if n not in estimators.ESTIMATORS:
             raise KinefuseError(f"unknown filter {n!r} (available: {', '.join(estimators.ESTIMATORS)})")
@@ -265,8 +267,8 @@ def run(args) -> int:
         if getattr(args, k) is None:
             setattr(args, k, v)
     names = filter_list(args.filters)
-    if not args.hold_s >= 10.0:
-        raise KinefuseError("--hold-s must be at least 10 s")
+    if not (args.hold_s >= 10.0 and np.isfinite(args.hold_s)):     # (inf reached the simulator)
+        raise KinefuseError(f"--hold-s {args.hold_s:g}: must be a finite number of seconds, at least 10")
     params = {n: filter_params(n, args.params) for n in names}
     out = {"bench": "seed001", "impl": args.impl, "seed": args.seed, "hold_s": args.hold_s,
            "site": MONTEVIDEO, "sensor": "metamotionr (seed 001 Table 7.2 noise per unit)",

@@ -148,6 +148,8 @@ def check_protocol(args) -> list[float]:
     def need(ok: bool, msg: str):
         if not ok:
             raise KinefuseError(msg)
+    from kinefuse.host.bench.common import no_repeats
+    no_repeats("--omegas", [f"{w:g}" for w in omegas])   # (simulated twice, one row shown)
     need(0 < args.rate_hz <= 10_000, f"--rate-hz {args.rate_hz:g}: must be in (0, 10000] Hz")
     nyquist = math.pi * args.rate_hz
     need(bool(omegas) and all(0 < w < nyquist for w in omegas),
@@ -170,6 +172,8 @@ def run(args) -> int:
     if not names:
         raise KinefuseError(f"--filters {args.filters!r}: names no filter (comma-separated names, e.g. "
                             f"{','.join(FILTERS)})")
+    from kinefuse.host.bench.common import no_repeats
+    no_repeats("--filters", names)      # (each take filtered twice, both RMSEs in one mean)
     for n in names:
         if n not in estimators.ESTIMATORS:
             raise KinefuseError(f"unknown filter {n!r} (available: {', '.join(estimators.ESTIMATORS)})")

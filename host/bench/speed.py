@@ -291,13 +291,19 @@ def run(args) -> int:
     from kinefuse.codegen import runner as cg
     from kinefuse.codegen import estimators
     from kinefuse.host.broad import load_trial
-    name = args.filter or runner.default_filter()
+    from kinefuse.host.bench.common import given
+    given("--filter", args.filter, "a filter name")        # (meant the default filter)
+    given("--data", args.data, "a trial file or folder")    # (searched the current folder)
+    name = args.filter.strip() if args.filter is not None else runner.default_filter()
     if name not in runner.filter_names():
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
     if args.repeat < 1:
         raise KinefuseError(f"--repeat {args.repeat}: must be at least 1")
     if args.model_samples < 1:
         raise KinefuseError(f"--model-samples {args.model_samples}: must be at least 1")
+    import shutil
+    if args.instructions and shutil.which("valgrind") is None:    # (was found out after the timings)
+        raise KinefuseError("--instructions needs valgrind (apt-get install valgrind)")
     from kinefuse.host import angle_series
     angle = angle_series.is_angle_filter(name)
     if not angle and name not in runner.imu_filter_names():

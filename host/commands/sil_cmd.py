@@ -54,7 +54,15 @@ def run_report(args: argparse.Namespace) -> int:
     from kinefuse.hil_tests.harness import loops, report, scenarios
     from kinefuse.hil_tests.sim.segments import SpecError
 
-    filters = [f.strip() for f in args.filters.split(",")] if args.filters else loops.imu_filters()
+    from kinefuse.host.bench.common import given as not_blank, name_list
+    # given but empty (an unset shell variable) meant every filter / the whole scenario set /
+    # the default BROAD trial
+    name_list("--filters", args.filters, (), "madgwick,flagship")
+    name_list("--scenarios", args.scenarios, (), "rest,constant_rotation")
+    not_blank("--broad", args.broad, "a BROAD trial file or 'none'")
+    not_blank("--cost", args.cost, "a `kinefuse bench cost --json` file")
+    not_blank("--out", args.out, "an output folder")     # ("" wrote into the current folder)
+    filters = [f.strip() for f in args.filters.split(",")] if args.filters is not None else loops.imu_filters()
     bad = [f for f in filters if f not in loops.imu_filters()]
     if bad:
         raise KinefuseError(f"unknown IMU filter {bad[0]!r} (available: {', '.join(loops.imu_filters())})")
@@ -86,8 +94,10 @@ def run_report(args: argparse.Namespace) -> int:
         reason = qemu_unavailable()
         if reason:
             raise KinefuseError(f"{reason} (or pass --no-qemu)")
-    cost = report.load_cost(args.cost) if args.cost else []
-    names = ([s.strip() for s in args.scenarios.split(",")] if args.scenarios
+    if broad not in (None, "none"):     # before the scenarios are simulated, not after
+        _check_broad_file(broad)
+    cost = report.load_cost(args.cost) if args.cost is not None else []
+    names = ([s.strip() for s in args.scenarios.split(",")] if args.scenarios is not None
              else list(scenarios.CI_SCENARIOS if args.ci else scenarios.FULL_SCENARIOS))
     seconds = args.seconds if args.seconds is not None else (scenarios.CI_SECONDS if args.ci else None)
     out = check_output_dir(args.out, args.force, REPORT_FILES)
@@ -103,8 +113,6 @@ def run_report(args: argparse.Namespace) -> int:
             raise KinefuseError(str(exc)) from None
         if broad != "none":
             path = broad or scenarios.default_broad_trial()
-            if not Path(path).exists():
-                raise KinefuseError(f"BROAD trial {path} not found")
             case = scenarios.broad_case(path)
             keep = seconds if args.broad_seconds is None else args.broad_seconds
             cases.append(case.head(int(keep * case.rate_hz)) if keep else case)
@@ -141,3 +149,11 @@ def run_report(args: argparse.Namespace) -> int:
                 from kinefuse.hil_tests.harness.compare import Mismatch
                 print("MISMATCH " + f"{r['filter']} on {r['case']}: " + Mismatch(**r["mismatch"]).message())
     return 0 if rep.all_bitexact else 1
+
+
+def _check_broad_file(path: str) -> None:
+    p = Path(path)
+    if not p.exists():
+        raise KinefuseError(f"BROAD trial {path} not found")
+    if p.is_dir():
+        raise KinefuseError(f"--broad {path} is a folder: give one trial file (.mat or .npz)")

@@ -73,6 +73,7 @@ def test_unknown_filter_is_a_one_line_error(capsys):
 @pytest.mark.parametrize("argv, text", [
     (["--filters", ""], "--filters '': names no filter"),                        # ran the defaults
     (["--filters", ","], "--filters ',': names no filter"),
+    (["--filters", "madgwick,madgwick", "--hold-s", "12"], "--filters names madgwick twice"),  # ran twice
     (["--broad", "{d}", "--params", "seed001"], "--params: simulation option(s), not used by --broad"),  # ignored
     (["--broad", "{d}", "--seed", "3", "--hold-s", "20"], "--seed, --hold-s: simulation option(s)"),     # ignored
     (["--broad", "{d}", "--filters", "madgwick,flagship"], "--broad compares madgwick, vac, vak, guo only"),  # dropped
@@ -124,3 +125,25 @@ def test_ahrs_peer_frames_on_a_synthetic_known_orientation(peer):
         assert err[-1] < 0.5 and np.max(err[trial.n // 2:]) < 0.5, (peer, k, err[-1])
         raw = quat_mul(quat_conj(competitors.Q_NWU_TO_ENU), est)     # the library's own output
         assert quat_angle_deg(raw[-1:], q[None])[0] > 45.0
+
+
+def test_error_inside_the_progress_bar_is_one_line_when_stderr_is_not_a_terminal(capsys, monkeypatch):
+    # an error from the simulation, inside the bar: the bar drew nothing off a terminal but
+    # left an empty line on stderr first
+    from kinefuse.host.bench import seed001
+    from kinefuse.host.errors import KinefuseError
+
+    def fail(*a, **k):
+        raise KinefuseError("simulation failed (test)")
+    monkeypatch.setattr(seed001, "simulate", fail)
+    assert cli.main(["bench", "seed001", "--hold-s", "12", "--filters", "madgwick"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err == "kinefuse: error: simulation failed (test)\n", repr(err)
+
+
+@pytest.mark.parametrize("hold", ["inf", "nan", "5"])
+def test_hold_s_must_be_finite_and_at_least_10_s(capsys, hold):
+    # (inf reached the simulator: "motion.joint.steps[0].hold_s: must be a positive number")
+    assert cli.main(["bench", "seed001", "--hold-s", hold, "--json"]) == 2
+    out, err = capsys.readouterr()
+    assert out == "" and err.startswith("kinefuse: error: --hold-s") and err.count("\n") == 1, repr(err)

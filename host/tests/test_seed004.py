@@ -85,6 +85,10 @@ def test_bad_arguments_are_one_line_errors(capsys):
     (["--noise-deg", "inf"], "--noise-deg inf"),
     (["--latency-ms", "5000"], "within the warm-up"),
     (["--filters", ","], "--filters ',': names no filter"),                         # ran RAW alone
+    (["--filters", "angle-kf,angle-kf", "--takes", "1", "--duration-s", "4", "--omegas", "1"],
+     "--filters names angle-kf twice"),                     # each take filtered twice, one mean
+    (["--omegas", "1,1.0", "--takes", "1", "--duration-s", "4"],
+     "--omegas names 1 twice"),                             # simulated twice, one row shown
 ])
 def test_bad_protocols_are_one_line_errors_before_any_work(capsys, argv, text):
     assert cli.main(["bench", "seed004", "--json", *argv]) == 2
