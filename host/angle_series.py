@@ -131,6 +131,10 @@ def _read_angle_csv(path: str) -> AngleSeries:
         a.append(av)
     if not t:
         raise KinefuseError(f"{path}: no data rows")
+    if all(math.isnan(v) for v in a):
+        # every sample "predicted only": the filter's initial state (0°) was written as the angle
+        raise KinefuseError(f"{path}: no angle in any of the {len(t)} rows ({ANGLE_COLUMN} empty or nan "
+                            f"throughout); nothing to filter")
     return AngleSeries(np.asarray(t), np.radians(np.asarray(a)), path, "angle-csv",
                        "s, the file's t column")
 

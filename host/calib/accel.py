@@ -76,6 +76,7 @@ class AccelCalibration:
     model: str = ""                 # e.g. "targets-linear", "norm-upper", "norm-diagonal"
     residuals: np.ndarray = field(default_factory=lambda: np.zeros(0))
     condition: float = float("nan")
+    warnings: list = field(default_factory=list)
 
     @property
     def det(self) -> float:
@@ -268,8 +269,16 @@ def fit_full_norm(raw, *, g: float = G_STANDARD, model: str = "auto",
             f"poorly excited pose set: the fit is ill-conditioned (condition {cond:.3g} ≥ "
             f"{max_cond:g}); use poses with gravity along each axis in both directions")
     res = np.linalg.norm(apply_affine(raw, M, b), axis=1) - g
+    warnings = []
+    if n == need:
+        # as many equations as unknowns: the fit passes through every pose, the residual is 0 by
+        # construction (it was printed as a perfect "residual_rms = 0.00000 m/s²")
+        warnings.append(f"{n} poses for the {need} unknowns of the {model} model: the fit is exactly "
+                        f"determined, so its residual (0 by construction) says nothing about its quality; "
+                        f"record more poses to check it")
     return AccelCalibration("full", M, b, float(np.sqrt(np.mean(res**2))), n,
-                            model=f"norm-{model}", residuals=res, condition=max(cond, cond0))
+                            model=f"norm-{model}", residuals=res, condition=max(cond, cond0),
+                            warnings=warnings)
 
 
 def fit(raw, targets=None, *, method: str = "ls", g: float = G_STANDARD) -> AccelCalibration:

@@ -27,7 +27,7 @@ class GyroCalibration:
     b: np.ndarray                  # rad/s
     n_windows: int
     n_samples: int
-    window_spread: float           # rad/s, max |window mean − b|
+    window_spread: float           # rad/s, max |window mean − b|; NaN with one window
     residual_rms: float = float("nan")   # rad/s, only with known rates
     method: str = "static-bias"
     windows: list = field(default_factory=list)
@@ -55,7 +55,8 @@ def bias_from_static(t, gyr, acc, config: S.StaticConfig = S.StaticConfig(),
     counts = np.array([w.n for w in windows], dtype=float)
     b = sums.sum(axis=0) / counts.sum()
     means = sums / counts[:, None]
-    spread = float(np.max(np.linalg.norm(means - b, axis=1)))
+    # one window has no spread to show (it was reported as 0: "no drift", which it cannot tell)
+    spread = float(np.max(np.linalg.norm(means - b, axis=1))) if len(windows) > 1 else float("nan")
     return GyroCalibration(np.eye(3), b, len(windows), int(counts.sum()), spread,
                            windows=[(w.t0, w.t1) for w in windows])
 
@@ -93,6 +94,13 @@ def fit_scale(measured_means, known_rates, *, rest_means=None) -> GyroCalibratio
                             "recording's times in seconds?)")
     P, *_ = np.linalg.lstsq(D, known, rcond=None)
     M = P[:3].T
+    gain = float(abs(np.linalg.det(M)) ** (1.0 / 3.0))
+    if not 0.5 <= gain <= 2.0:
+        # real gyroscope scale errors are a few per cent: known rates in °/s against a gyroscope
+        # in rad/s gave M ≈ 57·I, printed as a calibration without a word
+        hint = " (°/s instead of rad/s?)" if 40 < gain < 80 else ""
+        raise KinefuseError(f"the known rates are {gain:.3g} × the measured ones: not the same unit{hint}; "
+                            f"give the rate windows' wx, wy, wz in rad/s")
     b = -np.linalg.solve(M, P[3])
     res = apply_affine(meas, M, b) - known
     return GyroCalibration(M, b, len(meas), 0, float("nan"),

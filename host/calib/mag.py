@@ -54,6 +54,13 @@ FULL_MIN_CELLS = 0.6
 #: this of a plane (smallest scatter eigenvalue) or its W has a condition number above
 #: FULL_MAX_COND (real soft iron distorts by a few per cent: condition numbers near 1.1)
 FULL_MAX_COND = 3.0
+#: the geomagnetic field's magnitude at the surface (µT, WMM: about 22 µT in the South Atlantic
+#: anomaly to 67 µT near the magnetic poles), with a margin; a --field-norm outside it is
+#: most likely in the wrong unit (nT, gauss) and is warned about
+FIELD_NORM_EARTH_UT = (20.0, 70.0)
+#: raw readings (µT, median |m|): the Earth's field with hard iron of up to thousands of µT
+#: (sensor ranges ±1300-4900 µT); outside this the readings are not in µT
+RAW_NORM_UT = (5.0, 5000.0)
 
 
 @dataclass
@@ -143,8 +150,18 @@ def calibrate(raw, *, model: str = "auto", field_norm: float | None = None,
     x = x[np.all(np.isfinite(x), axis=1)]
     if len(x) < min_samples:
         raise KinefuseError(f"magnetometer calibration needs ≥ {min_samples} samples, got {len(x)}")
-    if field_norm is not None and not field_norm > 0:
-        raise KinefuseError("the local field norm must be positive (µT)")
+    if field_norm is not None and not (np.isfinite(field_norm) and field_norm > 0):
+        # inf passed the old "> 0" test and ended in an internal error (NaN W, eigvalsh)
+        raise KinefuseError(f"the local field norm must be a positive, finite number of µT, got "
+                            f"{field_norm:g} (--field-norm)")
+    med = float(np.median(np.linalg.norm(x, axis=1)))
+    if not RAW_NORM_UT[0] <= med <= RAW_NORM_UT[1]:
+        # readings in gauss looked like a unit that was not turned ("standard deviation 0.2 µT")
+        guess = "gauss (1 G = 100 µT)" if med < RAW_NORM_UT[0] else "nT (1 µT = 1000 nT)"
+        raise KinefuseError(
+            f"magnetometer readings have a median |m| of {med:.4g} µT, outside anything the Earth's "
+            f"field ({FIELD_NORM_EARTH_UT[0]:g}–{FIELD_NORM_EARTH_UT[1]:g} µT) plus a sensor's hard iron "
+            f"gives ({RAW_NORM_UT[0]:g}–{RAW_NORM_UT[1]:g} µT): are they in {guess}?")
     spread = float(np.sqrt(max(np.linalg.eigvalsh(np.cov(x.T))[-1], 0.0)))
     if spread < MOVEMENT_MIN_STD_UT:
         raise KinefuseError(
@@ -161,6 +178,11 @@ def calibrate(raw, *, model: str = "auto", field_norm: float | None = None,
     if model not in ("auto", "full", "hard"):
         raise KinefuseError(f"unknown magnetometer model {model!r} (auto|full|hard)")
     warnings = []
+    if field_norm is not None and not FIELD_NORM_EARTH_UT[0] <= field_norm <= FIELD_NORM_EARTH_UT[1]:
+        warnings.append(
+            f"field norm {field_norm:g} µT is outside the Earth's field ({FIELD_NORM_EARTH_UT[0]:g}–"
+            f"{FIELD_NORM_EARTH_UT[1]:g} µT): is it in nT or gauss? (1 gauss = 100 µT); the calibrated "
+            f"readings are scaled to it")
     fitted = "hard"
     b, r0 = _sphere_fit(x)
     r = r0 if field_norm is None else float(field_norm)

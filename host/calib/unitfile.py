@@ -93,7 +93,7 @@ def validate(doc, source: str = "calibration") -> dict:
         bad(f"'format' must be {FORMAT!r}")
     if doc.get("version") != VERSION:
         bad(f"unsupported version {doc.get('version')!r} (this kinefuse reads {VERSION})")
-    if not isinstance(doc.get("serial"), str) or not doc["serial"]:
+    if not isinstance(doc.get("serial"), str) or not doc["serial"].strip():
         bad("'serial' must be a non-empty string")
     try:
         _dt.datetime.fromisoformat(str(doc.get("date")))

@@ -79,7 +79,8 @@ def register(subparsers) -> None:
     m.add_argument("--model", choices=["auto", "full", "hard"], default="auto",
                    help="full: hard + soft iron; hard: offset only; auto (default): full when "
                         "the readings visit at least 60%% of the direction sphere, else hard")
-    m.add_argument("--field-norm", type=float, help="local field magnitude (µT) to scale to")
+    m.add_argument("--field-norm", type=argtypes.real(0.0, math.inf, lo_open=True, hi_open=True),
+                   help="local field magnitude (µT) to scale to")
     m.add_argument("--gate", type=float, metavar="UT",
                    help="seed-001 gating: report the samples whose calibrated |m| leaves ±UT of the "
                         "mean (seed: 0.5); the report command applies it with --mag-gate")
@@ -155,7 +156,15 @@ def _ranges(args) -> dict:
 
 def _check_ranges(args) -> None:
     """--range before any work: valid names and values, and only with --out (where it is stored);
-    --serial likewise only with --out (it was accepted and ignored without)."""
+    --serial likewise only with --out (it was accepted and ignored without).  An empty --out was
+    taken as no --out (nothing written, without a word); a blank --serial was written to the file
+    as the unit's serial, and spaces around one made it another unit's."""
+    if args.out is not None and not args.out.strip():
+        raise KinefuseError("--out is empty: give the unit calibration file to write")
+    if args.serial is not None:
+        if not args.serial.strip():
+            raise KinefuseError(f"--serial {args.serial!r} is blank: give the unit's serial number")
+        args.serial = args.serial.strip()
     if _ranges(args) and not args.out:
         raise KinefuseError("--range is stored in the unit calibration file: give --out")
     if args.serial is not None and not args.out:
@@ -164,8 +173,10 @@ def _check_ranges(args) -> None:
 
 def _read(args):
     from kinefuse.host.readers import detect_format, kfr, read_recording
+    from kinefuse.host.commands.report_cmd import check_fs_option
     opts = {}
     if args.fs is not None:
+        check_fs_option(args.fs, args.input, args.fmt or detect_format(args.input))
         opts["fs"] = args.fs
     if args.unit is not None:
         fmt = args.fmt or detect_format(args.input)
@@ -251,6 +262,17 @@ def run_accel(args) -> int:
         raise KinefuseError(f"accelerometer fit ({method}) has det = {cal.det:.4f} ≤ 0: a reflection, not a "
                             f"calibration (are the targets in a left-handed frame, or one axis' sign "
                             f"flipped?); refused")
+    # the poses may be in g throughout (--g 1, or targets in g): the fit is then in g, and a unit
+    # file, whose accelerometer entry is m/s², stored a bias in g labelled m/s²
+    ref = float(np.median(np.linalg.norm(targets, axis=1))) if targets is not None else args.g
+    si = 9.7 <= ref <= 9.9
+    if args.out and not si:
+        what = f"the targets' |g| is {ref:.4g}" if targets is not None else f"--g {ref:g}"
+        raise KinefuseError(f"{what}: the poses are not in m/s², but the unit calibration file stores the "
+                            f"accelerometer in m/s²; give poses and targets in m/s² to write --out")
+    unit = "m/s²" if si else "(the poses' unit)"
+    for w in cal.warnings:
+        print(f"kinefuse: warning: {w}", file=sys.stderr)
     if args.out:
         M = np.eye(3)
         d = cal.M.shape[0]
@@ -264,8 +286,8 @@ def run_accel(args) -> int:
     text = [f"accelerometer calibration ({method}, {cal.model}, {cal.n_poses} poses)",
             "R =" if cal.b is None else "M =",
             *("  " + "  ".join(f"{v:9.5f}" for v in row) for row in cal.M),
-            f"bias = {'none' if cal.b is None else ', '.join(f'{v:.5f}' for v in cal.b)}",
-            f"det = {cal.det:.5f}", f"residual_rms = {cal.residual_rms:.5f} m/s²"]
+            f"bias = {'none' if cal.b is None else ', '.join(f'{v:.5f}' for v in cal.b) + ' ' + unit}",
+            f"det = {cal.det:.5f}", f"residual_rms = {cal.residual_rms:.5f} {unit}"]
     _emit(args, cal.to_json(), text)
     return 0
 
@@ -287,8 +309,9 @@ def run_gyro(args) -> int:
     text = [f"gyroscope calibration ({cal.method}): {cal.n_windows} windows, {cal.n_samples} samples",
             f"bias = {', '.join(f'{v:.6f}' for v in cal.b)} rad/s "
             f"({', '.join(f'{np.degrees(v):.3f}' for v in cal.b)} °/s)",
-            f"spread of window means = {cal.window_spread:.6f} rad/s" if cal.method == "static-bias"
-            else f"residual_rms = {cal.residual_rms:.6f} rad/s"]
+            (f"spread of window means = {cal.window_spread:.6f} rad/s" if np.isfinite(cal.window_spread)
+             else "spread of window means = n/a (one static window: a drifting bias cannot be seen)")
+            if cal.method == "static-bias" else f"residual_rms = {cal.residual_rms:.6f} rad/s"]
     _emit(args, cal.to_json(), text)
     return 0
 

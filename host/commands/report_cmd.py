@@ -81,7 +81,8 @@ def register(subparsers) -> None:
                    help="figure-eight recordings for the magnetometer calibration")
     k.add_argument("--unit-cal", nargs=2, metavar=("THIGH.json", "SHANK.json"),
                    help="unit calibration files (kinefuse calibrate --out)")
-    k.add_argument("--field-norm", type=float, help="local magnetic field (µT) for the mag calibration")
+    k.add_argument("--field-norm", type=argtypes.real(0.0, math.inf, lo_open=True, hi_open=True),
+                   help="local magnetic field (µT) for the mag calibration")
     k.add_argument("--mag-gate", type=float, metavar="UT",
                    help="seed-001 gating: hold samples whose |m| leaves ±UT of the mean (seed: 0.5)")
     k.add_argument("--side", choices=["right", "left"], default="right")
@@ -119,6 +120,7 @@ def _reader(args):
         if path is None:
             return None
         fmt = args.fmt or detect_format(path)
+        check_fs_option(args.fs, path, fmt)
         extra = {}
         if unit is not None:
             if fmt == kfr.FORMAT:
@@ -128,6 +130,16 @@ def _reader(args):
                                     f"({fmt}); {option} selects a unit in a .kfr file")
         return read_recording(path, fmt, **opts, **extra)
     return read
+
+
+def check_fs_option(fs, path, fmt) -> None:
+    """--fs sets the rate of formats without time stamps; the readers of the others ignored it
+    without a word (a recording at 100 Hz stayed at 100 Hz with --fs 50).  Shared with
+    ``kinefuse calibrate``."""
+    from kinefuse.host.readers import matrix, seed004
+    if fs is not None and fmt not in (matrix.FORMAT, seed004.FORMAT):
+        raise KinefuseError(f"--fs {fs:g}: {path} ({fmt}) has its own time stamps; --fs sets the sampling "
+                            f"rate of {matrix.FORMAT} and {seed004.FORMAT} files, which have none")
 
 
 def _pair(read, paths, units=(None, None)):
@@ -178,11 +190,49 @@ def _finish(args, kind, res, title, inputs) -> int:
         rom = summary["range_of_motion_deg"]
         print(f"{title}: {summary['n_cycles_kept']} of {summary['n_cycles_detected']} cycles")
         for c, v in rom.items():
-            print(f"  {c:<24} ROM {v['mean']:6.1f} ± {v['sd']:4.1f}°  (max {v['max_mean']:6.1f}, "
+            sd = "n/a" if v["sd"] is None else f"{v['sd']:4.1f}"
+            print(f"  {c:<24} ROM {v['mean']:6.1f} ± {sd}°  (max {v['max_mean']:6.1f}, "
                   f"min {v['min_mean']:6.1f})")
         print(f"  {res.convention}")
         print(f"wrote {', '.join(summary['files'])} to {os.path.abspath(args.out)}")
     return 0
+
+
+def _check_out(args, kind: str) -> None:
+    """--out before any work: not empty (that was the current folder, named nowhere), not a file,
+    no earlier report unless --force, and no folder in the way of a report file."""
+    from kinefuse.host.kinematics import report
+    if not args.out.strip():
+        raise KinefuseError("--out is empty: give the folder for the report")
+    out = check_output_dir(args.out, args.force, report.report_files(kind))
+    up = out.absolute()
+    while not up.exists() and up != up.parent:
+        up = up.parent
+    if not up.is_dir():
+        raise KinefuseError(f"--out {out}: cannot create the folder, {up} is a file")
+    for name in report.report_files(kind):
+        if (out / name).is_dir():
+            raise KinefuseError(f"cannot write {out / name}: a folder of that name is in the way")
+
+
+def _check_distinct(pairs, units) -> None:
+    """Each segment has its own sensor: one recording (one unit of it) given for both segments
+    was reported as 'flexion varies by only 0.0°', or calibrated both sensors with one's data."""
+    for option, paths in pairs:
+        if paths is None:
+            continue
+        a, b = paths
+        same = a == b
+        if not same:
+            try:
+                same = os.path.samefile(a, b)
+            except OSError:
+                same = False     # a missing file is reported by its reader
+        if same and units[0] == units[1]:
+            names = " and ".join(option) if isinstance(option, tuple) else option
+            which = "" if units[0] is None else f" (unit {units[0]})"
+            raise KinefuseError(f"{names}: {a}{which} given for both segments; each segment has its own "
+                                f"sensor and recording")
 
 
 def _check_cycle_args(args) -> None:
@@ -213,7 +263,7 @@ def run_knee(args) -> int:
     from kinefuse.host.calib import unitfile
     from kinefuse.host.kinematics import report
     _check_cycle_args(args)
-    check_output_dir(args.out, args.force, report.report_files("knee"))
+    _check_out(args, "knee")
     if args.calib_functional is not None:
         if args.calib_lying is not None:
             raise KinefuseError("give --calib-lying (two-posture) or --calib-functional, not both")
@@ -221,6 +271,10 @@ def run_knee(args) -> int:
             raise KinefuseError("--calib-functional needs --calib-standing (the vertical axis)")
     elif (args.calib_standing is None) != (args.calib_lying is None):
         raise KinefuseError("--calib-standing and --calib-lying go together (two-posture method)")
+    _check_distinct([(("--thigh", "--shank"), (args.thigh, args.shank)),
+                     ("--calib-standing", args.calib_standing), ("--calib-lying", args.calib_lying),
+                     ("--calib-functional", args.calib_functional), ("--mag-cal", args.mag_cal)],
+                    (args.thigh_unit, args.shank_unit))
     read = _reader(args)
     units = None
     if args.unit_cal:
@@ -251,7 +305,8 @@ def run_elbow(args) -> int:
     from kinefuse.host.calib import unitfile
     from kinefuse.host.kinematics import report
     _check_cycle_args(args)
-    check_output_dir(args.out, args.force, report.report_files("elbow"))
+    _check_out(args, "elbow")
+    _check_distinct([(("--arm", "--forearm"), (args.arm, args.forearm))], (args.arm_unit, args.forearm_unit))
     read = _reader(args)
     units = None
     if args.unit_cal:

@@ -52,17 +52,18 @@ class CycleSet:
 
     @property
     def sd(self) -> np.ndarray:
+        """Sample standard deviation over the kept cycles; NaN (not defined) for one cycle."""
         if len(self.curves) < 2:
-            return np.zeros_like(self.curves[0])
+            return np.full_like(self.curves[0], np.nan)
         return self.curves.std(axis=0, ddof=1)
 
     def rom(self) -> dict:
-        """Per-angle range of motion over cycles: max − min of each cycle, mean ± SD, and the
-        max/min of the mean curve."""
+        """Per-angle range of motion over cycles: max − min of each cycle, mean ± SD (NaN for one
+        cycle), and the max/min of the mean curve."""
         mx = self.curves.max(axis=1)
         mn = self.curves.min(axis=1)
         r = mx - mn
-        sd = r.std(axis=0, ddof=1) if len(r) > 1 else np.zeros(r.shape[1])
+        sd = r.std(axis=0, ddof=1) if len(r) > 1 else np.full(r.shape[1], np.nan)   # not defined
         return {"rom_mean": r.mean(axis=0), "rom_sd": sd,
                 "max_mean": mx.mean(axis=0), "min_mean": mn.mean(axis=0),
                 "mean_curve_max": self.mean.max(axis=0), "mean_curve_min": self.mean.min(axis=0)}
@@ -133,7 +134,8 @@ def normalise(t, angles, bounds, *, drop_edge: int = 0, max_rmse_deg: float = 10
     if drop_edge:
         bounds = bounds[drop_edge:len(bounds) - drop_edge]
     if not bounds:
-        raise KinefuseError("no complete cycle left after dropping the edge cycles")
+        raise KinefuseError(f"no complete cycle left after dropping the edge cycles: {n_all} cycle(s) "
+                            f"detected, dropping {drop_edge} at each end (--drop-edge-cycles) leaves none")
     curves, durs = [], []
     for i0, i1 in bounds:
         tt = t[i0:i1]

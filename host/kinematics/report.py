@@ -7,7 +7,8 @@ and task.  Pipeline, in order — each step is reported in the summary:
 1. optional unit calibration files (accel/gyro/mag affine maps) are applied to every sample;
 2. magnetometer hard/soft iron from the figure-eight recordings (ellipsoid fit), or from the
    unit file; without either the magnetometer is *not* used (raw hard iron of tens of µT would
-   corrupt the heading) and the filter runs in 6-D;
+   corrupt the heading) and the filter runs in 6-D; nor is it when the calibrated task readings
+   do not have the calibration's field norm (±25 %: another sensor's figure-eight), with a warning;
 3. sensor-to-segment offsets q_SB from the standing and lying recordings (two-posture method,
    mean accelerometer over the longest static window of each), or functionally from a
    flexion–extension recording and the standing one (X = each sensor's gyroscope principal
@@ -33,6 +34,7 @@ and task.  Pipeline, in order — each step is reported in the summary:
 """
 from __future__ import annotations
 
+import contextlib
 import os
 from dataclasses import dataclass, field
 from typing import Callable
@@ -99,6 +101,14 @@ def _on_one_clock(a: Recording, b: Recording, info: dict) -> tuple[Recording, Re
     return cut(a), cut(b), (lo, lo)
 
 
+def _static_info(cfg: S.StaticConfig) -> dict:
+    """The static-detection thresholds, units in the names (the report stated none of them, so
+    a report made with --acc-std-max 0.5 read like one with the defaults)."""
+    return {"window_s": cfg.window_s, "gyr_std_max_rad_s": cfg.gyr_std_max,
+            "gyr_abs_max_rad_s": cfg.gyr_abs_max, "acc_std_max_m_s2": cfg.acc_std_max,
+            "min_duration_s": cfg.min_duration_s, "trim_s": cfg.trim_s}
+
+
 def _posture_mean(rec: Recording, name: str, cfg: S.StaticConfig) -> tuple[np.ndarray, dict]:
     rec.require("acc")
     wins = S.detect_static(rec.t, rec.acc, rec.gyr, cfg, source=rec.source)
@@ -118,6 +128,29 @@ def _gyro_bias(recs: list[Recording], cfg: S.StaticConfig) -> tuple[np.ndarray, 
     return np.zeros(3), "none (no static period ≥ 1 s found; gyroscope used as is)"
 
 
+#: a magnetometer calibration applied to a task recording must give the field it was fitted to:
+#: a median |m| off by more than this fraction is another sensor's calibration (offsets of tens
+#: of µT: 85 µT for a 22.6 µT field in the simulated protocol) or another place, not the few per
+#: cent indoor disturbances change it by
+MAG_TASK_NORM_TOL = 0.25
+
+
+def _mag_mismatch(m_cal, field_norm) -> str | None:
+    """Why the calibrated task magnetometer ``m_cal`` (µT) does not match the calibration's field
+    norm, or None (also when the norm is unknown)."""
+    if field_norm is None or not np.isfinite(field_norm) or not field_norm > 0:
+        return None
+    n = np.linalg.norm(np.asarray(m_cal, float), axis=1)
+    n = n[np.isfinite(n)]
+    if not len(n):
+        return None
+    med = float(np.median(n))
+    if abs(med / field_norm - 1.0) <= MAG_TASK_NORM_TOL:
+        return None
+    return (f"calibrated, its readings have a median |m| of {med:.1f} µT, {med / field_norm:.2f} × the "
+            f"{field_norm:.1f} µT field")
+
+
 def _interp_quat(t_src, q_src, t_dst) -> np.ndarray:
     """Normalised linear interpolation of a sign-continuous quaternion stream."""
     q = Q.unwrap_sign(q_src)
@@ -125,12 +158,14 @@ def _interp_quat(t_src, q_src, t_dst) -> np.ndarray:
     return Q.normalize(out)
 
 
-def _first_still(rec: Recording, cfg: S.StaticConfig, other: Recording | None = None) -> slice:
+def _first_still(rec: Recording, cfg: S.StaticConfig, other: Recording | None = None) -> tuple[slice, bool]:
     """Samples (on ``rec``'s time base) of the first period where ``rec`` — and ``other``, if
-    given, mapped by elapsed time — is still for ≥ ``cfg.min_duration_s``; else the first 0.5 s."""
+    given, mapped by elapsed time — is still for ≥ ``cfg.min_duration_s``; else the first 0.5 s.
+    Returns (samples, whether a still period was found): the fallback is whatever the subject
+    did then, and callers say so."""
     n_default = max(2, int(0.5 * rec.fs)) if np.isfinite(rec.fs) else 10
     if rec.acc is None:
-        return slice(0, min(n_default, len(rec.t)))
+        return slice(0, min(n_default, len(rec.t))), False
     ok = S.still_mask(rec.t, rec.acc, rec.gyr, cfg, source=rec.source)
     if other is not None and other.acc is not None:
         ok_o = S.still_mask(other.t, other.acc, other.gyr, cfg, source=other.source)
@@ -142,8 +177,8 @@ def _first_still(rec: Recording, cfg: S.StaticConfig, other: Recording | None = 
     for a, b in zip(edges[::2], edges[1::2]):
         if (b - a) * dt >= cfg.min_duration_s:
             trim = int(round(cfg.trim_s / dt))
-            return slice(int(a + trim), int(b - trim))
-    return slice(0, min(n_default, len(rec.t)))
+            return slice(int(a + trim), int(b - trim)), True
+    return slice(0, min(n_default, len(rec.t))), False
 
 
 def sensor_orientation(rec: Recording, *, filter=None, orientation: str = "auto",
@@ -190,7 +225,7 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
     ``mag_calibrations``: (thigh, shank) MagCalibration pairs (alternative to recordings);
     ``unit_calibrations``: (thigh, shank) unit-file dicts or None.
     """
-    info: dict = {"side": side, "convention": convention}
+    info: dict = {"side": side, "convention": convention, "static_detection": _static_info(static_config)}
     warnings: list[str] = []
     units = unit_calibrations or (None, None)
     segs = ("thigh", "shank")
@@ -202,6 +237,7 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
     # --- 2. magnetometer
     _note(progress, "magnetometer calibration")
     mags = [None, None]
+    mag_mismatch: list[str] = []
     for k in range(2):
         cal = None
         if mag_calibrations is not None and mag_calibrations[k] is not None:
@@ -221,6 +257,18 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
                             f"(6-D orientation)")
         if task[k].mag is not None and (cal is not None or unit_has_mag):
             m = cal.apply(task[k].mag) if cal is not None else task[k].mag
+            why = _mag_mismatch(m, cal.field_norm if cal is not None
+                                else units[k]["sensors"]["mag"].get("field_norm"))
+            if why is not None:
+                # another sensor's figure-eight (or unit file): its offsets turn this sensor's
+                # readings into a field that is not the Earth's, and the 9-D headings were garbage
+                src = "figure-eight fit" if cal is not None else "unit calibration file"
+                mag_mismatch.append(f"{segs[k]} magnetometer calibration does not fit the task recording "
+                                    f"({os.path.basename(task[k].source)}): {why} of the {src} (the other "
+                                    f"sensor's calibration, or another magnetic environment?); magnetometer "
+                                    f"not used (6-D orientation; headings aligned at the start of the task)")
+                info[f"{segs[k]}_mag"] = f"not used: {why}"
+                continue
             if mag_gate is not None:
                 m, keep = mag_cal.gate_norm(m, mag_gate)
                 info[f"{segs[k]}_mag_gated_fraction"] = float(1 - keep.mean())
@@ -231,7 +279,8 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
             else:
                 info[f"{segs[k]}_mag"] = "from unit calibration file"
     use_mag = all(m is not None for m in mags)
-    if not use_mag and any(r.mag is not None for r in task):
+    warnings += mag_mismatch
+    if not use_mag and not mag_mismatch and any(r.mag is not None for r in task):
         warnings.append("magnetometer present but not calibrated for both sensors: not used "
                         "(6-D orientation; headings aligned at the start of the task)")
     if not use_mag:
@@ -315,15 +364,28 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
     if device or not use_mag:
         ref = None
         if device and stand[0] is not None and stand[0].quat is not None and stand[1].quat is not None:
-            st = [_first_still(stand[0], static_config), _first_still(stand[1], static_config)]
+            (st0, ok0), (st1, ok1) = _first_still(stand[0], static_config), _first_still(stand[1], static_config)
+            st = [st0, st1]
+            for seg, ok, r in (("thigh", ok0, stand[0]), ("shank", ok1, stand[1])):
+                if not ok:
+                    warnings.append(f"no still period ≥ {static_config.min_duration_s:g} s in the {seg} standing "
+                                    f"recording ({os.path.basename(r.source)}): headings aligned on its first "
+                                    f"0.5 s, whatever the subject did then")
             D = O.yaw_alignment(alignment.segment_orientation(stand[0].quat[st[0]], q_SB[0]),
                                 alignment.segment_orientation(stand[1].quat[st[1]], q_SB[1]))
             ref = "standing posture"
         else:
-            st = _first_still(task[0], static_config, task[1])
+            st, found = _first_still(task[0], static_config, task[1])
             i0, i1 = st.start, min(st.stop, len(t))
             D = O.yaw_alignment(qB_T[i0:i1], qB_S[i0:i1])
-            ref = f"first still period of the task ({t[i0]:.1f}–{t[i1 - 1]:.1f} s)"
+            if found:
+                ref = f"first still period of the task ({t[i0]:.1f}–{t[i1 - 1]:.1f} s)"
+            else:
+                ref = f"first {t[i1 - 1] - t[i0]:.1f} s of the task (no still period found)"
+                warnings.append(f"no period ≥ {static_config.min_duration_s:g} s where thigh and shank are both "
+                                f"still: the shank heading is aligned to the thigh's over the first "
+                                f"{t[i1 - 1] - t[i0]:.1f} s of the task, whatever the leg did then (ab/adduction "
+                                f"and rotation may be offset); record a still period first")
         qB_S = Q.mul(D, qB_S)
         info["heading_alignment"] = {"reference": ref,
                                      "shank_yaw_change_deg": float(np.degrees(Q.to_euler(D, "ZYX")[0]))}
@@ -358,7 +420,7 @@ def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter=None,
         raise KinefuseError(f"init must be one of {', '.join(ELBOW_INITS)}, not {init!r}")
     units = unit_calibrations or (None, None)
     recs = [_apply_unit(arm, units[0]), _apply_unit(forearm, units[1])]
-    info: dict = {"sequence": sequence, "init": init}
+    info: dict = {"sequence": sequence, "init": init, "static_detection": _static_info(static_config)}
     recs[0], recs[1], origin = _on_one_clock(recs[0], recs[1], info)
     qs = []
     for k, name in enumerate(("arm", "forearm")):
@@ -377,8 +439,15 @@ def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter=None,
     t = t_a[sel]
     qA = qs[0][sel]
     qF = _interp_quat(t_f, qs[1], t)
-    st = _first_still(recs[0], static_config, recs[1])   # both segments still
+    st, found = _first_still(recs[0], static_config, recs[1])   # both segments still
     i0, i1 = st.start, min(st.stop, len(t))
+    warnings: list[str] = []
+    if not found and init != "none":
+        # the reference is the posture of that moment, still or not: every angle is relative to it
+        warnings.append(f"no period ≥ {static_config.min_duration_s:g} s where arm and forearm are both still: "
+                        f"the reference posture (--init {init}) is the first {t[i1 - 1] - t[i0]:.1f} s of the "
+                        f"recording, whatever the elbow did then, and every angle is relative to it; record "
+                        f"a still period (or use --init none)")
     if init == "zero-at-start":
         q_SB_A = Q.identity()
         q_SB_F = Q.normalize(Q.mul(Q.conj(qF[i0:i1]), qA[i0:i1]).mean(axis=0))
@@ -391,7 +460,7 @@ def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter=None,
     qj = joint.joint_quaternion(qA, qF, q_SB_A, q_SB_F)
     ang = joint.elbow_angles(qj, sequence=sequence)
     return JointResult(t, ang, ELBOW_COLUMNS, joint.elbow_convention_text(sequence), qj, info,
-                       arm.warnings + forearm.warnings)
+                       warnings + arm.warnings + forearm.warnings)
 
 
 # ----------------------------------------------------------------------------- outputs
@@ -429,7 +498,7 @@ def _plot(path: str, res: JointResult, cs: cycles.CycleSet, title: str) -> None:
     import textwrap
     conv = "\n".join(textwrap.wrap(res.convention, 110))
     fig.suptitle(f"{title} — {len(cs.curves)} cycles\n{conv}", fontsize=8)
-    fig.savefig(path)
+    fig.savefig(path, format="png")
 
 
 def _csv(path: str, header_comment: str, cols: list[str], data: np.ndarray, fmt="%.4f") -> None:
@@ -440,6 +509,10 @@ def _csv(path: str, header_comment: str, cols: list[str], data: np.ndarray, fmt=
 
 
 REPORT_FILES = ("angles.png", "timeseries.csv", "cycles.csv", "mean_sd.csv", "summary.md")
+#: knee flexion (ISB: + flexion) below this on the mean cycle is not a hyperextension a knee
+#: makes (genu recurvatum rarely exceeds 10-15°): the thigh and shank, or their calibration
+#: recordings, were most likely swapped
+KNEE_HYPEREXTENSION_WARN_DEG = -15.0
 
 
 def report_files(kind: str) -> list[str]:
@@ -447,30 +520,84 @@ def report_files(kind: str) -> list[str]:
     return [f"{kind}_{name}" for name in REPORT_FILES]
 
 
+def _none_if_nan(v: float):
+    return None if not np.isfinite(v) else float(v)
+
+
+def _plausibility(kind: str, cs: cycles.CycleSet, rom: dict) -> list[str]:
+    """Warnings for results that are computed correctly from doubtful inputs."""
+    w = []
+    if len(cs.curves) < 2:
+        w.append(f"only {len(cs.curves)} cycle kept: standard deviations over cycles are not defined "
+                 f"(n/a in the summary, nan in {kind}_mean_sd.csv)")
+    if kind == "knee":
+        lo = float(rom["min_mean"][0])
+        if lo < KNEE_HYPEREXTENSION_WARN_DEG:
+            w.append(f"knee flexion reaches {lo:.0f}° (mean cycle minimum; ISB: flexion positive), a "
+                     f"hyperextension beyond {-KNEE_HYPEREXTENSION_WARN_DEG:.0f}°: are the thigh and shank "
+                     f"recordings (or their calibration recordings) swapped?")
+    return w
+
+
 def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet, *,
                  title: str, inputs: dict, max_cycle_rmse_deg: float = 10.0) -> dict:
     """Write PNG, CSVs and Markdown for ``kind`` ('knee' or 'elbow'); returns the summary.
-    ``max_cycle_rmse_deg``: the rejection threshold ``cs`` was made with (stated in the summary)."""
+    ``max_cycle_rmse_deg``: the rejection threshold ``cs`` was made with (stated in the summary).
+
+    All files are written under temporary names first and renamed when every one is complete:
+    a failure leaves the folder as it was (no report half of this run, half of an earlier one)."""
+    made = not os.path.isdir(out_dir)
     try:
         os.makedirs(out_dir, exist_ok=True)
     except OSError as exc:
         raise KinefuseError(f"cannot create output directory {out_dir}: {exc.strerror}") from None
-    p = lambda name: os.path.join(out_dir, f"{kind}_{name}")  # noqa: E731
+    final = {name: os.path.join(out_dir, f"{kind}_{name}") for name in REPORT_FILES}
+    for path in final.values():
+        if os.path.isdir(path):
+            raise KinefuseError(f"cannot write {path}: a folder of that name is in the way")
+    tmp = {name: os.path.join(out_dir, f".{kind}_{name}.tmp{os.getpid()}") for name in REPORT_FILES}
+    p = tmp.__getitem__
+    try:
+        summary = _write_files(p, kind, res, cs, title=title, inputs=inputs,
+                               max_cycle_rmse_deg=max_cycle_rmse_deg)
+        for name in REPORT_FILES:
+            os.replace(tmp[name], final[name])
+    except BaseException as exc:
+        for path in tmp.values():
+            with contextlib.suppress(OSError):
+                os.unlink(path)
+        if made:
+            with contextlib.suppress(OSError):
+                os.rmdir(out_dir)            # the (now empty) folder this call created
+        if isinstance(exc, OSError):
+            raise KinefuseError(f"cannot write the {kind} report in {out_dir}: "
+                                f"{exc.strerror or exc}") from None
+        raise
+    return summary
+
+
+def _write_files(p, kind: str, res: JointResult, cs: cycles.CycleSet, *, title: str, inputs: dict,
+                 max_cycle_rmse_deg: float) -> dict:
     cols = list(res.columns)
     # time series with the cycle number (−1 outside kept cycles); cycles are numbered among all
-    # detected ones, as the summary names the rejected ones
-    cyc_idx = np.full(len(res.t), -1.0)
+    # detected ones, as the summary names the rejected ones.  Cycle numbers are counts and
+    # written as integers ("3", not "3.0000"); the percent grid (0, 1, …, 100 % of the cycle)
+    # with the fewest digits that state it exactly
+    n_ang = len(cols)
+    cyc_idx = np.full(len(res.t), -1, dtype=np.int64)
     for k in cs.kept:
         i0, i1 = cs.bounds[k]
         cyc_idx[i0:i1] = cs.number(k)
     _csv(p("timeseries.csv"), res.convention, ["t_s"] + cols + ["cycle"],
-         np.column_stack([res.t, res.angles, cyc_idx]))
+         np.column_stack([res.t, res.angles, cyc_idx]), fmt=["%.4f"] * (1 + n_ang) + ["%d"])
     pct = np.linspace(0, 100, cycles.N_POINTS)
     rows = [np.column_stack([np.full(len(pct), cs.number(k)), pct, c]) for k, c in zip(cs.kept, cs.curves)]
-    _csv(p("cycles.csv"), res.convention, ["cycle", "percent"] + cols, np.vstack(rows))
-    msd = np.column_stack([pct] + [x for j in range(3) for x in (cs.mean[:, j], cs.sd[:, j])])
+    _csv(p("cycles.csv"), res.convention, ["cycle", "percent"] + cols, np.vstack(rows),
+         fmt=["%d", "%.6g"] + ["%.4f"] * n_ang)
+    msd = np.column_stack([pct] + [x for j in range(n_ang) for x in (cs.mean[:, j], cs.sd[:, j])])
     _csv(p("mean_sd.csv"), res.convention,
-         ["percent"] + [f"{c.replace('_deg', '')}_{s}_deg" for c in cols for s in ("mean", "sd")], msd)
+         ["percent"] + [f"{c.replace('_deg', '')}_{s}_deg" for c in cols for s in ("mean", "sd")], msd,
+         fmt=["%.6g"] + ["%.4f"] * (2 * n_ang))
     _plot(p("angles.png"), res, cs, title)
     rom = cs.rom()
     summary = {
@@ -479,16 +606,22 @@ def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet,
         "n_cycles_kept": len(cs.curves),
         "max_cycle_rmse_deg": float(max_cycle_rmse_deg),
         "rejected_cycles": [{"cycle": cs.number(k), "rmse_deg": e} for k, e in cs.rejected],
+        # a standard deviation over one cycle is not defined: null (n/a), not 0
         "cycle_duration_s": {"mean": float(cs.durations_s.mean()),
-                             "sd": float(cs.durations_s.std(ddof=1)) if len(cs.durations_s) > 1 else 0.0},
-        "range_of_motion_deg": {c: {"mean": float(rom["rom_mean"][j]), "sd": float(rom["rom_sd"][j]),
+                             "sd": float(cs.durations_s.std(ddof=1)) if len(cs.durations_s) > 1 else None},
+        "range_of_motion_deg": {c: {"mean": float(rom["rom_mean"][j]), "sd": _none_if_nan(rom["rom_sd"][j]),
                                     "max_mean": float(rom["max_mean"][j]),
                                     "min_mean": float(rom["min_mean"][j])} for j, c in enumerate(cols)},
-        "processing": res.info, "warnings": list(res.warnings),
+        "processing": res.info, "warnings": list(res.warnings) + _plausibility(kind, cs, rom),
         "files": report_files(kind),
     }
     _markdown(p("summary.md"), summary)
     return summary
+
+
+def _sd(v, fmt: str) -> str:
+    """A standard deviation for text: ``n/a`` when not defined (one cycle)."""
+    return "n/a" if v is None else format(v, fmt)
 
 
 def _fmt(v) -> str:
@@ -510,13 +643,13 @@ def _markdown(path: str, s: dict) -> None:
           f" (cycles deviating > {s['max_cycle_rmse_deg']:g}° RMS from the mean flexion curve are rejected)"
           + (f"; edge cycles dropped: {s['n_edge_cycles_dropped'] // 2} at each end (--drop-edge-cycles)"
              if s["n_edge_cycles_dropped"] else ""),
-          f"- duration: {s['cycle_duration_s']['mean']:.2f} ± {s['cycle_duration_s']['sd']:.2f} s"]
+          f"- duration: {s['cycle_duration_s']['mean']:.2f} ± {_sd(s['cycle_duration_s']['sd'], '.2f')} s"]
     for r in s["rejected_cycles"]:
         L.append(f"- rejected cycle {r['cycle']}: {r['rmse_deg']:.1f}° RMS from the mean")
     L += ["", "## Range of motion (per cycle, mean ± SD over cycles)", "",
           "| angle | ROM (°) | max (°) | min (°) |", "|---|---|---|---|"]
     for c, v in s["range_of_motion_deg"].items():
-        L.append(f"| {c.replace('_deg', '').replace('_', ' ')} | {v['mean']:.1f} ± {v['sd']:.1f} | "
+        L.append(f"| {c.replace('_deg', '').replace('_', ' ')} | {v['mean']:.1f} ± {_sd(v['sd'], '.1f')} | "
                  f"{v['max_mean']:.1f} | {v['min_mean']:.1f} |")
     L += ["", "## Processing", ""]
     for k, v in s["processing"].items():
