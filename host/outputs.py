@@ -44,6 +44,8 @@ def check_output_dir(path, force: bool, names=None, *, pattern: str | None = Non
                      option: str = "--out") -> Path:
     """Folder ``path`` may receive the files ``names`` (or any file matching ``pattern``): it is
     not a file, and holds none of them yet unless ``force``."""
+    if not str(path).strip():     # Path("") is the current folder
+        raise KinefuseError(f"{option} is empty: give a folder")
     out = Path(path)
     if out.exists() and not out.is_dir():
         raise KinefuseError(f"{option} {out} is a file, not a folder")

@@ -37,6 +37,13 @@ def read(path: str, **_) -> Recording:
                     metadata={"comments": [p.lstrip("# ") for p in tab.preamble if p]})
     for name, cols in GROUPS.items():
         present = [tab.has(c) for c in cols]
+        if name != "quat" and not any(present):
+            # e.g. gyr_x_dps: another unit in the name; read as "no gyroscope data" before
+            other = [h for h in tab.header if h and h.startswith(f"{name}_x_")]
+            if other:
+                raise ReaderError(path, f"column {other[0]}: this format takes SI units in the column "
+                                        f"names ({', '.join(cols)}); convert the values and rename "
+                                        f"the columns", 1 + len(tab.preamble))
         if any(present) and not all(present):
             raise ReaderError(path, f"incomplete {name} columns (need all of {', '.join(cols)})",
                               1 + len(tab.preamble))

@@ -242,3 +242,12 @@ def test_run_writes_a_simulator_mat_s_own_sample_times(tmp_path):
     assert r.returncode == 0, r.stderr
     x = np.loadtxt(out, delimiter=",", skiprows=2)
     assert np.allclose(x[:, 0], rec.t, rtol=0, atol=1e-6) and x[-1, 0] > 24.9
+
+
+def test_an_empty_output_folder_is_refused():
+    """check_output_dir("") was the current folder (export and report guarded it themselves)."""
+    from kinefuse.host.errors import KinefuseError
+    from kinefuse.host.outputs import check_output_dir
+    for empty in ("", "  "):
+        with pytest.raises(KinefuseError, match="--out is empty"):
+            check_output_dir(empty, force=True)

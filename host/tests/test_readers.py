@@ -274,6 +274,12 @@ def test_kinefuse_csv_roundtrip_and_errors(tmp_path):
     with pytest.raises(ReaderError) as e:
         read_recording(write(tmp_path, "dup.csv", "t_s,acc_x_mps2,acc_y_mps2,acc_z_mps2\n0,0,0,9.8\n0,0,0,9.8\n"))
     one_line(e, "dup.csv", "line 3", "repeats")
+    # a gyroscope in deg/s under its own name was read as "no gyroscope data"
+    deg = open(p).read().replace("gyr_x_radps", "gyr_x_dps").replace("gyr_y_radps", "gyr_y_dps") \
+        .replace("gyr_z_radps", "gyr_z_dps")
+    with pytest.raises(ReaderError) as e:
+        read_recording(write(tmp_path, "deg.csv", deg))
+    one_line(e, "deg.csv", "column gyr_x_dps", "gyr_x_radps")
 
 
 def test_unknown_format_and_missing_file(tmp_path):
