@@ -373,6 +373,8 @@ def to_json(results: Results, filter_arg: str, impl: str, main: list[Spec],
         out = {"filter": main[0].name, "impl": impl, **_block(results, main[0].label)}
     if compare:
         out["compare"] = {s.name: _block(results, s.label) for s in compare}
+    out["units"] = ("deg: RMSE of the total, heading and inclination error over each trial's "
+                    "movement phases; mean = over trials")
     return out
 
 

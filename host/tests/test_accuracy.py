@@ -76,7 +76,7 @@ def test_json_exact_shape_and_known_errors(kf):
     assert code == 0, err
     assert len(out.strip().splitlines()) == 1
     d = json.loads(out)
-    assert set(d) == {"filter", "impl", "trials", "mean"}
+    assert set(d) == {"filter", "impl", "trials", "mean", "units"} and d["units"].startswith("deg: RMSE")
     assert (d["filter"], d["impl"]) == ("tilted", "ref")
     assert list(d["trials"]) == NAMES
     for s in list(d["trials"].values()) + [d["mean"]]:
@@ -113,7 +113,7 @@ def test_compare_side_by_side_in_parallel(kf):
                         "--compare", ",".join(["tilted"] + comps), "--json", "--jobs", "2")
     assert code == 0, err
     d = json.loads(out)
-    assert set(d) == {"filter", "impl", "trials", "mean", "compare"}
+    assert set(d) == {"filter", "impl", "trials", "mean", "compare", "units"}
     # acos near 1 resolves ~1e-6°: the published formula's floor, far below any real error
     assert d["mean"] == pytest.approx({"total": 0.0, "heading": 0.0, "inclination": 0.0}, abs=1e-5)
     assert set(d["compare"]) == {"tilted", *comps}
