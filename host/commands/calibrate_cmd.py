@@ -306,7 +306,7 @@ def run_gyro(args) -> int:
         cal = gyro.bias_from_static(rec.t, rec.gyr, rec.acc, cfg, source=args.input)
     _save(args, "gyro", cal.M, cal.b, method=cal.method, n_windows=cal.n_windows,
           n_samples=cal.n_samples, window_spread=cal.window_spread, residual_rms=cal.residual_rms)
-    text = [f"gyroscope calibration ({cal.method}): {cal.n_windows} window{"" if cal.n_windows == 1 else "s"}, {cal.n_samples} samples",
+    text = [f"gyroscope calibration ({cal.method}): {cal.n_windows} window{'' if cal.n_windows == 1 else 's'}, {cal.n_samples} samples",
             f"bias = {', '.join(f'{v:.6f}' for v in cal.b)} rad/s "
             f"({', '.join(f'{np.degrees(v):.3f}' for v in cal.b)} °/s)",
             (f"spread of window means = {cal.window_spread:.6f} rad/s" if np.isfinite(cal.window_spread)
