@@ -30,8 +30,9 @@ def register(sub) -> None:
     p.add_argument("--filter", metavar="NAME",
                    help="kinefuse filter or competitor (vqf, imufusion, ...); default: the "
                         "default kinefuse filter")
-    p.add_argument("--impl", default="ref", choices=accuracy.IMPLS,
-                   help="implementation of a kinefuse filter (default: ref)")
+    p.add_argument("--impl", default=None, choices=accuracy.IMPLS,
+                   help="implementation of a kinefuse filter (default: ref for a BROAD trial, f32 "
+                        "-- the generated C, 1000x faster -- for a recording)")
     p.add_argument("--param", action="append", metavar="KEY=VALUE",
                    help="filter parameter override, repeatable")
     p.add_argument("--out", metavar="PNG", help="output file (default: <trial>_<filter>_<impl>.png, a competitor's "
@@ -153,10 +154,12 @@ def run(args) -> int:
     name = (args.filter or "").strip() or accuracy.default_filter_name()
     if name == "all":
         raise KinefuseError("plot takes one filter, not 'all'")
-    spec = accuracy.resolve(name, args.impl, params, impl_given=True)[0]
     _check_window_args(args)
     trial_file = resolve_trial(args.input)
-    if trial_file.suffix.lower() not in broad.TRIAL_SUFFIXES:
+    recording = trial_file.suffix.lower() not in broad.TRIAL_SUFFIXES
+    impl = args.impl or ("f32" if recording else "ref")
+    spec = accuracy.resolve(name, impl, params, impl_given=args.impl is not None)[0]
+    if recording:
         return _plot_recording(args, spec, trial_file)
     if args.unit is not None:
         raise KinefuseError("--unit applies to .kfr unit recordings, not to BROAD trials")

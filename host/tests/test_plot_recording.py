@@ -57,7 +57,7 @@ def test_lost_samples_and_status_flags():
 def test_plot_of_a_unit_recording(run, kfr_files, tmp_path):
     one, two = kfr_files
     out = tmp_path / "one.png"
-    code, stdout, err = run("plot", "--input", one, "--impl", "f32", "--out", out)
+    code, stdout, err = run("plot", "--input", one, "--out", out)     # a recording: f32 by default
     assert code == 0, err
     assert stdout.strip() == str(out) and out.stat().st_size > 20_000
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
