@@ -57,6 +57,7 @@ typedef struct {
     uint64_t busy_us;            /* time spent working in kf_app_poll */
     float sensor_hz, raw_hz, ori_hz;
     uint16_t load;               /* d% */
+    uint32_t frames_dropped0;    /* tx.frames_dropped at the previous status (TX_OVERFLOW) */
 } kf_rates;
 
 typedef struct kf_app {

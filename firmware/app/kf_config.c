@@ -57,18 +57,18 @@ static int filter_check(kf_app *app, int32_t k, const float *vec)
 }
 
 /* KF_UNIT_STATUS_FLAGS_CALIBRATED: sensor 0's map, or in two-sensor mode sensor 1's, is not
- * the default */
+ * the default.  Compared as float values (never NaN: range-checked), so -0.0 is the default 0. */
 static void update_calibrated_flag(kf_app *app)
 {
     app->calibrated = 0u;
     for (uint32_t i = KF_P_CALIB_FIRST; i < KF_P_FILTER_FIRST; i++) {
-        if (app->values[i].u != kf_param_table[i].def.u) {
+        if (app->values[i].f != kf_param_table[i].def.f) {
             app->calibrated = 1u;
         }
     }
     if (app->values[KF_P_JOINT_ID].u != 0u) {
         for (uint32_t i = KF_P_CALIB2_FIRST; i < KF_P_CALIB2_FIRST + KF_GEN_CALIB2_PARAM_COUNT; i++) {
-            if (app->values[i].u != kf_param_table[i].def.u) {
+            if (app->values[i].f != kf_param_table[i].def.f) {
                 app->calibrated = 1u;
             }
         }

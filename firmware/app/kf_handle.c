@@ -66,6 +66,11 @@ static void remember_timestamp(kf_app *app, int is_signed)
 
 void kf_app_set_key(kf_app *app, const uint8_t key[32], uint64_t timestamp)
 {
+    /* the streams are cleared below: keep the newest timestamp accepted so far as the floor,
+     * or frames accepted since the last save could be replayed (same key set again) */
+    if (app->signing.timestamp > app->sign_floor) {
+        app->sign_floor = app->signing.timestamp;
+    }
     memcpy(app->key, key, KF_STORE_KEY_LEN);
     app->key_set = 0u;
     for (uint32_t i = 0; i < KF_STORE_KEY_LEN; i++) {
@@ -237,7 +242,7 @@ static void handle_command(kf_app *app, const mavlink_message_t *msg, int truste
         app->streaming = (uint8_t)(c.param1 >= 0.5f);
         if (app->streaming && c.param2 >= 0.5f) {
             app->sample_counter = 0u;
-            app->cnt_ori = app->cnt_hr = app->cnt_aq = 0u;
+            app->cnt_ori = app->cnt_hr = app->cnt_aq = app->cnt_eff = 0u;
         }
         result = MAV_RESULT_ACCEPTED;
         break;
@@ -324,6 +329,7 @@ static void handle_hil(kf_app *app, const mavlink_message_t *msg)
     }
     if (isnan(m.temperature)) {
         m.temperature = 0.0f;
+        m.fields_updated &= ~0x1000u;  /* no measurement: 0 must not be flagged valid */
     }
     memset(&s, 0, sizeof s);
     s.time_us = m.time_usec;

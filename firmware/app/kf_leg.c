@@ -86,7 +86,6 @@ void kf_leg_reset(kf_app *app)
     app->leg_on = (uint8_t)(app->two_sensors && app->values[KF_P_EFF_RATE_HZ].u != 0u);
     app->eff_status = 0u;
     app->fresh2 = 0u;
-    app->cnt_eff = 0u;
     memset(&app->lout, 0, sizeof app->lout);
     leg_vector(app, -1, 0.0f, vec);
     (void)kf_gen_leg_init(&app->leg, vec);   /* validated when the values were accepted */

@@ -318,7 +318,10 @@ void kf_app_sample(kf_app *app, const kf_sample *s)
             send_joint_angle(app, s->time_us, counter);   /* at the orientation rate */
         }
     }
-    if (app->leg_on && (hil || (app->streaming && due(app->div_eff, &app->cnt_eff)))) {
+    /* the KF_EFFORTS decimation runs like KF_ORIENTATION's, also while the leg EKF is off or
+     * restarts, so that at the same rate both go out with the same samples */
+    int eff_due = !hil && app->streaming && due(app->div_eff, &app->cnt_eff);
+    if (app->leg_on && (hil || eff_due)) {
         kf_leg_send(app, s->time_us, counter);
     }
     if (app->streaming && due(app->div_hr, &app->cnt_hr)) {

@@ -72,7 +72,8 @@ static uint32_t status_flags(const kf_app *app)
     f |= app->streaming ? KF_UNIT_STATUS_FLAGS_STREAMING : 0u;
     f |= app->hil ? KF_UNIT_STATUS_FLAGS_HIL : 0u;
     f |= app->calibrated ? KF_UNIT_STATUS_FLAGS_CALIBRATED : 0u;
-    f |= app->tx.frames_dropped != 0u ? KF_UNIT_STATUS_FLAGS_TX_OVERFLOW : 0u;
+    /* "since the previous status": frames_dropped itself counts since boot */
+    f |= app->tx.frames_dropped != app->rates.frames_dropped0 ? KF_UNIT_STATUS_FLAGS_TX_OVERFLOW : 0u;
     f |= app->store.errors != 0u ? KF_UNIT_STATUS_FLAGS_SENSOR_FAULT : 0u;
     return f;
 }

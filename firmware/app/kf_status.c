@@ -27,6 +27,7 @@ void kf_status_tick(kf_app *app, uint64_t now)
     (void)kf_send_heartbeat(app);
     (void)kf_send_unit_status(app);
     (void)kf_send_sys_status(app);
+    r->frames_dropped0 = app->tx.frames_dropped;
     /* next second on the device clock; after a stall, skip what was missed */
     app->next_status_us += KF_STATUS_PERIOD_US;
     if (app->next_status_us <= now) {
