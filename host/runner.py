@@ -6,7 +6,9 @@ onto a filter's input record and returns the orientation (and status) per input 
 from __future__ import annotations
 
 import dataclasses
+import os
 import types
+from pathlib import Path
 
 import numpy as np
 
@@ -100,7 +102,9 @@ def run_filter(name: str, impl: str, trial, params: dict[str, float] | None = No
     q = np.asarray(out["q"], dtype=np.float64)
     status = {k: np.asarray(v).reshape(len(q), -1).squeeze(axis=1)
               for k, v in out.items() if k != "q" and np.asarray(v).reshape(len(q), -1).shape[1] == 1}
-    units = {v.name: v.unit for v in est.outputs}
+    # a flag has no unit: say what its values are (rest (0/1) in the CSV's comment line)
+    units = {v.name: v.unit or ("(0/1)" if getattr(v, "type", "") == "bool" else "")
+             for v in est.outputs}
     return FilterResult(q=q, status=status, outputs=out, units=units)
 
 
@@ -226,11 +230,53 @@ def write_estimates_csv(path, t, res: FilterResult, comment: str, status: bool =
                 notes.append(f"{', '.join(k + '_0..2' for k in vecs)} = x, y, z of the sensor frame")
             comment = (f"{comment}; status columns: {', '.join(described)}"
                        + (f" ({'; '.join(notes)})" if notes else ""))
-    try:
-        with open(path, "w") as f:
+    write_csv(path, comment, header, cols)
+    return n
+
+
+#: the t column keeps 15 significant digits: a time stamp in s since the epoch (1.7e9 s) or a
+#: unit's clock after weeks of uptime stays resolved to the µs (9 digits, as for the estimates,
+#: wrote 1733250000.03 s as 1.73325e+09 and every row of a second got the same t)
+T_FMT = "%.15g"
+VALUE_FMT = "%.9g"
+
+
+def write_csv(path, comment: str, header: list[str], cols: list[np.ndarray]) -> None:
+    """``# comment`` line, ``header`` line, one row per sample: the first column (t, s) with
+    :data:`T_FMT`, the others with :data:`VALUE_FMT`.  A regular file is written under a
+    temporary name and renamed into place, so a failed write (full disk, interrupt) leaves no
+    half-written CSV and an earlier file as it was; KinefuseError (one line) on failure."""
+    given = Path(path)
+    data = np.column_stack(cols) if cols else np.zeros((0, 0))
+    fmts = [T_FMT] + [VALUE_FMT] * (data.shape[1] - 1)
+
+    def write(target):
+        with open(target, "w") as f:
             f.write(f"# {comment}\n")
             f.write(",".join(header) + "\n")
-            np.savetxt(f, np.column_stack(cols), delimiter=",", fmt="%.9g")
+            np.savetxt(f, data, delimiter=",", fmt=fmts)
+
+    try:
+        if given.exists() and not given.is_file():     # /dev/stdout, a FIFO: write it directly
+            write(given)
+            return
+        dest = Path(os.path.realpath(given))           # through a symlink: replace its target
+        tmp = dest.with_name(f".{dest.name}.{os.getpid()}.tmp")
+        try:
+            open(tmp, "x").close()
+        except PermissionError:
+            if not dest.exists():
+                raise
+            write(dest)             # a writable file in a folder that is not: in place
+            return
+        try:
+            write(tmp)
+            if dest.exists():
+                import shutil
+                shutil.copymode(dest, tmp)          # --force keeps the file's permissions
+            os.replace(tmp, dest)
+        except BaseException:
+            tmp.unlink(missing_ok=True)
+            raise
     except OSError as exc:
-        raise KinefuseError(f"cannot write {path}: {exc.strerror}") from None
-    return n
+        raise KinefuseError(f"cannot write {path}: {exc.strerror or exc}") from None

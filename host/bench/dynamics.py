@@ -97,6 +97,13 @@ def run(args) -> int:
     return 0
 
 
+#: what the pendulum table's numbers are (RMS over the samples after the first, as Annex A)
+PENDULUM_UNITS = ("RMS z over its components x0, y0 (m), θ1, θ2 (rad); RMS ż over ẋ0, ẏ0 (m/s), "
+                  "θ̇1, θ̇2 (rad/s); RMS F_e over the four efforts (N·m, N, N, N·m); RMS τ1 in "
+                  "N·m; RT: real-time factor (trial duration / computing time); ops: operations "
+                  "per filter step")
+
+
 def _f(v, fmt="{:.4f}"):
     return "-" if v is None else fmt.format(v)
 
@@ -107,7 +114,8 @@ def _print(r: dict) -> None:
     con = Console()
     if "pendulum" in r:
         t = Table(title="Double pendulum, seed 000 Annex A (Table A.1 trial, 3 s at 100 Hz): "
-                        "reference (float64 Python) | generated float32 C")
+                        "reference (float64 Python) | generated float32 C",
+                  caption=PENDULUM_UNITS, caption_justify="left")
         for c in ("int.", "Φ", "Σ", "sens.", "RMS z", "RMS ż", "RMS F_e", "RMS τ1", "RT ref",
                   "RMS F_e f32", "RT f32 C", "ops"):
             t.add_column(c, justify="right")

@@ -28,7 +28,7 @@ def register(sub) -> None:
                         "(default: ./kinefuse-demo)")
     p.add_argument("--budget", type=float, default=40.0, metavar="S",
                    help="start no new estimator after this many seconds; started ones finish "
-                        "(default: 40)")
+                        "(default: 40; inf: no budget)")
     p.add_argument("--jobs", type=int, metavar="N", help="worker processes (default: CPUs)")
     p.set_defaults(func=run)
 
@@ -64,8 +64,9 @@ def run(args) -> int:
     from rich.table import Table
 
     out_dir = Path(args.out)
-    if args.budget <= 0:
-        raise KinefuseError("--budget must be positive (seconds)")
+    if not args.budget > 0:          # NaN too: it compares false, and every estimator ran
+        raise KinefuseError(f"--budget must be a positive number of seconds (inf: no budget), "
+                            f"got {args.budget:g}")
     if args.jobs is not None and args.jobs < 1:
         raise KinefuseError("--jobs must be at least 1")
     err = Console(stderr=True)
@@ -97,7 +98,7 @@ def run(args) -> int:
     for label, why in res.failures.items():
         err.print(f"[yellow]not available:[/yellow] {label}: {why}")
     if res.skipped:
-        err.print(f"[yellow]skipped (time budget {args.budget:.0f} s):[/yellow] "
+        err.print(f"[yellow]skipped (time budget {args.budget:g} s):[/yellow] "
                   f"{', '.join(res.skipped)}; run them with kinefuse bench accuracy")
     if not res.specs:
         raise KinefuseError("every estimator failed; see the messages above")
@@ -125,7 +126,9 @@ def run(args) -> int:
 
     payload = {"data": "bundled BROAD excerpt", "trials": res.trial_names,
                "estimators": {s.label: accuracy._block(res, s.label) for s in res.specs},
-               "not_available": res.failures, "skipped": res.skipped}
+               "not_available": res.failures, "skipped": res.skipped,
+               "units": "deg: RMSE of the total, heading and inclination error over each "
+                        "trial's movement phases; mean = over trials"}
     json_path = out_dir / "accuracy.json"
     plot_spec = next((s for s in res.specs if s.kind == "kinefuse"), res.specs[0])
     try:

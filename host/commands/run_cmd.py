@@ -29,8 +29,9 @@ def register(sub):
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter override")
     p.add_argument("--preset", help="named parameter set (see `kinefuse filters`)")
     p.add_argument("--status", action="store_true", help="append the filter's status outputs")
-    p.add_argument("--frame", default="enu", choices=runner.FRAMES,
-                   help="earth frame of the written quaternions (default enu, as BROAD)")
+    p.add_argument("--frame", default=None, choices=runner.FRAMES,
+                   help="earth frame of the written quaternions (default enu, as BROAD; IMU "
+                        "filters only)")
     p.add_argument("--fs", type=argtypes.real(0.0, math.inf, lo_open=True, hi_open=True), default=None, metavar="HZ",
                    help="sampling rate of a seed-004 Arduino CSV (it has no time column; default 35)")
     add_force_arg(p, "the output CSV")
@@ -46,9 +47,19 @@ def run(args) -> int:
     prm = runner.parse_params(args.param)
     from kinefuse.host import angle_series
     if angle_series.is_angle_filter(name):
+        if args.frame is not None:
+            raise KinefuseError(f"--frame applies to the quaternions of the IMU filters; {name!r} "
+                                f"writes a joint angle, which has no earth frame")
         return _run_angle(name, args, prm)
+    if name not in runner.imu_filter_names():
+        from kinefuse.codegen import estimators
+        raise KinefuseError(f"filter {name!r} takes {estimators.get(name).inputs.name} inputs, "
+                            f"which run does not read; run takes IMU filters "
+                            f"({', '.join(runner.imu_filter_names())}) and the joint-angle "
+                            f"smoothers ({', '.join(angle_series.angle_filter_names())})")
+    args.frame = args.frame or "enu"
     kind = angle_series.sniff(args.input)
-    if kind is not None and name in runner.imu_filter_names():
+    if kind is not None:
         raise KinefuseError(f"filter {name!r} takes IMU samples, but {args.input} is a joint-angle "
                             f"series ({kind}); smooth it with "
                             f"{', '.join(angle_series.angle_filter_names())}")
@@ -61,7 +72,12 @@ def run(args) -> int:
     runner.write_estimates_csv(args.out, runner.output_times(trial), res, f"kinefuse run --filter {name} --impl {args.impl}; t in s; "
                                f"quaternion w,x,y,z sensor->earth, {runner.FRAME_TEXT[args.frame]}; "
                                f"input {args.input}", status=args.status, frame=args.frame)
-    print(f"wrote {n} rows to {args.out} ({name}, {args.impl})", file=sys.stderr)
+    msg = f"wrote {n} rows to {args.out} ({name}, {args.impl})"
+    rejected = runner.rejected_count(res)
+    if rejected:        # as replay says it: a sample or reading the filter could not use
+        msg += (f"; {rejected} sample(s) or sensor reading(s) rejected by the filter (non-finite "
+                f"or out of range: state kept)")
+    print(msg, file=sys.stderr)
     return 0
 
 
@@ -108,13 +124,21 @@ def _run_angle(name: str, args, prm) -> int:
                                 f"{runner.default_filter()})")
     series = angle_series.load(path, fs=args.fs)
     out = angle_series.run(name, args.impl, series, prm, args.preset)
+    n_rows = len(series.t)
+    if n_rows and int(np.asarray(out["rejected"]).reshape(n_rows, -1)[-1, 0]) == n_rows:
+        # every sample kept the initial state: the CSV would hold 0° throughout
+        hint = (f"; at --fs {args.fs:g} Hz a step is {1.0 / args.fs:g} s" if args.fs is not None
+                else "")
+        raise KinefuseError(f"{path}: the filter rejected every one of the {n_rows} samples "
+                            f"(angle beyond ±3.2 rad or time step not in (0, 0.2] s{hint}); "
+                            f"nothing was filtered")
     cols = ("t s, angle_deg deg, rate_deg_s deg/s" + (", omega_rad_s rad/s (oscillator "
             "frequency)" if "omega" in out else "") + (", rejected (cumulative count)"
                                                         if args.status else ""))
-    n = angle_series.write_csv(args.out, series.t, out,
-                               f"kinefuse run --filter {name} --impl {args.impl}; {cols}; filtered "
-                               f"joint angle; time base {series.time_base}; input {path} "
-                               f"({series.fmt})", status=args.status)
+    n = _write_angle_csv(args.out, series.t, out,
+                         f"kinefuse run --filter {name} --impl {args.impl}; {cols}; filtered "
+                         f"joint angle; time base {series.time_base}; input {path} "
+                         f"({series.fmt})", status=args.status)
     rejected = int(out["rejected"][-1, 0]) if n else 0
     if rejected:
         print(f"kinefuse: {rejected} sample(s) rejected by the filter (angle beyond ±3.2 rad or "
@@ -124,3 +148,24 @@ def _run_angle(name: str, args, prm) -> int:
         print(f"kinefuse: {missing} sample(s) without an angle (predicted only)", file=sys.stderr)
     print(f"wrote {n} rows to {args.out} ({name}, {args.impl})", file=sys.stderr)
     return 0
+
+
+def _write_angle_csv(path, t, out: dict, comment: str, status: bool = False) -> int:
+    """The smoothed series as ``angle_series.write_csv`` lays it out (header
+    ``t,angle_deg,rate_deg_s[,omega_rad_s][,rejected]``), written by :func:`runner.write_csv`:
+    t with 15 significant digits (a time stamp since the epoch keeps its fraction) and no
+    half-written file on a failed write."""
+    from kinefuse.host import angle_series
+    n = len(t)
+    cols, header = [np.asarray(t, float)], ["t"]
+    for key, (col, scale) in angle_series.COLUMNS.items():
+        if key in out:
+            cols.append(np.asarray(out[key], float).reshape(n) * scale)
+            header.append(col)
+    if status:
+        for key, v in out.items():
+            if key not in angle_series.COLUMNS:
+                cols.append(np.asarray(v, float).reshape(n))
+                header.append(key)
+    runner.write_csv(path, comment, header, cols)
+    return n
