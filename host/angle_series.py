@@ -194,26 +194,3 @@ def run(name: str, impl: str, series_or_inputs, params: dict | None = None,
 #: written columns: output name -> (column, scale from the filter's SI unit)
 COLUMNS = {"angle": ("angle_deg", 180.0 / math.pi), "rate": ("rate_deg_s", 180.0 / math.pi),
            "omega": ("omega_rad_s", 1.0)}
-
-
-def write_csv(path, t, out: dict, comment: str, status: bool = False) -> int:
-    """``# comment`` line, header ``t,angle_deg,rate_deg_s[,omega_rad_s][,rejected]``."""
-    n = len(t)
-    cols, header = [np.asarray(t, float)], ["t"]
-    for key, (col, scale) in COLUMNS.items():
-        if key in out:
-            cols.append(np.asarray(out[key], float).reshape(n) * scale)
-            header.append(col)
-    if status:
-        for key, v in out.items():
-            if key not in COLUMNS:
-                cols.append(np.asarray(v, float).reshape(n))
-                header.append(key)
-    try:
-        with open(path, "w") as f:
-            f.write(f"# {comment}\n")
-            f.write(",".join(header) + "\n")
-            np.savetxt(f, np.column_stack(cols), delimiter=",", fmt="%.9g")
-    except OSError as exc:
-        raise KinefuseError(f"cannot write {path}: {exc.strerror}") from None
-    return n

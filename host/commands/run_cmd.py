@@ -151,8 +151,8 @@ def _run_angle(name: str, args, prm) -> int:
 
 
 def _write_angle_csv(path, t, out: dict, comment: str, status: bool = False) -> int:
-    """The smoothed series as ``angle_series.write_csv`` lays it out (header
-    ``t,angle_deg,rate_deg_s[,omega_rad_s][,rejected]``), written by :func:`runner.write_csv`:
+    """The smoothed series: header ``t,angle_deg,rate_deg_s[,omega_rad_s][,rejected]`` (degrees
+    from the filter's radians, ``angle_series.COLUMNS``), written by :func:`runner.write_csv`:
     t with 15 significant digits (a time stamp since the epoch keeps its fraction) and no
     half-written file on a failed write."""
     from kinefuse.host import angle_series
