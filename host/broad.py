@@ -215,6 +215,19 @@ def _read_mat(path: Path) -> dict:
 
 
 def _read_npz(path: Path) -> dict:
+    # np.load takes anything that is neither a zip nor an .npy for a pickle (and with
+    # allow_pickle=False says so): tell what the file is before it gets there
+    try:
+        with open(path, "rb") as fh:
+            head = fh.read(6)
+    except OSError as exc:
+        raise KinefuseError(f"cannot read {path}: {exc.strerror or exc}") from None
+    if not head:
+        raise KinefuseError(f"{path}: not a readable .npz file (the file is empty)")
+    if head == b"\x93NUMPY":
+        raise KinefuseError(f"{path}: a single .npy array, not an .npz archive of trial arrays")
+    if head[:4] not in (b"PK\x03\x04", b"PK\x05\x06"):
+        raise KinefuseError(f"{path}: not a readable .npz file (not a zip archive)")
     try:
         with np.load(path, allow_pickle=False) as z:
             raw = {k: z[k] for k in z.files}

@@ -281,3 +281,40 @@ def test_builds_the_right_image_for_each_target(monkeypatch):
     f32_updates = [n for n in f4 if n.endswith("_f32_update")]
     assert {"madgwick_f32_update", "flagship_f32_update"} <= set(f32_updates)
     assert "vmul.f32" in f4["madgwick_f32_update"] and "__aeabi_f" not in f4["madgwick_f32_update"]
+
+
+def test_pyocd_flashes_the_image_named_not_a_sibling_hex(capsys, tmp_path):
+    # --image fw.elf / fw.bin with an (older) fw.hex beside it: the .hex was flashed and checked
+    import struct
+    ph = struct.pack("<IIIIIIII", 1, 52 + 32, 0x08000000, 0x08000000, len(VECTORS), len(VECTORS), 5, 4)
+    head = b"\x7fELF" + bytes([1, 1, 1]) + bytes(9) + struct.pack("<HHIIIIIHHHHHH", 2, 40, 1, 0x08000101, 52, 0,
+                                                                     0x5000400, 52, 32, 1, 0, 0, 0)
+    elf = tmp_path / "fw.elf"
+    elf.write_bytes(head + ph + VECTORS)
+    (tmp_path / "fw.bin").write_bytes(VECTORS)
+    (tmp_path / "fw.hex").write_text(ihex(0x0, MPS2_VECTORS))      # another board's, stale
+    code, out, err = run(capsys, "--image", str(elf), "--mcu", "stm32f411re", "--dry-run", "--json")
+    assert code == 0, err
+    assert json.loads(out)["command"][-3:] == ["--format", "elf", str(elf)]
+    code, out, err = run(capsys, "--image", str(tmp_path / "fw.bin"), "--mcu", "stm32f411re",
+                         "--address", "0x08000000", "--dry-run", "--json")
+    assert code == 0, err
+    assert json.loads(out)["command"][-4:] == ["bin", "-a", "0x08000000", str(tmp_path / "fw.bin")]
+    # the .hex named is the one checked and flashed
+    code, _, err = run(capsys, "--image", str(tmp_path / "fw.hex"), "--mcu", "stm32f411re", "--dry-run")
+    assert code == 2 and "outside stm32f411re's flash" in err
+
+
+def test_an_image_that_is_a_directory_is_named_so(capsys, tmp_path):
+    d = tmp_path / "fw.hex"
+    d.mkdir()
+    code, _, err = run(capsys, "--image", str(d), "--mcu", "stm32f411re", "--dry-run")
+    assert code == 2 and err == f"kinefuse: error: image {d} is a directory, not a firmware file\n"
+
+
+def test_an_address_with_a_hex_for_pyocd_is_refused(capsys, image):
+    # it was ignored: the .hex went to its own addresses (over a bootloader the address avoided)
+    code, out, err = run(capsys, "--image", str(image / "fw.hex"), "--mcu", "stm32f411re",
+                         "--address", "0x08004000", "--dry-run")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "--address goes with a .bin image" in err

@@ -168,12 +168,28 @@ def elf_segments(path: Path) -> list[tuple[int, bytes]]:
     return sorted(segs)
 
 
-def image_segments(img: dict, address: int | None) -> list[tuple[int, bytes]]:
-    if img.get("hex") is not None:
+def flashed_kind(img: dict, tool: str = "pyocd") -> str | None:
+    """Which of the image's files the tool gets: dfu-util the .bin; pyOCD the file --image
+    named (a sibling .hex of an --image fw.elf or fw.bin may be an older build: it was flashed
+    instead), else the build's HEX, ELF or BIN."""
+    if tool == "dfu-util":
+        return "bin" if img.get("bin") is not None else None
+    named = img.get("named")
+    if named is not None and img.get(named) is not None:
+        return named
+    return next((k for k in ("hex", "elf", "bin") if img.get(k) is not None), None)
+
+
+def image_segments(img: dict, address: int | None, tool: str = "pyocd") -> list[tuple[int, bytes]]:
+    """(address, bytes) of the file the tool gets (see :func:`flashed_kind`)."""
+    kind = flashed_kind(img, tool)
+    if kind == "hex":
         return hex_segments(Path(img["hex"]))
-    if img.get("elf") is not None:
+    if kind == "elf":
         return elf_segments(Path(img["elf"]))
-    if img.get("bin") is not None and address is not None:
+    if address is None:   # a .bin's address: from the .hex beside it
+        address = img.get("address")
+    if kind == "bin" and address is not None:
         return [(address, Path(img["bin"]).read_bytes())]
     return []
 
@@ -226,7 +242,7 @@ def check_image_for_mcu(args, img: dict) -> None:
     if not mem["flash"]:
         raise KinefuseError(f"--mcu {mcu} has no flash in its memory map ({mem['source']}): name the unit's "
                             f"actual MCU type, e.g. stm32f411re")
-    segs = image_segments(img, _parse_address(args.address))
+    segs = image_segments(img, _parse_address(args.address), args.tool)
     if not segs:
         raise KinefuseError(f"image {img['source']} holds no data")
     fl = ", ".join(f"0x{a:08X}-0x{a + n - 1:08X}" for a, n in mem["flash"])
@@ -252,13 +268,15 @@ def _image(args) -> dict:
     """The files to flash: {'hex', 'bin', 'elf', 'address', 'source'} (missing ones None)."""
     if args.image:
         p = Path(args.image)
-        if not p.is_file():
-            raise KinefuseError(f"image {p} not found")
+        if not p.is_file():   # a directory was reported "not found"
+            raise KinefuseError(f"image {p} is a directory, not a firmware file" if p.is_dir() else
+                                f"image {p} is not a regular file" if p.exists() else f"image {p} not found")
         suffix = p.suffix.lower()
         if suffix not in (".hex", ".ihex", ".elf", ".axf", ".bin"):
             raise KinefuseError(f"image {p}: expected .hex, .elf or .bin")
         img = {"hex": None, "bin": None, "elf": None, "source": str(p)}
-        img[{".ihex": "hex", ".axf": "elf"}.get(suffix, suffix[1:])] = p
+        img["named"] = {".ihex": "hex", ".axf": "elf"}.get(suffix, suffix[1:])
+        img[img["named"]] = p
         for k in ("hex", "bin", "elf"):       # siblings of a build (fw.elf, fw.hex, fw.bin)
             if img[k] is None and p.with_suffix(f".{k}").is_file():
                 img[k] = p.with_suffix(f".{k}")
@@ -289,10 +307,14 @@ def command_line(args, img: dict) -> list[str]:
             cmd += ["-u", args.probe]
         if args.erase:
             cmd += ["-e", args.erase]
-        if img["hex"] is not None:
-            return cmd + ["--format", "hex", str(img["hex"])]
-        if img["elf"] is not None:
-            return cmd + ["--format", "elf", str(img["elf"])]
+        kind = flashed_kind(img, "pyocd")
+        if kind in ("hex", "elf"):
+            if address is not None:   # it was ignored: the image went to its own addresses
+                raise KinefuseError(f"--address goes with a .bin image: the .{kind} {img[kind]} holds its own "
+                                    f"load addresses (flash the .bin to place it elsewhere)")
+            return cmd + ["--format", kind, str(img[kind])]
+        if address is None:
+            address = img.get("address")
         if address is None:
             raise KinefuseError("a .bin image needs --address (where it goes in flash)")
         return cmd + ["--format", "bin", "-a", f"0x{address:08X}", str(img["bin"])]

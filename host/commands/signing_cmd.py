@@ -50,8 +50,15 @@ def generate(path: str) -> dict:
         fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
     except OSError as exc:
         raise KinefuseError(f"cannot create {path}: {exc.strerror or exc}") from None
-    with os.fdopen(fd, "w") as f:
-        f.write(key.hex() + "\n")
+    try:
+        with os.fdopen(fd, "w") as f:
+            f.write(key.hex() + "\n")
+    except OSError as exc:   # a disk full: a cut key file would later read as a passphrase
+        try:
+            os.unlink(path)
+        except OSError:
+            pass
+        raise KinefuseError(f"cannot write {path}: {exc.strerror or exc} (no key file written)") from None
     return {"file": path, "key_id": key_id(key)}
 
 

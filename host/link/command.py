@@ -64,12 +64,30 @@ def _is_ack(command: int, sysid: int | None):
                       and (sysid is None or f.sysid == sysid))
 
 
+def drop_stale_acks(session, command: int) -> int:
+    """Forget the COMMAND_ACKs for ``command`` received so far (an answer to an earlier command,
+    e.g. a previous run's stop left in a pty's buffer, was taken for the answer to this one:
+    a unit that dropped a wrongly signed start "accepted" it); the number dropped."""
+    first = getattr(session.reader, "first_read", None)
+    if first is not None:
+        first.wait(1.0)     # a fresh connection: what waited at the open is read
+    session.poll(0)
+    frames = session.frames
+    keep = [x for x in frames if not (x[1].msgid == MSG_COMMAND_ACK and x[1].msg.command == command)]
+    n = len(frames) - len(keep)
+    if n:
+        frames.clear()
+        frames.extend(keep)
+    return n
+
+
 def send_command(session, sysid: int, command: int, *params: float, timeout: float = 1.0,
                  retries: int = 3, check: bool = True) -> int:
     """Send to one unit and wait for its ACK (re-sent with confirmation+1 on timeout).
 
     Returns the MAV_RESULT; with ``check`` a refusal raises CommandError; no answer at all
     always raises CommandError (result None)."""
+    drop_stale_acks(session, command)
     for attempt in range(retries):
         session.send("COMMAND_LONG", **_pack(command, params, sysid, attempt))
         f = session.wait_for(_is_ack(command, sysid), timeout=timeout)
@@ -88,6 +106,7 @@ def broadcast_command(session, command: int, *params: float, timeout: float = 1.
     (empty: nobody answered).  After the first ACK, others are gathered for ``settle`` s.
     ``on_wait`` is called while waiting (the recorder keeps writing what arrives)."""
     acks: dict = {}
+    drop_stale_acks(session, command)
     for attempt in range(retries):
         session.send("COMMAND_LONG", **_pack(command, params, 0, attempt))
         deadline = time.monotonic() + timeout

@@ -473,6 +473,8 @@ class Reader:
         self.closed = threading.Event()
         self.error: str | None = None
         self.bytes = 0
+        # set once the first read returned: what was waiting at the open (a pty keeps it) is queued
+        self.first_read = threading.Event()
         self._thread = threading.Thread(target=self._run, name=f"kf-reader {conn.url}", daemon=True)
         self._thread.start()
 
@@ -483,6 +485,7 @@ class Reader:
                 if data:
                     self.bytes += len(data)
                     self._q.put((time.monotonic_ns(), data))
+                self.first_read.set()
         except ConnectionClosed:
             pass
         except Exception as exc:  # noqa: BLE001 - reported to the consumer, not lost
@@ -490,6 +493,7 @@ class Reader:
         finally:
             self.closed.set()
             self._q.put(EOF_MARK)
+            self.first_read.set()
 
     def get(self, timeout: float) -> list:
         """Everything queued, waiting up to ``timeout`` s for the first item; [] on timeout."""

@@ -123,6 +123,11 @@ def decode_file(path, raw: bool = False, msgids=None, progress=None) -> DecodedF
         raise KinefuseError(f"{path}: no such file")
     if path.is_dir():
         raise KinefuseError(f"{path} is a directory, not a recording")
+    if not path.is_file():
+        # a pipe (/dev/stdin, <(...)) or a device: the file is opened more than once (its magic,
+        # then its bytes), so what the first read took would be missing from the decode
+        raise KinefuseError(f"{path} is not a regular file (a pipe or a device): save it to a file "
+                            f"first (it is read more than once)")
     if path.suffix.lower() == ".tlog" and not is_recording(path):
         return decode_tlog(path, msgids)
     if not is_recording(path):

@@ -104,6 +104,10 @@ class ParamClient:
             if f is not None:
                 m = f.msg
                 count = m.param_count
+                if not 0 <= m.param_index < count:
+                    # e.g. an answer to a read by name (index 65535): it took the place of a
+                    # parameter still missing, and the list came back short without a word
+                    continue
                 values[m.param_index] = (m.param_id, decode_value(m.param_value, m.param_type))
                 self.types[m.param_id] = m.param_type
                 quiet_since = time.monotonic()

@@ -37,7 +37,6 @@ class StreamState:
     pending_bytes: int = 0
     first_pending_ns: int = 0
     units: dict = field(default_factory=dict)     # sysid -> info
-    msg_counts: dict = field(default_factory=dict)
     closed: bool = False
     error: str | None = None
     warned_baud: bool = False
@@ -125,8 +124,6 @@ class Recorder:
     # ------------------------------------------------------------------------------ live view
     def _look(self, st: StreamState, final: bool = False) -> None:
         for t_ns, f in st.session.drain():
-            name = f.msg._msgname
-            st.msg_counts[name] = st.msg_counts.get(name, 0) + 1
             unit = st.units.setdefault(f.sysid, {"sysid": f.sysid, "first_t_ns": t_ns})
             if f.msgid == 77:
                 st.acks.append((f.sysid, int(f.msg.command), int(f.msg.result)))
@@ -173,6 +170,9 @@ class Recorder:
     def _checked_command(self, st: StreamState, command: int, *params: float, retries: int = 2) -> None:
         """Send to every unit of the stream; a refusal raises CommandError (after noting it in
         the file), no answer at all is a warning (a one-way link, or no unit)."""
+        st.session.reader.first_read.wait(1.0)   # what waited at the open is read
+        st.session.poll(0)
+        self._look(st)      # the ACKs received so far answer no command sent now
         n0 = len(st.acks)
         for attempt in range(retries):
             self._command(st, command, *params, confirmation=attempt)
@@ -284,6 +284,9 @@ class Recorder:
                     self._command(st, CMD_STREAM, 0.0)
                 except OSError:
                     pass
+            # the reader stops first: what it reads until then is written too (it was read
+            # after the last poll and dropped with the session)
+            st.session.reader.stop(join=5.0)
             try:
                 st.session.poll(0)
                 self._look(st, final=True)
@@ -303,7 +306,8 @@ class Recorder:
             c = st.session.decoder.counters
             streams.append({
                 "id": st.id, "connection": st.url, "bytes": c.bytes_in, "frames": c.frames_ok,
-                "crc_errors": c.crc_errors, "bytes_skipped": c.bytes_skipped, "messages": dict(st.msg_counts),
+                "crc_errors": c.crc_errors, "bytes_skipped": c.bytes_skipped,
+                "messages": dict(st.session.msg_counts),   # the PARAM_VALUEs ParamClient took too
                 "units": [dict(u) for u in st.units.values()], "closed": st.closed, "error": st.error,
             })
         return {"file": str(self.writer.path), "elapsed_s": round(elapsed, 3), "file_bytes": self.writer.bytes_written,

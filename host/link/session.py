@@ -29,6 +29,8 @@ class Session:
         self.reader = Reader(conn)
         self.tap = tap
         self.frames: deque = deque(maxlen=keep)  # (t_ns, Frame), oldest dropped beyond ``keep``
+        # message name -> frames decoded, whoever took them from ``frames`` (wait_for, drain)
+        self.msg_counts: dict = {}
 
     # -- sending -------------------------------------------------------------------------------
     def send(self, message, **fields) -> bytes:
@@ -45,11 +47,14 @@ class Session:
     def poll(self, timeout: float = 0.0) -> int:
         """Decode what has arrived (waiting up to ``timeout`` for the first bytes); new frame count."""
         n = 0
+        counts = self.msg_counts
         for t_ns, data in self.reader.get(timeout):
             if self.tap is not None:
                 self.tap("rx", t_ns, data)
             for f in self.decoder.feed(data):
                 self.frames.append((t_ns, f))
+                name = f.msg._msgname
+                counts[name] = counts.get(name, 0) + 1
                 n += 1
         return n
 
