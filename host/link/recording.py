@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import json
 import os
+import stat
 import platform
 import struct
 import threading
@@ -119,8 +120,14 @@ class RecordingWriter:
 
     def _failed(self, exc: OSError) -> KinefuseError:
         if self.failed is None:
-            self.failed = KinefuseError(f"cannot write {self.path}: {exc.strerror or exc} "
-                                        f"(the recording holds what was written before)")
+            try:
+                st = os.fstat(self._f.fileno())
+                held = st.st_size if stat.S_ISREG(st.st_mode) else 0
+            except (OSError, ValueError):
+                held = 0
+            what = (f"the file holds the recording up to there, {held:,} bytes" if held
+                    else "nothing of the recording was written")    # e.g. a full disk at the start
+            self.failed = KinefuseError(f"cannot write {self.path}: {exc.strerror or exc} ({what})")
         return self.failed
 
     def chunk(self, ctype: int, stream: int, payload: bytes, t_ns: int | None = None) -> None:
