@@ -364,8 +364,11 @@ class FakeConnection(Connection):
     """Host end of a socket pair whose other end is driven by an in-process :class:`FakeUnit`.
 
     Connection string ``fake:[rate=1000,ori=100,unit=1,drift=0,drop=0,corrupt=0,stream=1,params=1]``
-    (all optional; params=0: a unit that does not answer the parameter protocol): try the host
-    tools without hardware.
+    (all optional): try the host tools without hardware.  rate, ori: Hz; drift: ppm of the unit's
+    clock; drop=k: every k-th sample lost; corrupt=p: each transmitted *bit* flips with
+    probability p (a 46-byte frame survives with (1 - p)^368: p = 1e-4 loses about 4 % of the frames,
+    p = 0.02 nearly all); stream=0: waits for MAV_CMD_KF_STREAM; params=0: a unit that does not
+    answer the parameter protocol.
     """
     # option -> allowed range (a value outside made the unit's thread die: a silent, empty stream)
     LIMITS = {"rate": (1, 100_000), "ori": (0, 10_000), "unit": (1, 254), "drift": (-100_000, 100_000),
