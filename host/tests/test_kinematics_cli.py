@@ -5,22 +5,11 @@ import os
 import numpy as np
 import pytest
 
-from kinefuse.host import cli
 from kinefuse.host.kinematics import simulate
 from kinefuse.host.readers import kinefuse_csv
 
 
-@pytest.fixture
-def run(monkeypatch, capsys):
-    monkeypatch.setattr(cli, "COMMAND_MODULES", ["kinefuse.host.commands.calibrate_cmd",
-                                                 "kinefuse.host.commands.report_cmd"])
-    monkeypatch.setattr(cli, "BENCH_MODULES", [])
-
-    def _run(*argv):
-        code = cli.main([str(a) for a in argv])
-        out, err = capsys.readouterr()
-        return code, out, err
-    return _run
+MINE = ("calibrate_cmd", "report_cmd")
 
 
 @pytest.fixture(scope="module")

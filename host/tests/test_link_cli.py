@@ -7,20 +7,8 @@ import pytest
 
 from kinefuse.host import cli
 
+MINE_BENCH = ("bench.decode",)
 MINE = ("record_cmd", "decode_cmd", "export_cmd", "stats_cmd", "params_cmd", "ports_cmd")
-
-
-@pytest.fixture
-def run(monkeypatch, capsys):
-    """cli.main with only our commands registered (others' modules may still be in progress)."""
-    monkeypatch.setattr(cli, "COMMAND_MODULES", [m for m in cli.COMMAND_MODULES if m.rsplit(".", 1)[-1] in MINE])
-    monkeypatch.setattr(cli, "BENCH_MODULES", [m for m in cli.BENCH_MODULES if m.endswith("bench.decode")])
-
-    def _run(*argv):
-        code = cli.main([str(a) for a in argv])
-        out, err = capsys.readouterr()
-        return code, out, err
-    return _run
 
 
 def _one_line_error(code, out, err, text):

@@ -7,18 +7,8 @@ import json
 
 import pytest
 
-from kinefuse.host import cli
 from kinefuse.host.link.fakeunit import raw_frames
 from kinefuse.host.link.recording import load
-
-
-@pytest.fixture
-def run(capsys):
-    def _run(*argv):
-        code = cli.main([str(a) for a in argv])
-        out, err = capsys.readouterr()
-        return code, out, err
-    return _run
 
 
 def _meta(path, kind):

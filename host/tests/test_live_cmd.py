@@ -7,23 +7,10 @@ import time
 import numpy as np
 import pytest
 
-from kinefuse.host import cli
 
 MINE = ("live_cmd",)
 LINE = re.compile(r"\[\s*([\d.]+) s\] unit (\d+) \((.+?)\): rate ([\d.]+) Hz \(requested (\S+?)(?: Hz)?\), lost (\d+), "
                   r"CRC errors (\d+), (.+?), battery (.+?), (.+)$")
-
-
-@pytest.fixture
-def run(monkeypatch, capsys):
-    monkeypatch.setattr(cli, "COMMAND_MODULES", [m for m in cli.COMMAND_MODULES if m.rsplit(".", 1)[-1] in MINE])
-    monkeypatch.setattr(cli, "BENCH_MODULES", [])
-
-    def _run(*argv):
-        code = cli.main([str(a) for a in argv])
-        out, err = capsys.readouterr()
-        return code, out, err
-    return _run
 
 
 def _units(out):

@@ -5,24 +5,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from kinefuse.host import cli
 from kinefuse.host.broad import EXCERPT_DIR
 from kinefuse.host.plots import lost_before, status_flags
 
 MINE = ("plot_cmd",)
 TRIAL = EXCERPT_DIR / "24_disturbed_tapping_A.npz"
-
-
-@pytest.fixture
-def run(monkeypatch, capsys):
-    monkeypatch.setattr(cli, "COMMAND_MODULES", [m for m in cli.COMMAND_MODULES if m.rsplit(".", 1)[-1] in MINE])
-    monkeypatch.setattr(cli, "BENCH_MODULES", [])
-
-    def _run(*argv):
-        code = cli.main([str(a) for a in argv])
-        out, err = capsys.readouterr()
-        return code, out, err
-    return _run
 
 
 def _one_line_error(res, text):

@@ -4,24 +4,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from kinefuse.host import cli
 from kinefuse.host.broad import EXCERPT_DIR
 
 MINE = ("replay_cmd", "run_cmd")
 TRIAL = EXCERPT_DIR / "24_disturbed_tapping_A.npz"
-
-
-@pytest.fixture
-def run(monkeypatch, capsys):
-    """cli.main with only the commands used here registered (others may be in progress)."""
-    monkeypatch.setattr(cli, "COMMAND_MODULES", [m for m in cli.COMMAND_MODULES if m.rsplit(".", 1)[-1] in MINE])
-    monkeypatch.setattr(cli, "BENCH_MODULES", [])
-
-    def _run(*argv):
-        code = cli.main([str(a) for a in argv])
-        out, err = capsys.readouterr()
-        return code, out, err
-    return _run
 
 
 def _one_line_error(code, out, err, text):

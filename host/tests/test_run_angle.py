@@ -14,18 +14,6 @@ FILTERS = ("angle-kf", "angle-ekf", "angle-ukf", "angle-srukf")
 FS = 35.0
 
 
-@pytest.fixture
-def run(monkeypatch, capsys):
-    monkeypatch.setattr(cli, "COMMAND_MODULES", [m for m in cli.COMMAND_MODULES if m.rsplit(".", 1)[-1] in MINE])
-    monkeypatch.setattr(cli, "BENCH_MODULES", [])
-
-    def _run(*argv):
-        code = cli.main([str(a) for a in argv])
-        out, err = capsys.readouterr()
-        return code, out, err
-    return _run
-
-
 def _one_line_error(code, out, err, text):
     assert code == 2, (code, out, err)
     lines = err.strip().splitlines()

@@ -9,7 +9,6 @@ import re
 import numpy as np
 import pytest
 
-from kinefuse.host import cli
 from kinefuse.host.calib import mag as mag_cal
 from kinefuse.host.calib import unitfile
 from kinefuse.host.errors import KinefuseError
@@ -18,17 +17,7 @@ from kinefuse.host.kinematics import quat as Q
 from kinefuse.host.readers import kinefuse_csv
 
 
-@pytest.fixture
-def run(monkeypatch, capsys):
-    monkeypatch.setattr(cli, "COMMAND_MODULES", ["kinefuse.host.commands.calibrate_cmd",
-                                                 "kinefuse.host.commands.report_cmd"])
-    monkeypatch.setattr(cli, "BENCH_MODULES", [])
-
-    def _run(*argv):
-        code = cli.main([str(a) for a in argv])
-        out, err = capsys.readouterr()
-        return code, out, err
-    return _run
+MINE = ("calibrate_cmd", "report_cmd")
 
 
 @pytest.fixture(scope="module")

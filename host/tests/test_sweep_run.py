@@ -10,24 +10,11 @@ import os
 import numpy as np
 import pytest
 
-from kinefuse.host import cli, runner
+from kinefuse.host import runner
 from kinefuse.host.errors import KinefuseError
 from test_accuracy import FAKE, kf  # noqa: F401 - stand-in runner and CLI fixture (demo)
 
 MINE = ("run_cmd",)
-
-
-@pytest.fixture
-def run(monkeypatch, capsys):
-    monkeypatch.setattr(cli, "COMMAND_MODULES",
-                        [m for m in cli.COMMAND_MODULES if m.rsplit(".", 1)[-1] in MINE])
-    monkeypatch.setattr(cli, "BENCH_MODULES", [])
-
-    def _run(*argv):
-        code = cli.main([str(a) for a in argv])
-        out, err = capsys.readouterr()
-        return code, out, err
-    return _run
 
 
 def _one_line_error(code, err, text):
