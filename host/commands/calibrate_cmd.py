@@ -371,11 +371,8 @@ def run_apply(args) -> int:
     with Session(conn, key=key) as s:
         sysid = args.unit
         if sysid is None:
-            hb = s.wait_for(lambda f: f.msgid == 0 and f.sysid != 255, timeout=args.timeout)
-            if hb is None:
-                raise KinefuseError(f"no HEARTBEAT on {args.port} within {args.timeout:g} s "
-                                    f"(unit off, wrong port or wrong baud rate?)")
-            sysid = hb.sysid
+            from kinefuse.host.link.cli_util import first_unit
+            sysid = first_unit(s, args.port, args.timeout)
         res = unitparams.apply_to_unit(s, sysid, doc, args.calib, sensor=args.sensor,
                                        warn=lambda m: print(f"kinefuse: warning: {m}", file=sys.stderr))
     _emit(args, res, [f"unit {sysid}: wrote {len(res['written'])} calibration parameters of sensor {args.sensor} "

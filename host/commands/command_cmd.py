@@ -61,11 +61,8 @@ def run(args) -> int:
     with Session(conn, key=key) as s:
         sysid = args.unit
         if sysid is None:
-            hb = s.wait_for(lambda f: f.msgid == 0 and f.sysid != 255, timeout=args.timeout)
-            if hb is None:
-                raise KinefuseError(f"no HEARTBEAT on {args.port} within {args.timeout:g} s "
-                                    f"(unit off, wrong port or wrong baud rate?)")
-            sysid = hb.sysid
+            from kinefuse.host.link.cli_util import first_unit
+            sysid = first_unit(s, args.port, args.timeout)
         if args.action == "start":
             if args.rate:
                 C.send_command(s, sysid, C.MAV_CMD_SET_MESSAGE_INTERVAL, float(C.MSG_KF_RAW_SAMPLE), 1e6 / args.rate)

@@ -52,6 +52,20 @@ def check_distinct_ports(ports) -> None:
         seen[key] = url
 
 
+def first_unit(session, port: str, timeout: float) -> int:
+    """The MAVLink system id of the first unit heard on ``session`` (its HEARTBEAT), or a
+    one-line error: the connection ended (a capture file without a unit), or ``timeout`` s
+    passed."""
+    from kinefuse.host.errors import KinefuseError
+    hb = session.wait_for(lambda f: f.msgid == 0 and f.sysid != 255, timeout=timeout)
+    if hb is not None:
+        return hb.sysid
+    if session.reader.finished:     # it said "within 3 s" after a file had ended at once
+        raise KinefuseError(f"{port} ended without a HEARTBEAT: no unit on that connection")
+    raise KinefuseError(f"no HEARTBEAT on {port} within {timeout:g} s "
+                        f"(unit off, wrong port or wrong baud rate?)")
+
+
 RAW_RATE_MAX_HZ = 10_000   # the unit refuses message intervals below 100 us (firmware/app/kf_handle.c)
 
 

@@ -134,3 +134,13 @@ def test_fake_unit_orientation_status_matches_its_strapdown_filter():
         assert f.msg.status & D.KF_ORIENTATION_STATUS_INITIALISED
         assert not f.msg.status & D.KF_ORIENTATION_STATUS_MAG_USED
         assert bool(f.msg.status & D.KF_ORIENTATION_STATUS_HEADING_TARED) == tared
+
+
+@pytest.mark.parametrize("command", [["command", "start"], ["params"], ["signing"]])
+def test_a_capture_without_a_unit_says_so(run, tmp_path, command):
+    """It said "no HEARTBEAT within 3 s (unit off, ...)" after the file had ended at once."""
+    cap = tmp_path / "g.bin"
+    cap.write_bytes(b"no mavlink here" * 10)
+    code, out, err = run(command[0], "--port", f"file:{cap}", *command[1:])
+    assert code == 2 and err.count("\n") == 1, err
+    assert f"file:{cap} ended without a HEARTBEAT: no unit on that connection" in err, err
