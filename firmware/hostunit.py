@@ -215,6 +215,22 @@ def _split(data: bytes) -> list[bytes]:
     return out
 
 
+def _link_closed_is_an_error(fn):
+    """The unit's pty / TCP link failing mid-run (the unit exited or crashed: EIO on a pty,
+    a reset connection) is a one-line KinefuseError, not a bare ``OSError: [Errno 5]``."""
+    import functools
+
+    @functools.wraps(fn)
+    def wrapper(session, *args, **kwargs):
+        try:
+            return fn(session, *args, **kwargs)
+        except OSError as exc:
+            raise KinefuseError(f"HIL: the link to the unit failed ({exc.strerror or exc}): "
+                                "did the unit exit or crash? (its stderr tells)") from None
+    return wrapper
+
+
+@_link_closed_is_an_error
 def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 100,
             timeout: float = 10.0, key: bytes | None = None, q_raw: bool = False) -> dict[str, np.ndarray]:
     """Send one HIL_SENSOR per sample (``window`` at a time, waiting for every answer before
@@ -238,6 +254,8 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
     first_counter = None
     got_raw = got_ori = 0
     got_qr = n if not q_raw else 0
+    # answers counted once per sample: a repeated frame must not stand in for a missing one
+    seen_raw, seen_ori, seen_qr = np.zeros(n, bool), np.zeros(n, bool), np.zeros(n, bool)
     last_ori = None                            # (index, sample_counter) of the newest KF_ORIENTATION
     session.poll(0)
     session.drain()                            # older frames (a sensor stream) are not answers
@@ -259,7 +277,8 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
                     i = last_ori[0] - ((last_ori[1] - m.address) & 0xFFFF)
                     if 0 <= i < n:
                         qr[i] = np.frombuffer(bytes(b & 0xFF for b in m.value[:16]), "<i4")
-                        got_qr += 1
+                        got_qr += not seen_qr[i]
+                        seen_qr[i] = True
                     continue
                 if f.msgid not in (MSG_RAW, MSG_ORI):
                     continue
@@ -276,12 +295,14 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
                     flags[i] = m.flags
                     counters[i] = m.sample_counter
                     t_echo[i] = m.time_boot_us
-                    got_raw += 1
+                    got_raw += not seen_raw[i]
+                    seen_raw[i] = True
                 else:
                     q[i] = np.array([m.q_w, m.q_x, m.q_y, m.q_z], np.float32)
                     cov[i] = np.asarray(m.cov, np.float32)
                     status[i] = m.status
-                    got_ori += 1
+                    got_ori += not seen_ori[i]
+                    seen_ori[i] = True
                     last_ori = (i, m.sample_counter)
     out = {"q": q, "cov": cov, "counter": counters, "time_us": t_echo, "status": status,
            "acc": raw[:, 0:3], "gyr": raw[:, 3:6], "mag": raw[:, 6:9], "flags": flags}
@@ -435,6 +456,7 @@ def joint_model(name: str, system: str, prox: dict, dist: dict, *, rate_hz: int 
             "in_prox": res["prox"]["inputs"], "in_dist": res["dist"]["inputs"]}
 
 
+@_link_closed_is_an_error
 def joint_hil_run(session, prox: dict, dist: dict, window: int = 50, timeout: float = 10.0,
                   efforts: bool = False, dist_sent=None) -> dict:
     """Two-sensor HIL: per sample k, HIL_SENSOR id 1 (``dist``) then id 0 (``prox``); collects

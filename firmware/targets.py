@@ -300,21 +300,30 @@ def build(sources: Iterable[str | os.PathLike],
         else:
             cmd = [gcc] + base + list(C_FLAGS) + list(extra_cflags) + ["-c", str(src), "-o", str(obj)]
         jobs.append(cmd)
-    with ThreadPoolExecutor(max_workers=max(1, min(4, os.cpu_count() or 1))) as pool:
-        for cmd, proc in zip(jobs, pool.map(_compile, jobs)):
-            commands.append(cmd)
-            if proc.returncode != 0:
-                raise BuildError(_first_error(proc.stderr, f"compiling failed for {tgt.name}"),
-                                 proc.stderr, cmd)
-    elf = work / f"{name}.elf"
-    link = [gxx if has_cxx else gcc] + list(tgt.arch_flags) + [opt] + [str(o) for o in objs] \
-        + link_flags + [f"-Wl,-Map={work / (name + '.map')}", "-o", str(elf)] + ["-lm"]
-    commands.append(link)
-    proc = subprocess.run(link, capture_output=True, text=True)
-    if proc.returncode != 0:
-        raise BuildError(_first_error(proc.stderr, f"linking failed for {tgt.name}"), proc.stderr, link)
-    _run([tool("objcopy"), "-O", "binary", str(elf), str(work / f"{name}.bin")], "objcopy")
-    _run([tool("objcopy"), "-O", "ihex", str(elf), str(work / f"{name}.hex")], "objcopy")
+    try:
+        with ThreadPoolExecutor(max_workers=max(1, min(4, os.cpu_count() or 1))) as pool:
+            for cmd, proc in zip(jobs, pool.map(_compile, jobs)):
+                commands.append(cmd)
+                if proc.returncode != 0:
+                    raise BuildError(_first_error(proc.stderr, f"compiling failed for {tgt.name}"),
+                                     proc.stderr, cmd)
+        elf = work / f"{name}.elf"
+        link = [gxx if has_cxx else gcc] + list(tgt.arch_flags) + [opt] + [str(o) for o in objs] \
+            + link_flags + [f"-Wl,-Map={work / (name + '.map')}", "-o", str(elf)] + ["-lm"]
+        commands.append(link)
+        proc = subprocess.run(link, capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise BuildError(_first_error(proc.stderr, f"linking failed for {tgt.name}"), proc.stderr, link)
+        _run([tool("objcopy"), "-O", "binary", str(elf), str(work / f"{name}.bin")], "objcopy")
+        _run([tool("objcopy"), "-O", "ihex", str(elf), str(work / f"{name}.hex")], "objcopy")
+    except BaseException:
+        if out_dir is None:      # a failed build leaves no half-built temporary directory behind
+            shutil.rmtree(work, ignore_errors=True)
+            try:
+                final_dir.rmdir()        # nor the empty cache entry (only when empty)
+            except OSError:
+                pass
+        raise
 
     if out_dir is None:
         (work / "ok").write_text("\n".join(" ".join(c) for c in commands) + "\n")
@@ -430,6 +439,12 @@ def _hash_inputs(srcs: list[Path], incs: list[Path], flags: list[list[str]], ver
     for d in incs:
         if d.is_dir():
             files += sorted(p for p in d.rglob("*") if p.suffix in HEADER_SUFFIXES and p.is_file())
+    # ``#include "x.h"`` finds headers next to the including source without any -I: a changed
+    # header there must rebuild too (not recursive: a source may sit in a large directory)
+    seen = set(files)
+    for d in sorted({s.parent for s in srcs}):
+        files += sorted(p for p in d.glob("*") if p.suffix in HEADER_SUFFIXES and p.is_file()
+                        and p not in seen)
     for f in files:
         h.update(str(f).encode())
         h.update(f.read_bytes())

@@ -47,6 +47,17 @@ def _app_build_inputs(system: str = "f32", filters=None) -> tuple[list[Path], li
     return srcs, incs, defs
 
 
+def hashed_files(srcs: list[Path], incs: list[str]) -> list[Path]:
+    """What a fuzz build depends on: the target, the sources and every header or ``.inc`` in
+    the include directories (``-I``/``-isystem`` pairs; kf_params_gen.inc and the MAVLink
+    headers included), so a change to any of them rebuilds."""
+    files = [TARGET, *srcs]
+    dirs = [Path(incs[i + 1]) for i in range(0, len(incs) - 1, 2) if incs[i] in ("-I", "-isystem")]
+    for d in dirs + [TARGET.parent]:
+        files += sorted(p for p in d.rglob("*") if p.suffix in (".h", ".inc") and p.is_file())
+    return files
+
+
 def build(kind: str = "replay", system: str = "f32", filters=None) -> Path:
     """Build the replay program (gcc + ASan/UBSan) or the libFuzzer binary (clang); cached by
     a hash of the sources and flags.  ``filters``: a subset of the wired filters (default all;
@@ -66,7 +77,7 @@ def build(kind: str = "replay", system: str = "f32", filters=None) -> Path:
                             + ("" if kind == "replay" else " (apt-get install clang libclang-rt-14-dev)"))
     dflags = [f"-D{k}={v}" for k, v in sorted(defs.items())]
     h = hashlib.sha256()
-    for p in [TARGET, *srcs, *sorted(Path(incs[1]).glob("*.h")), *sorted(Path(incs[3]).glob("*.h"))]:
+    for p in hashed_files(srcs, incs):
         h.update(p.name.encode() + b"\0" + p.read_bytes())
     h.update(repr((cc, flags, dflags, system, filters)).encode())
     exe = cache_dir() / f"fuzz_app-{kind}-{system}-{h.hexdigest()[:16]}"
@@ -140,11 +151,17 @@ def seed_corpus(out: Path, n: int = 40, seed: int = 1) -> list[Path]:
 
 
 def replay(paths, timeout: float = 300.0, filters=None) -> subprocess.CompletedProcess:
+    paths = list(paths)
     exe = build("replay", filters=filters)
     env = dict(os.environ, ASAN_OPTIONS="detect_leaks=0:abort_on_error=1",
                UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1")
-    return subprocess.run([str(exe), *map(str, paths)], capture_output=True, text=True,
-                          timeout=timeout, env=env)
+    try:
+        return subprocess.run([str(exe), *map(str, paths)], capture_output=True, text=True,
+                              timeout=timeout, env=env)
+    except subprocess.TimeoutExpired:
+        raise KinefuseError(f"fuzz replay of {len(paths)} inputs did not finish within "
+                            f"{timeout:g} s (a hang in the application? replay fewer inputs "
+                            "to find it)") from None
 
 
 def fuzz(seconds: int, jobs: int = 1, corpus: Path | None = None, work: Path | None = None) -> int:

@@ -13,7 +13,7 @@ import numpy as np
 
 from kinefuse.codegen import estimators, runner as cg
 from kinefuse.codegen.estimator import initial_state, run_reference
-from kinefuse.hil_tests.harness.loops import encode, system_of
+from kinefuse.hil_tests.harness.loops import encode, sample_count, system_of
 
 
 def _pieces(n: int, cuts: Sequence[int]) -> list[tuple[int, int]]:
@@ -29,7 +29,7 @@ def run_chunked(loop: str, name: str, inputs: dict, cuts: Sequence[int],
                 params: dict | None = None) -> dict[str, np.ndarray]:
     """Outputs of ``loop`` (``ref``, ``f32-model``, ``q-model``, ``host-f32``, ``host-q``) over
     ``inputs`` cut at the sample indices ``cuts``, the state carried between pieces."""
-    n = len(np.asarray(inputs["dt"]))
+    n = sample_count(name, inputs)
     pieces = _pieces(n, cuts)
     if loop == "ref":
         est = estimators.get(name)
@@ -100,6 +100,7 @@ def host_states(name: str, system: str, inputs: dict, params: dict | None = None
                 ) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray]]:
     """(outputs, states): the host C run one ``update`` at a time, the state struct read after
     every sample.  States are storage values (float32 / Q raw int64 / int / bool), (N, size)."""
+    sample_count(name, inputs)
     r = cg.runner(name, system)
     info, e = encode(name, system, inputs, params)
     ffi, lib, P = r.ffi, r.lib, r.P
@@ -141,7 +142,7 @@ def reference_states(name: str, inputs: dict, params: dict | None = None) -> dic
     est = estimators.get(name)
     prm = est.resolve_params(params)
     st = initial_state(est)
-    n = len(np.asarray(inputs["dt"]))
+    n = sample_count(name, inputs)
     rows = {v.name: np.zeros((n, v.size)) for v in est.state}
     for i in range(n):
         _, st = run_reference(est, {k: np.asarray(v)[i:i + 1] for k, v in inputs.items()}, prm, st)

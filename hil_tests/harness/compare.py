@@ -1,8 +1,10 @@
 """Bit-pattern comparison of loop outputs, with the first differing sample and its inputs.
 
-Binary32 values are compared as uint32 patterns (all NaNs equal: x86 and ARM produce
-different default NaNs, and no generated filter outputs a NaN on purpose); Q-format raw
-integers, counters and flags as integers.  ``-0.0`` and ``+0.0`` are *different* patterns.
+Binary32 values are compared as their uint32 patterns, exactly: ``-0.0`` and ``+0.0`` are
+*different* patterns, and so are NaNs with different sign or payload (x86 and ARM produce
+different default NaNs; no generated filter outputs a NaN on purpose, so a NaN on both sides
+must not pass as "equal" and a NaN only the platforms disagree on is a difference too);
+Q-format raw integers, counters and flags as integers.
 """
 from __future__ import annotations
 
@@ -10,7 +12,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from kinefuse.codegen.runner import bits
 
 
 @dataclass
@@ -42,6 +43,19 @@ class Mismatch:
                 "out_b": self.out_b}
 
 
+def bits(a) -> np.ndarray:
+    """Comparable bit patterns: the exact pattern of binary32 / binary64 (every NaN payload and
+    the sign of zero kept), integers and flags as int64."""
+    a = np.asarray(a)
+    if a.dtype == np.float32:
+        return a.view(np.uint32).astype(np.int64)
+    if a.dtype == np.float64:            # the reference: its own patterns, never truncated to int
+        return np.ascontiguousarray(a).view(np.int64)
+    if a.dtype.kind == "f":
+        raise ValueError(f"bit-exact comparison needs binary32, binary64 or integer outputs, not {a.dtype}")
+    return a.astype(np.int64)
+
+
 def _show(v: np.ndarray) -> list:
     v = np.asarray(v).reshape(-1)
     if v.dtype == np.float32:
@@ -60,7 +74,11 @@ def differing(out_a: dict[str, np.ndarray], out_b: dict[str, np.ndarray]) -> tup
         n = len(a) if n is None else n
         if len(a) != len(b):
             raise ValueError(f"output {k}: {len(a)} vs {len(b)} samples")
-        per[k] = np.any(bits(a).reshape(len(a), -1) != bits(b).reshape(len(b), -1), axis=1)
+        # explicit widths: reshape(n, -1) fails for 0 samples; (n,) and (n, 1) are the same output
+        wa, wb = (int(np.prod(x.shape[1:], dtype=np.int64)) for x in (a, b))
+        if wa != wb:
+            raise ValueError(f"output {k}: {wa} vs {wb} values per sample")
+        per[k] = np.any(bits(a).reshape(len(a), wa) != bits(b).reshape(len(b), wb), axis=1)
     any_ = np.zeros(n or 0, bool)
     for v in per.values():
         any_ |= v
@@ -71,6 +89,8 @@ def compare(a: str, out_a: dict, b: str, out_b: dict, inputs: dict | None = None
     """None when identical in every bit of every output of every sample, else the first
     mismatch (with the sample's inputs when given: host values as fed to the encoders)."""
     any_, per = differing(out_a, out_b)
+    if len(any_) == 0:      # "identical" over nothing would pass any loop that produced nothing
+        raise ValueError(f"{a} vs {b}: no samples (or no outputs) to compare")
     if not any_.any():
         return None
     i = int(np.argmax(any_))

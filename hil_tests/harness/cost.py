@@ -184,11 +184,15 @@ def _trace_pcs(elf: Path, target: str, k: int, timeout: float = 600.0) -> Counte
         res.check("instruction-mix trace")
         pcs = Counter()
         pat = re.compile(rb"Trace \d+: 0x[0-9a-f]+ \[[0-9a-f]+/([0-9a-f]+)/")
-        with open(log, "rb") as f:
-            for line in f:
-                m = pat.search(line)
-                if m:
-                    pcs[int(m.group(1), 16)] += 1
+        if log.is_file():
+            with open(log, "rb") as f:
+                for line in f:
+                    m = pat.search(line)
+                    if m:
+                        pcs[int(m.group(1), 16)] += 1
+    if not pcs:     # a program that ran executed instructions: an empty trace is a broken trace
+        raise KinefuseError(f"instruction-mix trace: QEMU wrote no execution trace for {Path(elf).name} "
+                            "(does this qemu-system-arm support -d exec,nochain?)")
     return pcs
 
 
@@ -235,9 +239,14 @@ def per_update_trace(elf: Path, target: str, k: int) -> Counter:
 
 def cycle_estimate(build, target: str, k: int = K_MIX, per: Counter | None = None) -> dict:
     """Estimated cycles per update from a single-step trace of K and 0 calls."""
-    addrs, mnems, index = _disassembly(build.elf)
+    if k <= 0:
+        raise KinefuseError("cycle estimate: k must be positive")
     if per is None:
         per = per_update_trace(build.elf, target, k)
+    if not per:
+        raise KinefuseError(f"cycle estimate: the traces of {k} and of 0 updates are identical "
+                            "(the counted updates did not run?)")
+    addrs, mnems, index = _disassembly(build.elf)
     cycles = 0.0
     classes = Counter()
     unknown = 0

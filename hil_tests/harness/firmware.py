@@ -74,7 +74,8 @@ class HilInput:
     @classmethod
     def from_case(cls, case, n: int | None = None, t0_us: int = 1_000_000) -> "HilInput":
         k = case.n if n is None else min(n, case.n)
-        t = t0_us + np.round(np.concatenate([[0.0], np.cumsum(case.inputs["dt"][1:k])]) * 1e6).astype(np.int64)
+        # [:k]: no samples give no stamps (not the lone first stamp of an empty case)
+        t = t0_us + np.round(np.concatenate([[0.0], np.cumsum(case.inputs["dt"][1:k])])[:k] * 1e6).astype(np.int64)
         mag = np.nan_to_num(case.inputs["mag"][:k], nan=0.0)
         return cls(t, case.inputs["acc"][:k], case.inputs["gyr"][:k], mag,
                    case.inputs["mag_valid"][:k] & np.all(np.isfinite(case.inputs["mag"][:k]), axis=1),

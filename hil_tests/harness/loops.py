@@ -59,8 +59,22 @@ def encode(name: str, system: str, inputs: dict, params: dict | None = None):
     return info, info.encode(inputs, prm)
 
 
+def sample_count(name: str, inputs: dict) -> int:
+    """Samples in ``inputs`` (the length of ``dt``, else of the first input); KinefuseError for
+    none: an empty run has nothing to compare, so it must not reach a comparison that then
+    finds "no difference"."""
+    if not inputs:
+        raise KinefuseError(f"{name}: no inputs given")
+    first = inputs["dt"] if "dt" in inputs else next(iter(inputs.values()))
+    n = len(np.asarray(first))
+    if n == 0:
+        raise KinefuseError(f"{name}: the input has no samples; give at least one")
+    return n
+
+
 def run_loop(loop: str, name: str, inputs: dict, params: dict | None = None) -> dict[str, np.ndarray]:
     """Outputs of filter ``name`` over ``inputs`` in ``loop`` (storage values; float64 for ref)."""
+    sample_count(name, inputs)
     if loop == "ref":
         return cg.run(name, "ref", inputs, params)
     system = system_of(loop)

@@ -100,7 +100,7 @@ def build_filter_program(name: str, system: str, target: str, params: dict[str, 
     """
     est = estimators.get(name)
     info = ModelInfo(name, system)
-    P = f"{name}_{system}"
+    P = f"{name.replace('-', '_')}_{system}"     # C prefix and file stem: angle-kf -> angle_kf_f32
     src = GENERATED_DIR / f"{P}.c"
     if not src.is_file():
         raise KinefuseError(f"{src} does not exist (filter {name} has no {system} build)")

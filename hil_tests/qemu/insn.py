@@ -52,7 +52,9 @@ def plugin_path() -> Path:
                "-fvisibility=hidden", "-o", str(out), str(c)]
         proc = subprocess.run(cmd, capture_output=True, text=True)
         if proc.returncode != 0:
-            raise QemuError("building the QEMU plugin failed: " + proc.stderr.strip().splitlines()[-1])
+            lines = proc.stderr.strip().splitlines()
+            raise QemuError("building the QEMU plugin failed: "
+                            + (lines[-1] if lines else f"gcc exited with status {proc.returncode}"))
         os.replace(out, so)       # atomic: concurrent builders end with the same file
     return so
 
@@ -105,8 +107,30 @@ def count_instructions(elf: str | os.PathLike, target: str | Target, *,
         if check or res.timed_out:
             res.check(Path(elf).name)
         if not out.is_file():
-            raise QemuError("the instruction-count plugin wrote no result "
-                            + res.stderr.decode(errors="replace").strip()[:200])
-        values = dict(line.split() for line in out.read_text().splitlines() if line.strip())
-    return InstructionCount(int(values["insns"]), int(values["range"]), int(values["window"]),
-                            int(values["windows"]), res)
+            detail = res.stderr.decode(errors="replace").strip().splitlines()
+            raise QemuError("the instruction-count plugin wrote no result (was it loaded? "
+                            f"QEMU needs TCG plugin support){': ' + detail[-1] if detail else ''}")
+        values = parse_counts(out.read_text())
+    return InstructionCount(values["insns"], values["range"], values["window"],
+                            values["windows"], res)
+
+
+_COUNT_KEYS = ("insns", "range", "window", "windows")
+
+
+def parse_counts(text: str) -> dict[str, int]:
+    """The plugin's ``key value`` lines; QemuError (one line) when a count is missing or not an
+    integer (an empty or truncated result file must not become a traceback or a zero)."""
+    values: dict[str, int] = {}
+    for line in text.splitlines():
+        parts = line.split()
+        if not parts:
+            continue
+        if len(parts) != 2 or not parts[1].isdigit():
+            raise QemuError(f"the instruction-count plugin wrote an unreadable line {line.strip()!r}")
+        values[parts[0]] = int(parts[1])
+    missing = [k for k in _COUNT_KEYS if k not in values]
+    if missing:
+        raise QemuError(f"the instruction-count plugin's result lacks {', '.join(missing)} "
+                        "(the run ended before the plugin wrote it?)")
+    return values

@@ -73,6 +73,14 @@ class RunResult:
         return self
 
 
+def _need_elf(elf: str | os.PathLike) -> None:
+    """One-line QemuError for a missing image (QEMU's own 'Could not load kernel' comes as an
+    exit status, after a start-up, and reads like an emulator fault)."""
+    if not Path(elf).is_file():
+        raise QemuError(f"firmware image {elf} does not exist: build it first "
+                        "(e.g. python -m kinefuse.firmware.build)")
+
+
 def qemu_command(elf: str | os.PathLike, target: str | Target, *,
                  serial: str = "null",
                  semihosting_args: Sequence[str] = (),
@@ -125,6 +133,7 @@ def run_elf(elf: str | os.PathLike, target: str | Target, *,
     reason = qemu_missing()
     if reason:
         raise QemuError(reason)
+    _need_elf(elf)
     tmp = tempfile.TemporaryDirectory(prefix="kf-qemu-")
     try:
         console_path = Path(tmp.name) / "console.txt"
@@ -242,6 +251,7 @@ class QemuSession:
         reason = qemu_missing()
         if reason:
             raise QemuError(reason)
+        _need_elf(self.elf)
         self._tmp = tempfile.TemporaryDirectory(prefix="kf-qemu-")
         listener = None
         if self.mode == "socket":
@@ -293,9 +303,16 @@ class QemuSession:
                 self.stop()
                 raise QemuError("QEMU did not report its pty: " + bytes(self._err).decode(errors="replace").strip()[:200])
         else:
-            while time.monotonic() < deadline and b"QEMU waiting for connection" not in self._err:
+            while b"QEMU waiting for connection" not in self._err:
                 if self.proc.poll() is not None:
-                    raise QemuError("QEMU exited at start: " + bytes(self._err).decode(errors="replace").strip()[:200])
+                    for t in self._threads:
+                        t.join(1.0)
+                    err = bytes(self._err).decode(errors="replace").strip()
+                    self.stop()
+                    raise QemuError("QEMU exited at start: " + (err.splitlines() or ["no message"])[-1][:200])
+                if time.monotonic() >= deadline:
+                    self.stop()
+                    raise QemuError(f"QEMU did not open its UART port within {self.start_timeout} s")
                 time.sleep(0.01)
         return self
 

@@ -100,9 +100,41 @@ def test_comparison_reports_the_first_flipped_bit(ci_inputs):
 
 
 def test_minus_zero_and_nan_payloads():
-    """+0 and -0 differ; NaNs with different payloads are equal (x86 vs ARM default NaN)."""
-    a = {"x": np.array([[0.0, np.float32("nan")]], np.float32)}
-    b = {"x": np.array([[-0.0, np.float32("nan")]], np.float32)}
-    assert compare.compare("a", a, "b", b) is not None
-    nan2 = np.array([0x7FC00000, 0xFFC00001], np.uint32).view(np.float32)
-    assert compare.compare("a", {"x": nan2[:1, None]}, "b", {"x": nan2[1:, None]}) is None
+    """+0 and -0 differ; NaNs with different payloads or signs differ too (bit patterns)."""
+    a = {"x": np.array([[0.0, 1.0]], np.float32)}
+    b = {"x": np.array([[-0.0, 1.0]], np.float32)}
+    m = compare.compare("a", a, "b", b)
+    assert m is not None and m.sample == 0 and m.fields == ["x"]
+    for pa, pb in ((0x7FC00000, 0xFFC00000), (0x7FC00000, 0x7FC00001), (0x7F800001, 0x7FC00000)):
+        nan2 = np.array([pa, pb], np.uint32).view(np.float32)
+        m = compare.compare("a", {"x": nan2[:1, None]}, "b", {"x": nan2[1:, None]})
+        assert m is not None and m.sample == 0, (hex(pa), hex(pb))
+    same = np.array([0x7FC00001], np.uint32).view(np.float32)
+    assert compare.compare("a", {"x": same[:, None]}, "b", {"x": same.copy()[:, None]}) is None
+
+
+def test_float64_outputs_compare_bits_not_truncated_values():
+    """Reference (float64) outputs that differ below 1.0 are a mismatch, not equal int parts."""
+    a = {"x": np.array([[0.25], [1.5]])}
+    b = {"x": np.array([[0.5], [1.5]])}
+    m = compare.compare("a", a, "b", b)
+    assert m is not None and m.sample == 0 and m.differing_samples == 1
+
+
+def test_mismatch_in_the_last_sample_is_reported_with_its_inputs():
+    n = 5
+    a = {"q": np.zeros((n, 4), np.float32), "flag": np.zeros((n, 1), bool)}
+    b = {"q": a["q"].copy(), "flag": a["flag"].copy()}
+    b["flag"][n - 1, 0] = True
+    inputs = {"gyr": np.arange(3 * n, dtype=float).reshape(n, 3)}
+    m = compare.compare("a", a, "b", b, inputs)
+    assert m is not None and m.sample == 4 and m.differing_samples == 1 and m.fields == ["flag"]
+    assert m.inputs == {"gyr": [12.0, 13.0, 14.0]}
+    assert "first at sample 4 in flag" in m.message() and "gyr=[12.0, 13.0, 14.0]" in m.message()
+
+
+@pytest.mark.parametrize("a, b", [({"q": np.zeros((0, 4), np.float32)}, {"q": np.zeros((0, 4), np.float32)}),
+                                  ({}, {})], ids=["zero-samples", "no-outputs"])
+def test_comparing_nothing_is_an_error_not_a_pass(a, b):
+    with pytest.raises(ValueError, match="no samples"):
+        compare.compare("a", a, "b", b)
