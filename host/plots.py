@@ -136,7 +136,8 @@ def plot_estimate(trial, q_est: np.ndarray, label: str, out: str | Path,
     colors = {"total": "black", "heading": "tab:orange", "inclination": "tab:green"}
     for kind in metrics.KINDS:
         ax.plot(ts, getattr(errs, kind)[sel], color=colors[kind], lw=0.8,
-                label=f"{kind} (RMSE {rmse[kind]:.2f}°)")
+                label=f"{kind} (RMSE {rmse[kind]:.2f}°)" if np.isfinite(rmse[kind])
+                else f"{kind} (no movement phase scored)")
     ax.set_ylabel("error (°)")
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3)

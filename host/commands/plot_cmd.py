@@ -185,8 +185,12 @@ def run(args) -> int:
     from kinefuse.host.metrics import score_trial
 
     s = score_trial(q, trial)
-    print(f"{spec.label} on {trial.name}: RMSE total {s['total']:.2f}°, heading "
-          f"{s['heading']:.2f}°, inclination {s['inclination']:.2f}° (movement phases)",
-          file=sys.stderr)
+    if not np.isfinite(s["total"]):     # printed "RMSE total nan°" for a trial at rest throughout
+        print(f"{spec.label} on {trial.name}: no movement phase with a reference to score "
+              f"(the plot shows the whole trial)", file=sys.stderr)
+    else:
+        print(f"{spec.label} on {trial.name}: RMSE total {s['total']:.2f}°, heading "
+              f"{s['heading']:.2f}°, inclination {s['inclination']:.2f}° (movement phases)",
+              file=sys.stderr)
     print(str(out))
     return 0

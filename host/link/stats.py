@@ -353,8 +353,8 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
         st = st[st["_sysid"] == sysid]
         if st.size:
             status, statuses = st[-1], st
-            v = int(status["firmware_version"])
-            out["firmware_version"] = f"{v >> 24}.{(v >> 16) & 0xFF}.{(v >> 8) & 0xFF}"
+            from kinefuse.host.link.recorder import firmware_version_text   # as decode and record say it
+            out["firmware_version"] = firmware_version_text(int(status["firmware_version"]))
             out["dialect_hash"] = f"0x{int(status['dialect_hash']):08X}"
             out["dialect_match"] = int(status["dialect_hash"]) == DIALECT_HASH()
             out["unit_reported"] = {k: int(status[k]) for k in

@@ -105,7 +105,7 @@ def test_stats_recover_known_values(synthetic):
     ticks = 39  # k % 200 == 0 for k < 8000, minus the lost k = 5000
     assert s["frames_ok"] == 8000 - 3 + 2 * ticks and s["crc_errors"] == 0
     (u,) = s["units"]
-    assert u["sysid"] == 3 and u["firmware_version"] == "1.2.0" and u["dialect_match"] is False
+    assert u["sysid"] == 3 and u["firmware_version"] == "1.2.0-dev" and u["dialect_match"] is False
     m = u["messages"]["KF_RAW_SAMPLE"]
     assert m["count"] == 7997 and m["samples_lost"] == 3 and m["resets"] == 0 and m["stride"] == 1
     assert m["requested_hz"] == 200.0

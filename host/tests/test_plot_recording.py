@@ -8,7 +8,7 @@ import pytest
 from kinefuse.host.broad import EXCERPT_DIR
 from kinefuse.host.plots import lost_before, status_flags
 
-MINE = ("plot_cmd",)
+MINE = ("plot_cmd", "cli_cmd")   # cli_cmd: kinefuse sim
 TRIAL = EXCERPT_DIR / "24_disturbed_tapping_A.npz"
 
 
@@ -79,3 +79,14 @@ def test_recording_errors_are_one_line(run, kfr_files, tmp_path, argv, text):
 def test_unit_option_is_refused_for_a_broad_trial(run, tmp_path):
     _one_line_error(run("plot", "--input", TRIAL, "--unit", "2", "--out", tmp_path / "b.png"),
                     "--unit applies to .kfr unit recordings")
+
+
+def test_a_trial_without_movement_phases_says_so(run, tmp_path):
+    """A simulated trial at rest printed "RMSE total nan°, heading nan°, inclination nan°"."""
+    mat = tmp_path / "rest.mat"
+    code, _, err = run("sim", "run", "rest", "--duration", "3", "--out", mat)
+    assert code == 0, err
+    code, _, err = run("plot", "--input", mat, "--filter", "madgwick", "--impl", "f32",
+                       "--out", tmp_path / "rest.png")
+    assert code == 0, err
+    assert "no movement phase with a reference to score" in err and "nan" not in err, err
