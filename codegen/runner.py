@@ -214,10 +214,9 @@ def run(name: str, impl: str, inputs: dict[str, np.ndarray], params: dict[str, f
 
 
 def bits(a: np.ndarray) -> np.ndarray:
-    """Comparable bit patterns: uint32 views of binary32 (all NaNs made equal), ints as is."""
+    """Comparable bit patterns: uint32 views of binary32 (every NaN payload and sign as it is:
+    bit-exact means the same bits), ints as is."""
     a = np.asarray(a)
     if a.dtype == np.float32:
-        b = a.view(np.uint32).copy()
-        b[np.isnan(a)] = 0x7FC00000
-        return b
+        return a.view(np.uint32).copy()
     return a.astype(np.int64)
