@@ -6,6 +6,7 @@ command's input is never its output, ``--force`` or not.
 from __future__ import annotations
 
 import contextlib
+import os
 from pathlib import Path
 
 from kinefuse.host.errors import KinefuseError
@@ -84,4 +85,37 @@ def output_folder(path, option: str = "--out"):
                 d.rmdir()
             except OSError:
                 break
+        raise
+
+
+class Staged:
+    """Files written under temporary names and renamed into place together (:func:`staged`)."""
+
+    def __init__(self):
+        self.pairs: list[tuple[Path, Path]] = []    # (temporary, final), in the order asked
+
+    def path(self, final) -> Path:
+        """The temporary name to write ``final`` under: same folder, hidden, same suffix (writers
+        that choose the format by it still do)."""
+        final = Path(final)
+        tmp = final.with_name(f".{final.stem}.{os.getpid()}.partial{final.suffix}")
+        self.pairs.append((tmp, final))
+        return tmp
+
+
+@contextlib.contextmanager
+def staged():
+    """``with staged() as st: write(st.path(final)) ...``: when the block ends normally every
+    temporary file replaces its final one; on any failure (a full disk, an interrupt, an error)
+    the temporary files are removed.  A failed write then leaves neither a cut file nor a set
+    that is half new, and with --force the earlier files stay as they were."""
+    st = Staged()
+    try:
+        yield st
+        for tmp, final in st.pairs:
+            os.replace(tmp, final)
+    except BaseException:
+        for tmp, _final in st.pairs:
+            with contextlib.suppress(OSError):
+                tmp.unlink()
         raise

@@ -20,7 +20,7 @@ import numpy as np
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.console import print_table
 from kinefuse.host import argtypes
-from kinefuse.host.outputs import add_force_arg, check_new_file
+from kinefuse.host.outputs import add_force_arg, check_new_file, staged
 
 
 def register(subparsers) -> None:
@@ -122,21 +122,13 @@ def _run(args) -> int:
              for name in recs} if args.out else {}
     # every file is written under a temporary name and renamed once all are written: a failed
     # or interrupted write left the first sensor's file (or a truncated one) under its name
-    partial = {}
-    try:
+    with staged() as stage:
         for name, r in recs.items():
             s = _summary(r)
             if name in paths:
-                partial[name] = paths[name].with_name(f".{paths[name].stem}.partial{paths[name].suffix}")
-                _write(r, partial[name], shown=paths[name])
+                _write(r, stage.path(paths[name]), shown=paths[name])
                 s["file"] = str(paths[name])
             summary["sensors"][name] = s
-        for name, tmp in partial.items():
-            tmp.replace(paths[name])
-    except BaseException:
-        for tmp in partial.values():
-            tmp.unlink(missing_ok=True)
-        raise
     if args.json:
         print(json.dumps(summary))
         return 0

@@ -49,6 +49,7 @@ from kinefuse.host.errors import KinefuseError
 from kinefuse.host.kinematics import alignment, cycles, joint
 from kinefuse.host.kinematics import orientation as O
 from kinefuse.host.kinematics import quat as Q
+from kinefuse.host.outputs import staged
 from kinefuse.host.readers.recording import Recording
 
 
@@ -555,17 +556,12 @@ def write_report(out_dir: str, kind: str, res: JointResult, cs: cycles.CycleSet,
     for path in final.values():
         if os.path.isdir(path):
             raise KinefuseError(f"cannot write {path}: a folder of that name is in the way")
-    tmp = {name: os.path.join(out_dir, f".{kind}_{name}.tmp{os.getpid()}") for name in REPORT_FILES}
-    p = tmp.__getitem__
     try:
-        summary = _write_files(p, kind, res, cs, title=title, inputs=inputs,
-                               max_cycle_rmse_deg=max_cycle_rmse_deg)
-        for name in REPORT_FILES:
-            os.replace(tmp[name], final[name])
+        with staged() as stage:
+            tmp = {name: str(stage.path(final[name])) for name in REPORT_FILES}
+            summary = _write_files(tmp.__getitem__, kind, res, cs, title=title, inputs=inputs,
+                                   max_cycle_rmse_deg=max_cycle_rmse_deg)
     except BaseException as exc:
-        for path in tmp.values():
-            with contextlib.suppress(OSError):
-                os.unlink(path)
         if made:
             with contextlib.suppress(OSError):
                 os.rmdir(out_dir)            # the (now empty) folder this call created

@@ -32,7 +32,6 @@ from __future__ import annotations
 
 import contextlib
 import csv
-import os
 from pathlib import Path
 
 import numpy as np
@@ -41,6 +40,7 @@ from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.dialect import RAW_SCALE
 from kinefuse.host.link.frames import DecodedFile
 from kinefuse.host.link.spec import MessageSpec, kinefuse_dialect
+from kinefuse.host.outputs import staged
 
 _UNIT_SUFFIX = {"m/s/s": "mps2", "m/s": "mps", "rad/s": "radps", "mrad/s": "mradps", "deg/s": "degps",
                 "cdeg/s": "cdegps", "ddeg/s": "ddegps", "%": "pct", "d%": "dpct", "c%": "cpct", "m^2": "m2",
@@ -159,15 +159,10 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
     # Every CSV is written under a temporary name and renamed once all are complete: a full
     # disk or an interrupt part-way left a cut CSV (and the files before it) that read as a
     # whole export; now it leaves nothing (and, with --force, the earlier export as it was).
-    parts: list[tuple[Path, Path]] = []
     try:
-        written = _export(df, d, by_msg, out_dir, parts, progress)
-        for tmp, final in parts:
-            os.replace(tmp, final)
+        with staged() as stage:
+            written = _export(df, d, by_msg, out_dir, stage, progress)
     except BaseException as exc:
-        for tmp, _final in parts:
-            with contextlib.suppress(OSError):
-                tmp.unlink()
         for folder in made:             # innermost first
             with contextlib.suppress(OSError):
                 folder.rmdir()
@@ -179,9 +174,9 @@ def export_csv(df: DecodedFile, out_dir, messages: list[str] | None = None, prog
     return written
 
 
-def _export(df: DecodedFile, d, by_msg: dict, out_dir: Path, temps: list, progress) -> list[dict]:
-    """Write the CSVs of :func:`export_csv` under temporary names, listed in ``temps`` as
-    (temporary, final path) as each is opened."""
+def _export(df: DecodedFile, d, by_msg: dict, out_dir: Path, stage, progress) -> list[dict]:
+    """Write the CSVs of :func:`export_csv` under the temporary names of ``stage``
+    (:func:`~kinefuse.host.outputs.staged`)."""
     start_mono = df.start_monotonic_ns
     start_unix = df.start_unix_ns
     from kinefuse.host.link.stats import host_time_from_fit, unit_clock_segments
@@ -226,9 +221,7 @@ def _export(df: DecodedFile, d, by_msg: dict, out_dir: Path, temps: list, progre
             cols += _columns(spec, arr)
             fname = spec.name if unit is None else f"{spec.name}_s{unit[0]}_u{unit[1]}"
             path = out_dir / f"{fname}.csv"
-            tmp = out_dir / f".{fname}.csv.partial"
-            temps.append((tmp, path))
-            _write(tmp, cols, arr.size, _comments(df, spec.name, pairs, clock if has_host else None), shown=path)
+            _write(stage.path(path), cols, arr.size, _comments(df, spec.name, pairs, clock if has_host else None), shown=path)
             written.append({"message": spec.name, "file": str(path), "rows": int(arr.size),
                             **({} if unit is None else {"stream": unit[0], "sysid": unit[1]})})
             if progress is not None:
