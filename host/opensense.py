@@ -59,20 +59,35 @@ def common_grid(series: list[ImuSeries], rate_hz: float) -> np.ndarray:
     end = min(float(s.t[-1]) for s in series)
     k0, k1 = int(np.ceil(start * rate_hz - 1e-9)), int(np.floor(end * rate_hz + 1e-9))
     if k1 < k0 + 1:
-        raise KinefuseError("the IMUs' recordings overlap in time by less than two rows at this rate: "
-                            "nothing to write")
+        # one IMU: "overlap" named a second recording that is not there
+        what = (f"{series[0].name}'s samples span {end - start:.3f} s" if len(series) == 1 else
+                "the IMUs' recordings do not overlap in time" if end < start else
+                f"the IMUs' recordings overlap in time by {end - start:.3f} s")
+        raise KinefuseError(f"{what}: less than two rows at {rate_hz:g} Hz, nothing to write")
     return np.arange(k0, k1 + 1) / rate_hz
 
 
-def longest_gap(t: np.ndarray) -> float:
-    """The longest time step (s) of a series."""
-    return float(np.max(np.diff(t))) if len(t) > 1 else 0.0
+def gap_in_grid(s: ImuSeries, grid: np.ndarray) -> tuple[float, float]:
+    """(longest step s, time it starts) among the samples the rows at ``grid`` are interpolated
+    between: from the last sample at or before the first row to the first at or after the last
+    (a margin of one row missed a gap just before or after the common span)."""
+    i0 = max(int(np.searchsorted(s.t, grid[0], side="right")) - 1, 0)
+    i1 = min(int(np.searchsorted(s.t, grid[-1], side="left")), len(s.t) - 1)
+    used = s.t[i0:i1 + 1]
+    if len(used) < 2:
+        return 0.0, float(used[0]) if len(used) else float(grid[0])
+    k = int(np.argmax(np.diff(used)))
+    return float(used[k + 1] - used[k]), float(used[k])
 
 
 def write_sto(path: str | Path, grid: np.ndarray, series: list[ImuSeries], rate_hz: float) -> int:
     """Write the OpenSense table; returns the number of rows."""
+    from kinefuse.host.outputs import staged
+
     cols = [slerp_at(s.t, s.q, grid) for s in series]
-    with open(path, "w", newline="\n") as f:
+    # under a temporary name, renamed when complete: a failed or interrupted write leaves no
+    # cut table (and with --force the earlier one as it was)
+    with staged() as st, open(st.path(path), "w", newline="\n") as f:
         f.write(f"DataRate={rate_hz:.6f}\nDataType=Quaternion\nversion=3\n"
                 f"OpenSimVersion={OPENSIM_VERSION}\nendheader\n")
         f.write("time\t" + "\t".join(s.name for s in series) + "\n")

@@ -81,6 +81,19 @@ def _flag_panel(ax, ts, flags: dict[str, np.ndarray], sel, step: float, first_co
     ax.grid(axis="x", alpha=0.3)
 
 
+def _save(fig, out: Path) -> None:
+    """Save under a temporary name, renamed when complete: a failed write (a full disk, an
+    interrupt) leaves no cut PNG, and with --force the earlier plot as it was."""
+    import io
+
+    from kinefuse.host.outputs import staged
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png")
+    out.parent.mkdir(parents=True, exist_ok=True)
+    with staged() as st:
+        st.path(out).write_bytes(buf.getvalue())
+
+
 def plot_estimate(trial, q_est: np.ndarray, label: str, out: str | Path,
                   status: dict[str, np.ndarray] | None = None,
                   window: tuple[float, float] | None = None) -> Path:
@@ -150,8 +163,7 @@ def plot_estimate(trial, q_est: np.ndarray, label: str, out: str | Path,
     if len(flags) == 1:
         ax.set_title("status flags: none reported by this filter", fontsize=8, loc="right")
     ax.set_xlim(ts[0], ts[-1])
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out)
+    _save(fig, out)
     return out
 
 
@@ -231,6 +243,5 @@ def plot_recording(t: np.ndarray, q_est: np.ndarray, label: str, title: str, out
     _flag_panel(axes[5], ts, flags, sel, step, "tab:red")
     axes[5].set_xlabel(f"time ({time_text})")
     axes[5].set_xlim(ts[0], ts[-1])
-    out.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(out)
+    _save(fig, out)
     return out

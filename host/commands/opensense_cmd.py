@@ -52,6 +52,8 @@ def _imus(items: list[str]) -> list[tuple[str | None, str]]:
         if not NAME.fullmatch(name):
             raise KinefuseError(f"--imu {item!r}: {name!r} is not an IMU frame name (letters, digits, _; "
                                 f"OpenSense names them <body>_imu)")
+        if name.lower() == "time":      # the table's first column is named time
+            raise KinefuseError(f"--imu {item!r}: 'time' names the table's time column, not an IMU frame")
         if any(n == name for _, n in out):
             raise KinefuseError(f"--imu: the name {name} is given twice")
         if any(u == unit for u, _ in out):
@@ -64,7 +66,7 @@ def _imus(items: list[str]) -> list[tuple[str | None, str]]:
 
 def run(args) -> int:
     from kinefuse.host.commands.replay_cmd import read_imu_recording
-    from kinefuse.host.opensense import ImuSeries, common_grid, longest_gap, write_sto
+    from kinefuse.host.opensense import ImuSeries, common_grid, gap_in_grid, write_sto
 
     name = args.filter or runner.default_filter()
     if name not in runner.imu_filter_names():
@@ -86,14 +88,28 @@ def run(args) -> int:
         raise KinefuseError(f"--out {out}: OpenSense reads .sto tables, name it *.sto")
     check_new_file(out, args.force, inputs=[path])
 
+    recs, units, warned = [], {}, set()
+    from kinefuse.host.readers.kfr import decode_once
+    with decode_once():    # every unit read before any filter runs: a missing one fails first
+        for unit, imu_name in imus:
+            if unit is not None and Path(path).suffix.lower() != ".kfr":
+                raise KinefuseError(f"--imu {unit}={imu_name}: units are chosen in .kfr recordings; "
+                                    f"{path} holds one sensor (give --imu {imu_name})")
+            rec = read_imu_recording(path, unit)
+            if rec.fmt == "kfr":
+                # 1 and s0:1 name the same unit: one sensor cannot be on two bodies
+                key = (rec.metadata["stream"], rec.metadata["sysid"])
+                if key in units:
+                    raise KinefuseError(f"--imu {unit}={imu_name}: unit {rec.metadata['unit']} is "
+                                        f"already given as {units[key]}")
+                units[key] = imu_name
+            recs.append((imu_name, rec))
     series, rates = [], []
-    for unit, imu_name in imus:
-        if unit is not None and Path(path).suffix.lower() != ".kfr":
-            raise KinefuseError(f"--imu {unit}={imu_name}: units are chosen in .kfr recordings; {path} "
-                                f"holds one sensor (give --imu {imu_name})")
-        rec = read_imu_recording(path, unit)
+    for imu_name, rec in recs:
         for w in rec.warnings:
-            print(f"kinefuse: warning: {w}", file=sys.stderr)
+            if w not in warned:     # the file's own warnings (truncated, damaged) once, not per unit
+                warned.add(w)
+                print(f"kinefuse: warning: {w}", file=sys.stderr)
         inputs = runner.recording_inputs(rec)
         t = np.asarray(inputs.t, dtype=np.float64)
         if len(t) < 2:
@@ -108,10 +124,8 @@ def run(args) -> int:
     rate = args.rate if args.rate is not None else float(max(1, round(min(rates))))
     grid = common_grid(series, rate)
     for s in series:
-        inside = s.t[(s.t >= grid[0] - 1.0 / rate) & (s.t <= grid[-1] + 1.0 / rate)]
-        gap = longest_gap(inside)
+        gap, t_gap = gap_in_grid(s, grid)
         if gap > args.max_gap:
-            t_gap = float(inside[np.argmax(np.diff(inside))])
             raise KinefuseError(f"{s.name}: {gap:.3f} s without samples after t = {t_gap:.3f} s (longer than "
                                 f"--max-gap {args.max_gap:g} s): interpolating would invent the motion")
     try:

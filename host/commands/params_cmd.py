@@ -99,11 +99,12 @@ def describe(names) -> dict[str, dict]:
 
 
 def _describe_text(d: dict | None) -> str:
+    from kinefuse.host.commands.filters_cmd import range_text
     if d is None:
         return "  (not in this host's firmware tables)"
     num = lambda v: str(v) if isinstance(v, int) else f"{v:g}"   # noqa: E731 (counts stay whole)
     rng = ("one of " + " | ".join(num(c) for c in d["choices"]) if d["choices"]
-           else f"[{num(d['min'])}, {num(d['max'])}]")
+           else range_text(d["min"], d["max"]))
     unit = f"{d['unit']}, " if d["unit"] else ""
     return f"  ({unit}{rng}, default {num(d['default'])}) {d['meaning']}"
 

@@ -7,6 +7,8 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+import numpy as np
+
 from kinefuse.host import broad
 from kinefuse.host.bench import accuracy
 from kinefuse.host.errors import KinefuseError
@@ -72,10 +74,11 @@ def _check_window_args(args) -> None:
         raise KinefuseError(f"--start/--end: need start < end, got {args.start:g} and {args.end:g}")
 
 
-def _window(args, t0: float, t1: float, what: str):
-    """--start/--end (s on the plot's time axis, which runs from t0 to t1) or None."""
+def _window(args, t, what: str):
+    """--start/--end (s on the plot's time axis, the sample times ``t``) or None."""
     if args.start is None and args.end is None:
         return None
+    t0, t1 = float(t[0]), float(t[-1])
     start = t0 if args.start is None else args.start
     end = t1 if args.end is None else args.end
     if start >= t1:
@@ -83,6 +86,12 @@ def _window(args, t0: float, t1: float, what: str):
     if end <= max(t0, 0.0) or not start < end:
         raise KinefuseError(f"--start/--end: {what} runs from {max(t0, 0.0):.1f} to {t1:.1f} s; "
                             f"got {start:g} to {end:g}")
+    # a window between two samples (or in a gap) was an internal IndexError, one sample an
+    # empty plot
+    n = int(np.count_nonzero((t >= start) & (t <= end)))
+    if n < 2:
+        raise KinefuseError(f"--start/--end: {n} sample(s) of {what} between {start:g} and {end:g} s; "
+                            f"give a window with at least two")
     return start, end
 
 
@@ -97,7 +106,6 @@ def _out_path(args, stem: str, spec, input_file: Path) -> Path:
 
 def _plot_recording(args, spec, path: Path) -> int:
     """A recording without reference: replay it through the filter, then plot."""
-    import numpy as np
     from rich.console import Console
 
     from kinefuse.host import runner
@@ -119,11 +127,15 @@ def _plot_recording(args, spec, path: Path) -> int:
     t = np.asarray(inputs.t, dtype=np.float64)
     if len(t) < 2:
         raise KinefuseError(f"{path}: {len(t)} sample(s): nothing to plot")
-    window = _window(args, float(t[0]), float(t[-1]), "the recording")
+    window = _window(args, t, "the recording")
     who = f" unit {rec.metadata['unit']}" if rec.fmt == "kfr" else ""
     if out is None:
         several = rec.fmt == "kfr" and len(rec.metadata.get("units_in_file", [])) > 1
-        out = _out_path(args, path.stem + (f"_u{rec.metadata['sysid']}" if several else ""), spec, path)
+        tag = ""
+        if several:     # two units with one id on two streams both got _u1: the stream too
+            m = rec.metadata
+            tag = f"_u{m['sysid']}" if m["unit"] == str(m["sysid"]) else f"_s{m['stream']}_u{m['sysid']}"
+        out = _out_path(args, path.stem + tag, spec, path)
     for w in rec.warnings:
         print(f"kinefuse: warning: {w}", file=sys.stderr)
     unit_q = None
@@ -164,15 +176,13 @@ def run(args) -> int:
     if args.unit is not None:
         raise KinefuseError("--unit applies to .kfr unit recordings, not to BROAD trials")
     trial = broad.load_trial(trial_file)
-    window = _window(args, 0.0, trial.duration_s, "the trial")
+    window = _window(args, np.asarray(trial.t, dtype=np.float64), "the trial")
     out = _out_path(args, trial.name, spec, trial_file)
     from rich.console import Console
 
     err = Console(stderr=True)
     with err.status(f"running {spec.label} on {trial.name} ({trial.n} samples)"):
         res = accuracy.estimate(spec, trial)
-    import numpy as np
-
     q = np.asarray(res.q, dtype=np.float64)
     if q.shape != (trial.n, 4):
         raise KinefuseError(f"{spec.label} returned quaternions of shape {q.shape} for {trial.n} samples")

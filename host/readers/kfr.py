@@ -52,6 +52,8 @@ read the same way; a raw capture has no host times, so ``t`` is then the unit's 
 """
 from __future__ import annotations
 
+import contextlib
+
 import re
 from pathlib import Path
 
@@ -82,7 +84,32 @@ def _error(path: str, exc: KinefuseError) -> ReaderError:
     return ReaderError(path, msg)
 
 
+_decoded: dict | None = None     # path -> decoded file, inside decode_once()
+
+
+@contextlib.contextmanager
+def decode_once():
+    """Within the block each file is decoded once however many of its units are read (reading a
+    unit decodes the whole file: the costly part for a long recording with many units)."""
+    global _decoded
+    outer = _decoded
+    _decoded = {} if outer is None else outer
+    try:
+        yield
+    finally:
+        _decoded = outer
+
+
 def _decode(path: str):
+    if _decoded is None:
+        return _decode_file(path)
+    key = str(Path(path).resolve())
+    if key not in _decoded:
+        _decoded[key] = _decode_file(path)
+    return _decoded[key]
+
+
+def _decode_file(path: str):
     from kinefuse.host.link.frames import decode_file, is_recording
     p = Path(path)
     if p.suffix.lower() == ".kfr" and p.is_file() and not is_recording(p):

@@ -90,3 +90,64 @@ def test_a_trial_without_movement_phases_says_so(run, tmp_path):
                        "--out", tmp_path / "rest.png")
     assert code == 0, err
     assert "no movement phase with a reference to score" in err and "nan" not in err, err
+
+
+# ------------------------------------------------------------------ review fixes (2026-12-04)
+@pytest.mark.parametrize("samples", [0, 1])
+def test_a_window_without_two_samples_is_one_line(run, kfr_files, tmp_path, samples):
+    """A window between two samples was an internal IndexError; one with a single sample gave an
+    empty plot.  The one-unit file is sampled at 500 Hz (2 ms)."""
+    from kinefuse.host.readers import read_recording
+    one, _ = kfr_files
+    t = read_recording(str(one)).t
+    k = int(np.searchsorted(t, 0.5))
+    mid = (t[k] + t[k + 1]) / 2 if samples == 0 else t[k]       # 0.4 ms either side: 0 or 1 sample
+    start, end = f"{mid - 0.0004:.6f}", f"{mid + 0.0004:.6f}"
+    out = tmp_path / "w.png"
+    code, _, err = run("plot", "--input", one, "--out", out, "--start", start, "--end", end)
+    last = err.strip().splitlines()[-1]
+    assert code == 2 and f"{samples} sample(s) of the recording between" in last, err
+    assert "at least two" in last
+    assert "Traceback" not in err and "internal error" not in err and not out.exists()
+
+
+def test_a_trial_window_without_samples_is_one_line(run, tmp_path):
+    out = tmp_path / "t.png"
+    _one_line_error(run("plot", "--input", TRIAL, "--filter", "madgwick", "--impl", "f32", "--out", out,
+                        "--start", "5", "--end", "5.0001"), "0 sample(s) of the trial between 5 and 5.0001 s")
+    assert not out.exists()
+
+
+def test_a_failed_save_leaves_the_earlier_plot(run, kfr_files, tmp_path, monkeypatch):
+    """The PNG was saved in place: a save that failed half-way (a full disk) left a cut file,
+    and with --force the earlier plot was already gone."""
+    from pathlib import Path
+    one, _ = kfr_files
+    out = tmp_path / "p.png"
+    out.write_bytes(b"an earlier plot")
+    write = Path.write_bytes
+
+    def full(self, data):
+        write(self, data[:100])
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(Path, "write_bytes", full)
+    code, _, err = run("plot", "--input", one, "--out", out, "--force")
+    assert code == 2 and "No space left on device" in err.strip().splitlines()[-1], err
+    assert out.read_bytes() == b"an earlier plot"
+    assert [p.name for p in tmp_path.iterdir()] == ["p.png"]
+
+
+def test_default_names_of_two_units_with_one_id(run, tmp_path, monkeypatch):
+    """Two units that both have id 1 (on two ports) both got <file>_u1_...png: the second plot
+    was refused as existing."""
+    from kinefuse.host.link.recorder import Recorder
+    rec = tmp_path / "same.kfr"
+    Recorder(rec, ["fake:rate=200", "fake:rate=200"]).run(0.3)
+    monkeypatch.chdir(tmp_path)
+    made = []
+    for unit in ("s0:1", "s1:1"):
+        code, stdout, err = run("plot", "--input", rec, "--unit", unit)
+        assert code == 0, err
+        made.append(stdout.strip())
+    assert made == ["same_s0_u1_flagship_f32.png", "same_s1_u1_flagship_f32.png"]
