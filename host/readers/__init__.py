@@ -41,7 +41,8 @@ def _check_file(path: str) -> None:
         raise ReaderError(path, "is not a regular file (a pipe or a device): save the recording to a file first")
 
 
-def detect_format(path: str) -> str:
+def detect_format(path: str | os.PathLike) -> str:
+    path = os.fspath(path)   # a Path was an AttributeError (path.lower())
     _check_file(path)
     if path.lower().endswith((".mat", ".npz")):
         return broad.FORMAT
@@ -74,10 +75,11 @@ def detect_format(path: str) -> str:
                             "unit recording)")
 
 
-def read_recording(path: str, fmt: str | None = None, **options) -> Recording:
+def read_recording(path: str | os.PathLike, fmt: str | None = None, **options) -> Recording:
     """Read ``path`` (format auto-detected unless ``fmt``); options go to the reader
     (``fs`` for MATRIX/seed-004, ``gyro_range_dps`` for MetaBase, ``acc_range_g`` for MATRIX,
     ``unit`` for ``kfr``)."""
+    path = os.fspath(path)
     fmt = fmt or detect_format(path)
     if fmt not in READERS:
         raise ReaderError(path, f"unknown format {fmt!r}; choose one of {', '.join(READERS)}")

@@ -48,6 +48,15 @@ def test_xsens_dot_seed_rows(tmp_path):
     np.testing.assert_allclose(np.linalg.norm(r.quat, axis=1), 1.0)
 
 
+def test_a_path_object_reads_like_its_string(tmp_path):
+    """read_recording(Path) was an AttributeError (path.lower()) inside format detection."""
+    p = write(tmp_path, "dot.csv", DOT)
+    from pathlib import Path
+    assert detect_format(Path(p)) == "xsens-dot"
+    r = read_recording(Path(p))
+    np.testing.assert_array_equal(r.acc, read_recording(p).acc)
+
+
 def test_xsens_dot_errors_name_file_and_line(tmp_path):
     rows = DOT.splitlines()
     back = rows[:4] + [rows[4].replace("1296815817", "1296700000")] + rows[5:]
