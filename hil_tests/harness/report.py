@@ -187,9 +187,16 @@ def _fw_row(name, case, system, lp, n, error=None) -> dict:
             "loop": lp, "samples": n, "mismatch": None, "error": error}
 
 
-def write_markdown(rep: Report, out_dir: Path, png_name: str | None) -> Path:
+def run_time_text(seconds: float) -> str:
+    """The report's wall-clock time, said as such: "(0 s)" after a short run read as scenarios
+    of no length."""
+    return f"run time {seconds:,.0f} s" if seconds >= 10 else f"run time {seconds:.1f} s"
+
+
+def write_markdown(rep: Report, out_dir: Path, png_name: str | None, path: Path | None = None) -> Path:
+    """``out_dir``/sil_report.md, or ``path`` (the temporary name of a staged write)."""
     lines = ["# kinefuse SIL/PIL report", "",
-             f"{len(rep.filters)} filters × {len(rep.cases)} scenarios, {rep.seconds:.0f} s. "
+             f"{len(rep.filters)} filters × {len(rep.cases)} scenarios, {run_time_text(rep.seconds)}. "
              "Errors: BROAD metric (e = q_est ⊗ q_true⁻¹; RMSE over scored samples; degrees; "
              "ENU earth frame).", ""]
     systems = sorted({s for (_f, _c, s) in rep.errors}, key=["ref", "f32", "q"].index)
@@ -250,12 +257,13 @@ def write_markdown(rep: Report, out_dir: Path, png_name: str | None) -> Path:
         lines.append("")
     if png_name:
         lines += [f"![errors]({png_name})", ""]
-    path = out_dir / "sil_report.md"
+    path = Path(path) if path is not None else out_dir / "sil_report.md"
     path.write_text("\n".join(lines))
     return path
 
 
-def write_png(rep: Report, out_dir: Path) -> Path | None:
+def write_png(rep: Report, out_dir: Path, path: Path | None = None) -> Path | None:
+    """``out_dir``/sil_report.png (or ``path``); None, and nothing written, without f32/q errors."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -280,7 +288,7 @@ def write_png(rep: Report, out_dir: Path) -> Path | None:
         ax.grid(axis="y", alpha=0.3)
     axes[0, 0].legend(fontsize=7, ncol=min(5, len(rep.filters)))
     fig.tight_layout()
-    path = out_dir / "sil_report.png"
+    path = Path(path) if path is not None else out_dir / "sil_report.png"
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
@@ -290,7 +298,9 @@ def load_cost(path: str | Path) -> list[dict]:
     from kinefuse.host.errors import KinefuseError
     try:
         data = json.loads(Path(path).read_text())
-    except (OSError, ValueError) as exc:
+    except OSError as exc:      # (the message without "[Errno 21] ...: 'path'" repeated)
+        raise KinefuseError(f"cannot read cost JSON {path}: {exc.strerror or exc}") from None
+    except ValueError as exc:
         raise KinefuseError(f"cannot read cost JSON {path}: {exc}") from None
     # checked here, before the report runs: a row without these keys was a KeyError from
     # write_markdown once every loop had run

@@ -69,6 +69,9 @@ def test_report_marks_mismatches_and_errors(tmp_path):
     (["--broad", "none", "--broad-seconds", "5"], "--broad-seconds: this report has no BROAD trial (--broad none)"),
     (["--ci", "--broad-seconds", "5"], "--broad-seconds: this report has no BROAD trial (--ci leaves it out"),
     (["--firmware", "--pil-samples", "-1"], "--pil-samples and --sil-samples must be >= 0"),
+    (["--firmware", "--sil-samples", "-1"], "--pil-samples and --sil-samples must be >= 0"),
+    # (the base has --no-qemu) the PIL loops were left out and N ignored without a word
+    (["--firmware", "--pil-samples", "10"], "--pil-samples sets the PIL loops (QEMU), which --no-qemu leaves out"),
 ])
 def test_sil_report_bad_arguments(tmp_path, capsys, argv, msg):
     rc = main(["sil", "report", "--no-qemu", "--out", str(tmp_path)] + argv)
@@ -125,3 +128,68 @@ def test_sil_report_keeps_an_earlier_report_unless_forced(tmp_path, capsys):
     (tmp_path / "file").write_text("x")
     assert main(argv[:-1] + [str(tmp_path / "file")]) == 2
     assert "is a file, not a folder" in capsys.readouterr().err
+
+
+def test_sil_report_failed_write_leaves_the_earlier_report(tmp_path, capsys, monkeypatch):
+    """The files were written one after the other after the work: a full disk on the Markdown
+    left this run's PNG next to the earlier run's Markdown and JSON (with --force)."""
+    import errno
+    argv = ["sil", "report", "--filters", "madgwick", "--scenarios", "slow_rotation",
+            "--seconds", "0.5", "--broad", "none", "--no-qemu", "--out", str(tmp_path), "--force"]
+    for name in ("sil_report.md", "sil_report.png", "sil_report.json"):
+        (tmp_path / name).write_text(f"earlier {name}")
+
+    def full_disk(*a, **k):
+        raise OSError(errno.ENOSPC, "No space left on device")
+    real = report.write_markdown
+    monkeypatch.setattr(report, "write_markdown", full_disk)
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "cannot write the report in" in err and "No space left" in err, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sil_report.json", "sil_report.md",
+                                                           "sil_report.png"]
+    for name in ("sil_report.md", "sil_report.png", "sil_report.json"):
+        assert (tmp_path / name).read_text() == f"earlier {name}"
+    # the same run, written: every file is new, and the Markdown names the final PNG
+    monkeypatch.setattr(report, "write_markdown", real)
+    assert main(argv) == 0
+    # the wall-clock time said as such ("(0 s)" read as scenarios of no length)
+    out = capsys.readouterr().out
+    assert "loop comparisons identical (run time " in out and " s)" in out and "(0 s)" not in out, out
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sil_report.json", "sil_report.md",
+                                                           "sil_report.png"]
+    assert "![errors](sil_report.png)" in (tmp_path / "sil_report.md").read_text()
+    assert (tmp_path / "sil_report.png").read_bytes().startswith(b"\x89PNG")
+    assert json.loads((tmp_path / "sil_report.json").read_text())["filters"] == ["madgwick"]
+    # a folder in the way of a report file: said before the work
+    (tmp_path / "sil_report.json").unlink()
+    (tmp_path / "sil_report.json").mkdir()
+    monkeypatch.setattr(report, "build_report", full_disk)
+    assert main(argv) == 2
+    assert "sil_report.json: a folder of that name is in the way" in capsys.readouterr().err
+    # a new folder whose report could not be written is not left behind empty
+    monkeypatch.undo()
+    monkeypatch.setattr(report, "write_markdown", full_disk)
+    new = tmp_path / "new"
+    assert main(argv[:-3] + ["--out", str(new)]) == 2
+    assert not new.exists()
+
+
+def test_report_states_its_run_time_as_such(tmp_path):
+    rep = report.Report(["case"], ["madgwick"])
+    rep.seconds = 0.43
+    md = report.write_markdown(rep, tmp_path, None).read_text()
+    assert "1 filters × 1 scenarios, run time 0.4 s." in md
+    rep.seconds = 3123.4
+    assert "run time 3,123 s." in report.write_markdown(rep, tmp_path, None).read_text()
+
+
+def test_sil_report_cost_that_cannot_be_read(tmp_path, capsys):
+    """A folder or a missing file as --cost said "[Errno 21] Is a directory: '...'"."""
+    base = ["sil", "report", "--no-qemu", "--filters", "madgwick", "--scenarios", "rest",
+            "--seconds", "0.5", "--broad", "none", "--out", str(tmp_path / "r")]
+    for cost, why in ((tmp_path, "Is a directory"), (tmp_path / "none.json", "No such file or directory")):
+        assert main(base + ["--cost", str(cost)]) == 2
+        err = capsys.readouterr().err
+        assert err.strip() == f"kinefuse: error: cannot read cost JSON {cost}: {why}", err
+    assert not (tmp_path / "r").exists()

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import json
 import math
+import sys
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.console import print_table
@@ -38,7 +39,9 @@ def register_bench(sub):
     p.add_argument("--no-qemu", action="store_true", help="skip the Cortex-M4F count")
     p.add_argument("--no-fixed", action="store_true",
                    help="skip the leg's fixed-point emulation (about a minute)")
-    p.add_argument("--jobs", type=int, default=2, help="parallel processes (default 2)")
+    p.add_argument("--jobs", type=int, default=None,
+                   help="parallel processes of the pendulum variants (default 2; robustness and "
+                        "leg run in one process)")
     p.add_argument("--seed", type=argtypes.seed, default=0, help="noise seed of the synthetic trials")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
     p.set_defaults(func=run)
@@ -63,8 +66,9 @@ def run(args) -> int:
     if bad or not parts:
         raise KinefuseError(f"unknown part {', '.join(bad) or '(none)'}; choose from "
                             f"{', '.join(PARTS)}")
-    if args.jobs < 1:
+    if args.jobs is not None and args.jobs < 1:
         raise KinefuseError("--jobs must be at least 1")
+    jobs = 2 if args.jobs is None else args.jobs
     # options of a part that is not run: refused, not ignored
     unused = [o for o, part, given in (("--variants", "pendulum", args.variants != "all"),
                                        ("--no-ref", "pendulum", args.no_ref),
@@ -75,6 +79,10 @@ def run(args) -> int:
         raise KinefuseError(f"{', '.join(unused)}: option(s) of a part not run (--parts "
                             f"{','.join(parts)}); --variants and --no-ref apply to pendulum, "
                             f"--no-qemu and --no-fixed to leg")
+    if args.jobs is not None and "pendulum" not in parts:
+        # a harmless speed option: said, not refused (robustness and leg are sequential)
+        print(f"kinefuse: note: --jobs applies to the pendulum part only; --parts "
+              f"{','.join(parts)} runs in one process", file=sys.stderr)
     from kinefuse.host.bench.common import progress
     from kinefuse.host.dynamics import bench as B
     result: dict = {}
@@ -82,7 +90,7 @@ def run(args) -> int:
         if "pendulum" in parts:
             # plant noise chosen on another truth seed, then the table on the scored seed
             result["pendulum_tuning"] = B.tuning(bar, args.seed)
-            result["pendulum"] = B.pendulum_table(args.variants, args.jobs, not args.no_ref, bar,
+            result["pendulum"] = B.pendulum_table(args.variants, jobs, not args.no_ref, bar,
                                                   args.seed, result["pendulum_tuning"]["q_used"])
         if "robustness" in parts:
             result["robustness"] = B.robustness(bar, args.seed)

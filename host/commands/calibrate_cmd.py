@@ -64,8 +64,9 @@ def register(subparsers) -> None:
     a.add_argument("--targets", metavar="TARGETS.csv", help="expected gravity vector per pose")
     a.add_argument("--method", choices=["ls", "procrustes", "full"],
                    help="default: ls with targets, full (|acc| = g) without")
-    a.add_argument("--g", type=argtypes.real(0.0, math.inf, lo_open=True), default=G_STANDARD,
-                   help="gravity (m/s²) for |acc| = g")
+    a.add_argument("--g", type=argtypes.real(0.0, math.inf, lo_open=True), default=None,
+                   help=f"gravity (m/s²) for |acc| = g, the fit without --targets (default "
+                        f"{G_STANDARD})")
     a.set_defaults(func=run_accel)
 
     gy = sub.add_parser("gyro", help="gyroscope bias from static windows (+ scale from known rates)")
@@ -169,6 +170,21 @@ def _check_ranges(args) -> None:
         raise KinefuseError("--range is stored in the unit calibration file: give --out")
     if args.serial is not None and not args.out:
         raise KinefuseError("--serial names the unit in the calibration file: give --out")
+    if args.out:
+        _check_out_file(args)
+
+
+def _check_out_file(args) -> None:
+    """--out before the recording is read and fitted (these were said only after the work): a
+    folder, a missing folder, another unit's file, a new file without --serial."""
+    from pathlib import Path
+    from kinefuse.host.calib import unitfile
+    out = Path(args.out)
+    if out.is_dir():
+        raise KinefuseError(f"--out {out} is a folder (Is a directory): give the unit calibration file")
+    if str(out.parent) and not out.parent.is_dir():
+        raise KinefuseError(f"cannot write {out}: folder {out.parent} does not exist")
+    unitfile.load_or_new(args.out, args.serial, None)
 
 
 def _read(args):
@@ -178,6 +194,9 @@ def _read(args):
     if args.fs is not None:
         check_fs_option(args.fs, args.input, args.fmt or detect_format(args.input))
         opts["fs"] = args.fs
+    if args.unit is not None and not args.unit.strip():
+        # --unit "$UNSET" read as no --unit: the file's only unit was calibrated without a word
+        raise KinefuseError("--unit is empty: give a unit (system) id such as 2, s1 or s1:2")
     if args.unit is not None:
         fmt = args.fmt or detect_format(args.input)
         if fmt != kfr.FORMAT:
@@ -226,6 +245,22 @@ def _check_accel_units(args, raw, targets) -> None:
                             f"not the same unit (g and m/s²?); give both in m/s²")
 
 
+def _check_poses_options(args) -> None:
+    """--poses holds the pose means already: the options that read a recording and find its
+    static windows were accepted and ignored."""
+    d = static.StaticConfig()
+    unused = [o for o, given in (("--format", args.fmt is not None), ("--fs", args.fs is not None),
+                                 ("--unit", args.unit is not None),
+                                 ("--static-window", args.static_window != d.window_s),
+                                 ("--gyr-std-max", args.gyr_std_max != d.gyr_std_max),
+                                 ("--gyr-abs-max", args.gyr_abs_max != d.gyr_abs_max),
+                                 ("--acc-std-max", args.acc_std_max != d.acc_std_max),
+                                 ("--min-duration", args.min_duration != d.min_duration_s)) if given]
+    if unused:
+        raise KinefuseError(f"{', '.join(unused)}: option(s) of --input RECORDING (reading it, finding "
+                            f"its static poses); --poses {args.poses} holds the pose means already")
+
+
 def run_accel(args) -> int:
     from kinefuse.host.calib import accel
     _check_ranges(args)
@@ -233,7 +268,13 @@ def run_accel(args) -> int:
     n_samples = None
     if args.poses and args.input:
         raise KinefuseError("give either --poses or --input, not both")
+    if args.g is not None and args.targets:
+        # the targets' gravity vectors are what the fit matches: --g was ignored without a word
+        raise KinefuseError(f"--g {args.g:g} sets |acc| = g of the fit without --targets; with "
+                            f"--targets the fit matches their gravity vectors: give one or the other")
+    args.g = G_STANDARD if args.g is None else args.g
     if args.poses:
+        _check_poses_options(args)
         raw = _numeric_csv(args.poses, (2, 3), "pose")
         if args.targets is None and args.method in (None, "ls", "procrustes"):
             raise KinefuseError("--poses needs --targets for the ls and procrustes methods "

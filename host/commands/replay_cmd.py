@@ -59,6 +59,7 @@ def run(args) -> int:
     name = args.filter or runner.default_filter()
     if name not in runner.filter_names():
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
+    _check_imu_filter(name)
     prm = runner.parse_params(args.param)
     if args.unit is not None and not args.unit.strip():
         # e.g. --unit "$UNSET": read as no --unit, so the only unit of the file was replayed
@@ -79,6 +80,13 @@ def run(args) -> int:
         time_base = ("s from the first sample (constant rate)" if trial.steps is None
                      else "s, the file's sample times")
     else:
+        from kinefuse.host import angle_series
+        if angle_series.sniff(path) == "angle-csv":
+            # was "unknown recording format": the smoothers read it, through `run`
+            smoothers = angle_series.angle_filter_names()
+            raise KinefuseError(f"{path} is a joint-angle series (t, angle_deg), not IMU samples: "
+                                f"smooth it with a joint-angle smoother ({', '.join(smoothers)}), "
+                                f"e.g. {_run_command(args, path, smoothers[0])}")
         from rich.console import Console
         from kinefuse.host.link.cli_util import progress
         with progress(Console(stderr=True), f"reading {path}"):    # moves with a .kfr's decoding
@@ -108,6 +116,34 @@ def run(args) -> int:
     if unit_q is not None:
         print(_compare(unit_q, res.q, rec))
     return 0
+
+
+def _check_imu_filter(name: str) -> None:
+    """Before the recording is read (a long .kfr decode): replay feeds IMU samples, so the
+    other filters are refused here, the joint-angle smoothers with the `run` that takes them."""
+    if name in runner.imu_filter_names():
+        return
+    from kinefuse.codegen import estimators
+    from kinefuse.host import angle_series
+    msg = (f"filter {name!r} takes {estimators.get(name).inputs.name} inputs, not IMU samples: "
+           f"replay runs the IMU filters ({', '.join(runner.imu_filter_names())})")
+    if angle_series.is_angle_filter(name):
+        msg += (f"; smooth a joint-angle series with kinefuse run --filter {name} --input SERIES.csv "
+                f"--out CSV")
+    raise KinefuseError(msg)
+
+
+def _run_command(args, path: str, name: str) -> str:
+    """The `kinefuse run` line for a joint-angle series, the user's options carried over."""
+    import shlex
+    words = ["kinefuse", "run", "--filter", name, "--input", path, "--out", str(args.out)]
+    if args.impl != "f32":
+        words += ["--impl", args.impl]
+    if args.status:
+        words.append("--status")
+    if getattr(args, "force", False):
+        words.append("--force")
+    return " ".join(shlex.quote(w) for w in words)
 
 
 def _run_filter(name, impl, inputs, prm, preset):

@@ -142,8 +142,40 @@ def check_fs_option(fs, path, fmt) -> None:
                             f"rate of {matrix.FORMAT} and {seed004.FORMAT} files, which have none")
 
 
-def _pair(read, paths, units=(None, None)):
-    return None if paths is None else (read(paths[0], units[0]), read(paths[1], units[1]))
+def _pair(read, paths, units=(None, None), option=None):
+    if paths is None:
+        return None
+    recs = (read(paths[0], units[0]), read(paths[1], units[1]))
+    if option is not None:
+        _check_distinct_units(option, paths, recs)
+    return recs
+
+
+def _check_unit_options(args, options) -> None:
+    """--thigh-unit "" (an unset shell variable) read as no unit option: the file's only unit
+    was taken for that segment (and, with the other segment's also blank, for both)."""
+    for opt in options:
+        v = getattr(args, opt.lstrip("-").replace("-", "_"))
+        if v is not None and not v.strip():
+            raise KinefuseError(f"{opt} is empty: give a unit (system) id such as 2, s1 or s1:2")
+
+
+def _check_distinct_units(option, paths, recs) -> None:
+    """After reading: two spellings of one unit of one .kfr (``1`` and ``s0:1``, or no option on
+    a one-unit file and its id) passed :func:`_check_distinct`, and both segments got the same
+    sensor's data ('flexion varies by only 0.0°')."""
+    a, b = recs
+    if a is None or b is None or a.fmt != "kfr" or b.fmt != "kfr":
+        return
+    try:
+        same = os.path.samefile(paths[0], paths[1])
+    except OSError:
+        return
+    ident = [(r.metadata.get("stream"), r.metadata.get("sysid")) for r in recs]
+    if same and ident[0] == ident[1]:
+        names = " and ".join(option) if isinstance(option, tuple) else option
+        raise KinefuseError(f"{names}: {paths[0]} unit {a.metadata.get('unit')} given for both "
+                            f"segments; each segment has its own sensor and recording")
 
 
 class _Progress:
@@ -235,6 +267,34 @@ def _check_distinct(pairs, units) -> None:
                                 f"sensor and recording")
 
 
+def _load_unit_cals(paths, segments):
+    """The two --unit-cal files, one per segment's sensor, and the warnings about them.  One
+    file given for both would correct the second sensor with the first one's biases and scale
+    factors: refused, as one recording for both segments is.  Two files holding the same maps (a
+    copy) are warned about: a two-sensor unit's two IMUs share the serial number, but not their
+    calibration."""
+    from kinefuse.host.calib import unitfile
+    if paths is None:
+        return None, []
+    a, b = paths
+    same = a == b
+    if not same:
+        try:
+            same = os.path.samefile(a, b)
+        except OSError:
+            same = False     # a missing file is reported by unitfile.load
+    if same:
+        raise KinefuseError(f"--unit-cal: {a} given for both segments ({segments[0]} and "
+                            f"{segments[1]}); each sensor has its own calibration file")
+    units = (unitfile.load(a), unitfile.load(b))
+    warnings = []
+    if units[0]["sensors"] and units[0]["sensors"] == units[1]["sensors"]:
+        warnings.append(f"--unit-cal: {a} and {b} hold the same calibration "
+                        f"({', '.join(sorted(units[0]['sensors']))}); the {segments[0]} and "
+                        f"{segments[1]} sensors are corrected alike: is one a copy of the other?")
+    return units, warnings
+
+
 def _check_cycle_args(args) -> None:
     """One-line errors for cycle options that would silently change which cycles are reported."""
     import math
@@ -260,7 +320,6 @@ def _check_mag_args(args, units) -> None:
 
 
 def run_knee(args) -> int:
-    from kinefuse.host.calib import unitfile
     from kinefuse.host.kinematics import report
     _check_cycle_args(args)
     _check_out(args, "knee")
@@ -275,24 +334,26 @@ def run_knee(args) -> int:
                      ("--calib-standing", args.calib_standing), ("--calib-lying", args.calib_lying),
                      ("--calib-functional", args.calib_functional), ("--mag-cal", args.mag_cal)],
                     (args.thigh_unit, args.shank_unit))
+    _check_unit_options(args, ("--thigh-unit", "--shank-unit"))
     read = _reader(args)
-    units = None
-    if args.unit_cal:
-        units = (unitfile.load(args.unit_cal[0]), unitfile.load(args.unit_cal[1]))
+    units, unit_warnings = _load_unit_cals(args.unit_cal, ("thigh", "shank"))
     _check_mag_args(args, units)
     with _Progress(7) as prog:
         prog("reading recordings")
         seg_units = (args.thigh_unit, args.shank_unit)
         thigh = read(args.thigh, args.thigh_unit, "--thigh-unit")
         shank = read(args.shank, args.shank_unit, "--shank-unit")
+        _check_distinct_units(("--thigh", "--shank"), (args.thigh, args.shank), (thigh, shank))
         res = report.knee_from_recordings(
-            thigh, shank, standing=_pair(read, args.calib_standing, seg_units),
-            lying=_pair(read, args.calib_lying, seg_units),
-            functional=_pair(read, args.calib_functional, seg_units),
-            mag_recordings=_pair(read, args.mag_cal, seg_units), unit_calibrations=units, filter=args.filter,
+            thigh, shank, standing=_pair(read, args.calib_standing, seg_units, "--calib-standing"),
+            lying=_pair(read, args.calib_lying, seg_units, "--calib-lying"),
+            functional=_pair(read, args.calib_functional, seg_units, "--calib-functional"),
+            mag_recordings=_pair(read, args.mag_cal, seg_units, "--mag-cal"), unit_calibrations=units,
+            filter=args.filter,
             orientation=args.orientation, side=args.side, convention=args.convention,
             field_norm=args.field_norm, mag_gate=args.mag_gate,
             static_config=_static_cfg(args), progress=prog)
+    res.warnings.extend(unit_warnings)      # stderr and the summary, as a doubtful input's
     inputs = {"thigh": _with_unit(args.thigh, args.thigh_unit), "shank": _with_unit(args.shank, args.shank_unit),
               "standing": " ".join(args.calib_standing or []), "lying": " ".join(args.calib_lying or []),
               "functional": " ".join(args.calib_functional or []),
@@ -302,23 +363,23 @@ def run_knee(args) -> int:
 
 
 def run_elbow(args) -> int:
-    from kinefuse.host.calib import unitfile
     from kinefuse.host.kinematics import report
     _check_cycle_args(args)
     _check_out(args, "elbow")
     _check_distinct([(("--arm", "--forearm"), (args.arm, args.forearm))], (args.arm_unit, args.forearm_unit))
+    _check_unit_options(args, ("--arm-unit", "--forearm-unit"))
     read = _reader(args)
-    units = None
-    if args.unit_cal:
-        units = (unitfile.load(args.unit_cal[0]), unitfile.load(args.unit_cal[1]))
+    units, unit_warnings = _load_unit_cals(args.unit_cal, ("arm", "forearm"))
     with _Progress(3) as prog:
         prog("reading recordings")
         arm = read(args.arm, args.arm_unit, "--arm-unit")
         forearm = read(args.forearm, args.forearm_unit, "--forearm-unit")
+        _check_distinct_units(("--arm", "--forearm"), (args.arm, args.forearm), (arm, forearm))
         res = report.elbow_from_recordings(arm, forearm, filter=args.filter,
                                            orientation=args.orientation, sequence=args.sequence,
                                            init=args.init, unit_calibrations=units,
                                            static_config=_static_cfg(args), progress=prog)
+    res.warnings.extend(unit_warnings)      # stderr and the summary, as a doubtful input's
     inputs = {"arm": _with_unit(args.arm, args.arm_unit), "forearm": _with_unit(args.forearm, args.forearm_unit),
               "unit calibration": " ".join(args.unit_cal or [])}
     return _finish(args, "elbow", res, "Elbow flexion–extension", inputs)

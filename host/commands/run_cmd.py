@@ -98,9 +98,30 @@ def _point_recordings_to_replay(args) -> None:
             "kinefuse-csv": "a kinefuse CSV recording"}
     if fmt != broad_reader.FORMAT:
         raise KinefuseError(f"{path} is {what.get(fmt, 'a ' + fmt + ' recording')}; run takes a "
-                            f"BROAD trial: use "
-                            f"kinefuse replay {path} --out {args.out}"
-                            + (f" --filter {args.filter}" if args.filter else ""))
+                            f"BROAD trial: use {replay_command(args)}")
+
+
+def replay_command(args) -> str:
+    """The `kinefuse replay` line that computes what this `run` asked for: every option that
+    changes the estimates or the CSV carried over, shell-quoted (a path with spaces, a
+    parameter value) so it can be pasted as it is."""
+    import shlex
+    words = ["kinefuse", "replay", str(args.input), "--out", str(args.out)]
+    if args.filter:
+        words += ["--filter", args.filter]
+    if args.impl != "f32":
+        words += ["--impl", args.impl]
+    if args.preset:
+        words += ["--preset", args.preset]
+    for p in args.param or ():
+        words += ["--param", p]
+    if args.status:
+        words.append("--status")
+    if args.frame and args.frame != "enu":
+        words += ["--frame", args.frame]
+    if getattr(args, "force", False):
+        words.append("--force")
+    return " ".join(shlex.quote(w) for w in words)
 
 
 def _run_angle(name: str, args, prm) -> int:
@@ -130,7 +151,7 @@ def _run_angle(name: str, args, prm) -> int:
         hint = (f"; at --fs {args.fs:g} Hz a step is {1.0 / args.fs:g} s" if args.fs is not None
                 else "")
         raise KinefuseError(f"{path}: the filter rejected every one of the {n_rows} samples "
-                            f"(angle beyond ±3.2 rad or time step not in (0, 0.2] s{hint}); "
+                            f"(angle beyond ±3.2 rad = ±183° or time step not in (0, 0.2] s{hint}); "
                             f"nothing was filtered")
     cols = ("t s, angle_deg deg, rate_deg_s deg/s" + (", omega_rad_s rad/s (oscillator "
             "frequency)" if "omega" in out else "") + (", rejected (cumulative count)"
@@ -141,7 +162,7 @@ def _run_angle(name: str, args, prm) -> int:
                          f"({series.fmt})", status=args.status)
     rejected = int(out["rejected"][-1, 0]) if n else 0
     if rejected:
-        print(f"kinefuse: {rejected} sample(s) rejected by the filter (angle beyond ±3.2 rad or "
+        print(f"kinefuse: {rejected} sample(s) rejected by the filter (angle beyond ±3.2 rad = ±183° or "
               f"time step not in (0, 0.2] s): state kept", file=sys.stderr)
     missing = int(np.count_nonzero(~np.isfinite(series.angle)))
     if missing:

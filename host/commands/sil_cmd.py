@@ -3,6 +3,7 @@ scenario set; Markdown + PNG report (errors vs ground truth, bit-exact table, co
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 from pathlib import Path
@@ -84,6 +85,10 @@ def run_report(args: argparse.Namespace) -> int:
     if (args.pil_samples is not None and args.pil_samples < 0) or (args.sil_samples or 0) < 0 \
             or (args.jobs is not None and args.jobs < 1):
         raise KinefuseError("--pil-samples and --sil-samples must be >= 0, --jobs >= 1")
+    if args.no_qemu and args.pil_samples is not None:
+        # the PIL loops run under QEMU: --no-qemu leaves them out and N went unused
+        raise KinefuseError("--pil-samples sets the PIL loops (QEMU), which --no-qemu leaves out; "
+                            "--sil-samples sets the SIL ones")
     broad = "none" if args.ci and args.broad is None else args.broad
     if broad == "none" and args.broad_seconds is not None:      # (was ignored)
         raise KinefuseError("--broad-seconds: this report has no BROAD trial "
@@ -101,38 +106,41 @@ def run_report(args: argparse.Namespace) -> int:
              else list(scenarios.CI_SCENARIOS if args.ci else scenarios.FULL_SCENARIOS))
     seconds = args.seconds if args.seconds is not None else (scenarios.CI_SECONDS if args.ci else None)
     out = check_output_dir(args.out, args.force, REPORT_FILES)
+    for name in REPORT_FILES:        # before the work, not when its results are written
+        if (out / name).is_dir():
+            raise KinefuseError(f"cannot write {out / name}: a folder of that name is in the way")
     from kinefuse.host.bench.common import progress
-    with output_folder(out) as out, progress(not args.json) as bar:
-        task = bar.add_task("simulating scenarios", total=None)
-        try:
-            # the CI subset's pieces include each scenario's event (scenarios.ci_case)
-            cases = [scenarios.ci_case(n, seconds=seconds, seed=args.seed)
-                     if args.ci and seconds is not None
-                     else scenarios.sim_case(n, seed=args.seed, seconds=seconds) for n in names]
-        except SpecError as exc:
-            raise KinefuseError(str(exc)) from None
-        if broad != "none":
-            path = broad or scenarios.default_broad_trial()
-            case = scenarios.broad_case(path)
-            keep = seconds if args.broad_seconds is None else args.broad_seconds
-            cases.append(case.head(int(keep * case.rate_hz)) if keep else case)
-        empty = [c for c in cases if c.n == 0]
-        if empty:       # shorter than one sample: every loop would fail on an empty input
-            opt = "--broad-seconds" if empty[0].source == "broad" and args.broad_seconds is not None else "--seconds"
-            raise KinefuseError(f"{opt} keeps no sample of {empty[0].name} ({empty[0].rate_hz:g} Hz): "
-                                f"give at least {math.ceil(1e4 / empty[0].rate_hz) / 1e4:g} s")
-        if args.firmware:
-            from kinefuse.hil_tests.harness.firmware import firmware_missing
-            if firmware_missing():
-                raise KinefuseError(firmware_missing())
-        rep = report.build_report(cases, filters, with_ref=args.with_ref, qemu=qemu,
-                                  firmware=args.firmware, pil_samples=args.pil_samples,
-                                  sil_samples=args.sil_samples or 0, jobs=args.jobs or 1,
-                                  progress=lambda s: bar.update(task, description=s))
-    rep.cost = cost
-    png = report.write_png(rep, out)
-    md = report.write_markdown(rep, out, png.name if png else None)
-    (out / REPORT_FILES[2]).write_text(json.dumps(rep.as_dict(), default=float))
+    with output_folder(out) as out:
+        with progress(not args.json) as bar:
+            task = bar.add_task("simulating scenarios", total=None)
+            try:
+                # the CI subset's pieces include each scenario's event (scenarios.ci_case)
+                cases = [scenarios.ci_case(n, seconds=seconds, seed=args.seed)
+                         if args.ci and seconds is not None
+                         else scenarios.sim_case(n, seed=args.seed, seconds=seconds) for n in names]
+            except SpecError as exc:
+                raise KinefuseError(str(exc)) from None
+            if broad != "none":
+                path = broad or scenarios.default_broad_trial()
+                case = scenarios.broad_case(path)
+                keep = seconds if args.broad_seconds is None else args.broad_seconds
+                cases.append(case.head(int(keep * case.rate_hz)) if keep else case)
+            empty = [c for c in cases if c.n == 0]
+            if empty:       # shorter than one sample: every loop would fail on an empty input
+                opt = "--broad-seconds" if empty[0].source == "broad" and args.broad_seconds is not None else "--seconds"
+                raise KinefuseError(f"{opt} keeps no sample of {empty[0].name} ({empty[0].rate_hz:g} Hz): "
+                                    f"give at least {math.ceil(1e4 / empty[0].rate_hz) / 1e4:g} s")
+            if args.firmware:
+                from kinefuse.hil_tests.harness.firmware import firmware_missing
+                if firmware_missing():
+                    raise KinefuseError(firmware_missing())
+            rep = report.build_report(cases, filters, with_ref=args.with_ref, qemu=qemu,
+                                      firmware=args.firmware, pil_samples=args.pil_samples,
+                                      sil_samples=args.sil_samples or 0, jobs=args.jobs or 1,
+                                      progress=lambda s: bar.update(task, description=s))
+        rep.cost = cost
+        # inside output_folder: a folder this run created goes again if the writes fail
+        md, png = _write_report(rep, out)
     if args.json:
         print(json.dumps({"markdown": str(md), "png": str(png) if png else None,
                           "all_bitexact": rep.all_bitexact, "seconds": rep.seconds,
@@ -141,7 +149,7 @@ def run_report(args: argparse.Namespace) -> int:
         n_bad = sum(1 for r in rep.bitexact if r["mismatch"] or r["error"])
         print(f"wrote {md}" + (f" and {png}" if png else ""))
         print(f"bit-exact: {len(rep.bitexact) - n_bad} of {len(rep.bitexact)} loop comparisons identical"
-              f" ({rep.seconds:.0f} s)")
+              f" ({report.run_time_text(rep.seconds)})")
         for r in rep.bitexact:
             if r["error"]:
                 print(f"ERROR {r['filter']} {r['system']} {r['loop']} on {r['case']}: {r['error']}")
@@ -149,6 +157,31 @@ def run_report(args: argparse.Namespace) -> int:
                 from kinefuse.hil_tests.harness.compare import Mismatch
                 print("MISMATCH " + f"{r['filter']} on {r['case']}: " + Mismatch(**r["mismatch"]).message())
     return 0 if rep.all_bitexact else 1
+
+
+def _write_report(rep, out: Path):
+    """The report's files, staged (host/outputs.py): written under temporary names and renamed
+    when all are complete, so a failed write (full disk, interrupt) leaves the folder as it was,
+    never a new Markdown next to an earlier run's PNG or JSON."""
+    from kinefuse.hil_tests.harness import report
+    from kinefuse.host.outputs import staged
+    final = {n: out / n for n in REPORT_FILES}
+    try:
+        with staged() as st:
+            # write_png writes nothing (None) when no f32/q error was scored: ask for its
+            # temporary name only when there is a figure, so there is always a file to rename
+            png = None
+            if any(k[2] in ("f32", "q") for k in rep.errors):
+                png = report.write_png(rep, out, path=st.path(final[REPORT_FILES[1]]))
+            report.write_markdown(rep, out, REPORT_FILES[1] if png else None,
+                                  path=st.path(final[REPORT_FILES[0]]))
+            st.path(final[REPORT_FILES[2]]).write_text(json.dumps(rep.as_dict(), default=float))
+    except OSError as exc:
+        raise KinefuseError(f"cannot write the report in {out}: {exc.strerror or exc}") from None
+    if png is None:
+        with contextlib.suppress(FileNotFoundError, IsADirectoryError):
+            final[REPORT_FILES[1]].unlink()     # an earlier run's figure, of other numbers (--force)
+    return final[REPORT_FILES[0]], (final[REPORT_FILES[1]] if png else None)
 
 
 def _check_broad_file(path: str) -> None:

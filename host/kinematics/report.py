@@ -72,6 +72,12 @@ def _note(progress, msg):
 def _apply_unit(rec: Recording, doc: dict | None) -> Recording:
     if doc is None:
         return rec
+    if rec.metadata.get("calibrated_on_unit"):
+        # a unit recording whose samples the unit calibrated (KF_RAW_SAMPLE flag): the file's
+        # maps were applied a second time, and the angles came from doubly corrected readings
+        raise KinefuseError(f"{rec.source}: the unit applied its stored calibration to these readings "
+                            f"already (every sample flagged calibrated); the unit calibration file "
+                            f"(--unit-cal) would apply one a second time: leave it out")
     r = Recording(**{**rec.__dict__})
     if rec.acc is not None:
         r.acc = unitfile.apply(doc, "accel", rec.acc)
@@ -211,6 +217,16 @@ def sensor_orientation(rec: Recording, *, filter=None, orientation: str = "auto"
     return Q.normalize(q), f"filter '{name}' ({'9-D' if mag is not None else '6-D'})"
 
 
+def _unused_filter(seg: str, filter, desc: str, rec: Recording) -> list[str]:
+    """A filter asked for, but orientation 'auto' took the recording's own quaternions: the
+    report would read as the filter's while it is the device's."""
+    if filter is None or desc != "device quaternions":
+        return []
+    name = filter if isinstance(filter, str) else getattr(filter, "__name__", "custom")
+    return [f"{seg}: filter '{name}' not used: {os.path.basename(rec.source)} has device "
+            f"quaternions, and orientation 'auto' uses them (orientation 'filter' runs the filter)"]
+
+
 def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, lying=None,
                          functional=None, mag_recordings=None, mag_calibrations=None, unit_calibrations=None,
                          filter=None, orientation: str = "auto", side: str = "right",
@@ -341,6 +357,7 @@ def knee_from_recordings(thigh: Recording, shank: Recording, *, standing=None, l
         q_GS.append(q)
         how.append(desc)
         info[f"{segs[k]}_orientation"] = desc
+        warnings += _unused_filter(segs[k], filter, desc, task[k])
         if desc == "device quaternions" and mags[k] is not None:
             warnings.append(f"{segs[k]} magnetometer calibration not used: the orientation is the device's "
                             f"own quaternions (orientation 'filter' runs the filter with it)")
@@ -423,6 +440,7 @@ def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter=None,
     recs = [_apply_unit(arm, units[0]), _apply_unit(forearm, units[1])]
     info: dict = {"sequence": sequence, "init": init, "static_detection": _static_info(static_config)}
     recs[0], recs[1], origin = _on_one_clock(recs[0], recs[1], info)
+    warnings: list[str] = []
     qs = []
     for k, name in enumerate(("arm", "forearm")):
         _note(progress, f"{name} orientation")
@@ -431,6 +449,7 @@ def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter=None,
             bias, src = _gyro_bias([recs[k]], static_config)
         q, desc = sensor_orientation(recs[k], filter=filter, orientation=orientation, gyro_bias=bias)
         qs.append(q)
+        warnings += _unused_filter(name, filter, desc, recs[k])
         info[f"{name}_orientation"] = desc
         info[f"{name}_gyro_bias_rad_s"] = {"value": np.asarray(bias).tolist(), "source": src}
     t_a = recs[0].t - origin[0]
@@ -442,7 +461,6 @@ def elbow_from_recordings(arm: Recording, forearm: Recording, *, filter=None,
     qF = _interp_quat(t_f, qs[1], t)
     st, found = _first_still(recs[0], static_config, recs[1])   # both segments still
     i0, i1 = st.start, min(st.stop, len(t))
-    warnings: list[str] = []
     if not found and init != "none":
         # the reference is the posture of that moment, still or not: every angle is relative to it
         warnings.append(f"no period ≥ {static_config.min_duration_s:g} s where arm and forearm are both still: "

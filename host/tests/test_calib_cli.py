@@ -94,6 +94,30 @@ def test_accel_bad_gravity_is_a_usage_error(run, capsys, tmp_path, g, text):
     assert err.startswith("kinefuse: error: argument --g:") and text in err, err
 
 
+def test_accel_options_that_do_nothing_are_refused(run, tmp_path):
+    """--g with --targets (the fit matches the targets), and the recording options (--fs, --unit,
+    --format, static detection) with --poses, were accepted and ignored: the same result as
+    without them, no word said."""
+    (tmp_path / "p.csv").write_text(RAW)
+    (tmp_path / "t.csv").write_text(TARGETS)
+    base = ("calibrate", "accel", "--poses", tmp_path / "p.csv")
+    for extra, text in (
+            (["--targets", tmp_path / "t.csv", "--g", 9.81],
+             "--g 9.81 sets |acc| = g of the fit without --targets"),
+            (["--targets", tmp_path / "t.csv", "--method", "full", "--g", 9.81], "--g 9.81 sets"),
+            (["--targets", tmp_path / "t.csv", "--fs", 50], "--fs: option(s) of --input RECORDING"),
+            (["--targets", tmp_path / "t.csv", "--unit", 2, "--static-window", 1.5],
+             "--unit, --static-window: option(s) of --input RECORDING"),
+            (["--method", "full", "--min-duration", 3, "--format", "xsens-dot"],
+             "--format, --min-duration: option(s) of --input RECORDING")):
+        code, out, err = run(*base, *extra, "--json")
+        assert code == 2 and out == "" and err.count("\n") == 1, (code, out, err)
+        assert err.startswith("kinefuse: error:") and text in err, err
+    # --g where it is used, and the defaults written out, still work
+    code, out, err = run(*base, "--method", "full", "--g", 9.81, "--static-window", 0.5, "--json")
+    assert code == 0, err
+
+
 def test_accel_poses_in_g_against_m_s2_are_refused(run, tmp_path):
     """A pose table in g (seed 002 Annex G / 9.80665) was fitted against m/s² targets or g =
     9.80665 to a scale of 9.8, printed and written without a word."""
@@ -263,3 +287,21 @@ def test_unit_file_paths_that_cannot_be_read_or_written(run, tmp_path):
         code, out, err = run("calibrate", *argv)
         assert code == 2 and err.count("\n") == 1 and text in err, (argv, code, err)
     assert not list((tmp_path / "folder").iterdir()) and not (tmp_path / "no").exists()
+
+
+def test_unit_file_problems_are_said_before_the_work(run, tmp_path):
+    """--out naming a folder, a missing folder, another unit's file or a new file without
+    --serial was refused only after the recording had been read and fitted."""
+    from kinefuse.host.calib import unitfile
+    unitfile.save(unitfile.new("DOT-7"), str(tmp_path / "dot7.json"))
+    (tmp_path / "folder").mkdir()
+    missing = tmp_path / "not-recorded-yet.csv"        # never read: the --out problem comes first
+    for out, serial, text in ((tmp_path / "folder", ["--serial", "7"], "is a folder (Is a directory)"),
+                              (tmp_path / "no" / "u.json", ["--serial", "7"], "cannot write"),
+                              (tmp_path / "dot7.json", ["--serial", "DOT-8"], "belongs to unit 'DOT-7'"),
+                              (tmp_path / "new.json", [], "does not exist yet: give the unit's serial")):
+        for sensor in ("gyro", "mag", "accel"):
+            code, stdout, err = run("calibrate", sensor, "--input", missing, "--out", out, *serial)
+            assert code == 2 and stdout == "" and err.count("\n") == 1 and text in err, (sensor, out, err)
+            assert "not found" not in err
+    assert not (tmp_path / "new.json").exists() and not (tmp_path / "no").exists()

@@ -75,6 +75,32 @@ def test_run_points_a_unit_recording_to_replay(tmp_path):
     assert not (tmp_path / "o.csv").exists()
 
 
+def test_run_replay_hint_carries_the_options(tmp_path, capsys):
+    """The suggested `kinefuse replay` dropped --impl/--param/--preset/--status: pasted, it
+    computed something else. Parsed back, it must ask replay for what run was asked."""
+    import shlex
+    from kinefuse.host import cli
+    d = tmp_path / "my data"
+    d.mkdir()
+    dot = d / "dot export.csv"
+    dot.write_text("PacketCounter,SampleTimeFine,Acc_X,Acc_Y,Acc_Z,Gyr_X,Gyr_Y,Gyr_Z\n")
+    out = d / "est 1.csv"
+    argv = ["run", "--filter", "madgwick", "--impl", "q", "--preset", "seed001", "--param",
+            "beta=0.05", "--param", "zeta=0.01", "--status", "--frame", "ned", "--input",
+            str(dot), "--out", str(out)]
+    assert cli.main(argv) == 2
+    err = capsys.readouterr().err
+    assert "use kinefuse replay " in err, err
+    words = shlex.split(err.split("use ", 1)[1].strip())
+    assert words[:2] == ["kinefuse", "replay"]
+    replay = cli.build_parser().parse_args(words[1:])
+    run = cli.build_parser().parse_args(argv)
+    assert replay.rec == str(dot) and replay.out == str(out)
+    for opt in ("filter", "impl", "preset", "param", "status", "frame", "force"):
+        assert getattr(replay, opt) == getattr(run, opt), opt
+    assert not out.exists()
+
+
 @pytest.mark.parametrize("args,needle", [
     (["run", "--filter", "nope", "--input", "x.mat", "--out", "o.csv"], "unknown filter"),
     (["run", "--filter", "madgwick", "--input", "/does/not/exist.mat", "--out", "o.csv"], "exist"),

@@ -134,6 +134,31 @@ def test_bench_options_of_parts_not_run_are_refused(capsys, argv, text):
     assert out == "" and err.count("\n") == 1 and err.startswith("kinefuse: error:") and text in err, err
 
 
+def test_bench_jobs_without_pendulum_is_said(capsys, monkeypatch):
+    """--jobs was silently ignored when the pendulum part (the only parallel one) was not run."""
+    from kinefuse.host.cli import main
+    seen = {}
+    monkeypatch.setattr(B, "robustness", lambda bar, seed: {"ok": 1})
+    monkeypatch.setattr(B, "tuning", lambda bar, seed: {"q_used": 1.0})
+    monkeypatch.setattr(B, "pendulum_table",
+                        lambda which, jobs, *a: seen.setdefault("jobs", jobs) and [])
+    assert main(["bench", "dynamics", "--json", "--parts", "robustness", "--jobs", "4"]) == 0
+    out, err = capsys.readouterr()
+    assert json.loads(out) == {"robustness": {"ok": 1}}
+    notes = [ln for ln in err.splitlines() if "--jobs" in ln]
+    assert notes == ["kinefuse: note: --jobs applies to the pendulum part only; --parts "
+                     "robustness runs in one process"], err
+    # no note when --jobs is not given, nor when the pendulum part uses it
+    assert main(["bench", "dynamics", "--json", "--parts", "robustness"]) == 0
+    assert "--jobs" not in capsys.readouterr().err
+    assert main(["bench", "dynamics", "--json", "--parts", "pendulum", "--jobs", "3"]) == 0
+    assert "--jobs" not in capsys.readouterr().err and seen["jobs"] == 3
+    # a refused option is the one line said: no note before it
+    assert main(["bench", "dynamics", "--json", "--parts", "leg", "--jobs", "4", "--no-ref"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("kinefuse: error: --no-ref"), err
+
+
 def test_bench_json_cleaning():
     from kinefuse.host.bench.dynamics import _clean
     out = _clean({"a": np.float32(1.5), "b": [float("nan"), np.int64(3)], "c": {1: np.inf}})

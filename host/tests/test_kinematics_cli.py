@@ -109,3 +109,64 @@ def test_mag_options_without_a_mag_calibration_are_refused(run, files):
     assert code == 0, err
     p = json.loads(out)["processing"]
     assert 0 < p["thigh_mag_gated_fraction"] < 0.2 and 0 < p["shank_mag_gated_fraction"] < 0.2
+
+
+def test_one_unit_calibration_for_both_segments_is_refused(run, files):
+    """--unit-cal cal.json cal.json was accepted: the shank's sensor corrected with the thigh
+    sensor's biases and scales, without a word (one recording for both segments is refused)."""
+    import shutil
+    from kinefuse.host.calib import unitfile
+    d, _ = files
+    for name, bias in (("thigh.json", 0.01), ("shank.json", -0.02)):
+        doc = unitfile.new("DOT-7")
+        unitfile.set_sensor(doc, "gyro", np.eye(3), [bias, 0.0, 0.0], method="static")
+        unitfile.save(doc, str(d / name))
+    shutil.copy(d / "thigh.json", d / "copy.json")
+    base = ("report", "knee", "--thigh", d / "step-thigh.csv", "--shank", d / "step-shank.csv")
+    for second in (d / "thigh.json", f"{d}/./thigh.json"):
+        for joint in (base, ("report", "elbow", "--arm", d / "step-thigh.csv", "--forearm",
+                             d / "step-shank.csv")):
+            code, out, err = run(*joint, "--unit-cal", d / "thigh.json", second, "--out", d / "onecal")
+            assert code == 2 and out == "" and err.count("\n") == 1, (code, out, err)
+            segs = "(thigh and shank)" if joint is base else "(arm and forearm)"
+            assert (f"--unit-cal: {d / 'thigh.json'} given for both segments {segs}; each sensor has "
+                    f"its own calibration file") in err, err
+            assert not (d / "onecal").exists()
+    # a copy under another name: computed, with a warning naming both files
+    code, out, err = run(*base, "--unit-cal", d / "thigh.json", d / "copy.json", "--out", d / "copycal",
+                         "--json")
+    assert code == 0, err
+    text = (f"--unit-cal: {d / 'thigh.json'} and {d / 'copy.json'} hold the same calibration (gyro)")
+    assert f"kinefuse: warning: {text}" in err, err
+    assert any(w.startswith(text) for w in json.loads(out)["warnings"])      # and in the summary
+    assert text in (d / "copycal" / "knee_summary.md").read_text()
+    # two units' own files (a two-sensor unit's two IMUs share the serial): no warning
+    code, out, err = run(*base, "--unit-cal", d / "thigh.json", d / "shank.json", "--out", d / "twocal",
+                         "--json")
+    assert code == 0 and "--unit-cal" not in err, err
+
+
+def test_one_unit_of_a_kfr_for_both_segments_is_refused(run, tmp_path):
+    """--thigh-unit "" (an unset variable) read as no unit, and two spellings of one unit (1 and
+    s0:1, or none and 1 on a one-unit file) passed the both-segments check: both segments got
+    one sensor's data, reported as 'flexion varies by only 0.0°'."""
+    from kinefuse.host.link.recorder import Recorder
+    one, two = tmp_path / "one.kfr", tmp_path / "two.kfr"
+    Recorder(one, ["fake:rate=200"]).run(0.4)
+    Recorder(two, ["fake:rate=200", "fake:unit=2,rate=200"]).run(0.4)
+    cases = [
+        (["knee", "--thigh", one, "--thigh-unit", " ", "--shank", one, "--shank-unit", ""],
+         "--thigh-unit is empty: give a unit (system) id"),
+        (["elbow", "--arm", two, "--arm-unit", "1", "--forearm", two, "--forearm-unit", ""],
+         "--forearm-unit is empty"),
+        (["knee", "--thigh", two, "--thigh-unit", "1", "--shank", two, "--shank-unit", "s0:1"],
+         f"--thigh and --shank: {two} unit 1 given for both segments"),
+        (["elbow", "--arm", one, "--forearm", one, "--forearm-unit", "1"],
+         f"--arm and --forearm: {one} unit 1 given for both segments"),
+    ]
+    for argv, text in cases:
+        code, out, err = run("report", *argv, "--out", tmp_path / "r")
+        assert code == 2 and out == "" and err.count("\n") == 1 and text in err, (argv, err)
+        assert not (tmp_path / "r").exists()
+    code, out, err = run("calibrate", "gyro", "--input", one, "--unit", "")
+    assert code == 2 and "--unit is empty" in err, err

@@ -189,3 +189,49 @@ def test_mag_calibration_unused_for_lack_of_magnetometer_is_a_warning(protocol):
         assert any(w.startswith(f"{seg} magnetometer calibration given") and "no magnetometer data" in w
                    for w in res.warnings), res.warnings
         assert res.info[f"{seg}_orientation"].endswith("(6-D)")
+
+
+def test_a_filter_the_device_quaternions_replace_is_a_warning(protocol):
+    """--filter with recordings that carry device quaternions (orientation 'auto') was dropped
+    without a word: the report read as the filter's, its angles were the device's."""
+    import dataclasses
+    P = protocol
+    task = {s: dataclasses.replace(P.task[s], quat=P.task[s].metadata["quat_true"]) for s in P.task}
+    res = report.knee_from_recordings(*pair(task), filter="madgwick")
+    for seg in ("thigh", "shank"):
+        assert res.info[f"{seg}_orientation"] == "device quaternions"
+        assert any(w.startswith(f"{seg}: filter 'madgwick' not used:") and "device quaternions" in w
+                   for w in res.warnings), res.warnings
+    # the filter where it runs, and no filter asked for: no such warning
+    for kw in ({"filter": "madgwick", "orientation": "filter"}, {}):
+        res = report.knee_from_recordings(*pair(task), **kw)
+        assert not any("not used: " in w and "filter" in w for w in res.warnings), res.warnings
+    arm, fore, _ = _elbow_recordings()
+    arm = dataclasses.replace(arm, quat=Q.normalize(np.tile([1.0, 0, 0, 0], (len(arm.t), 1))))
+    res = report.elbow_from_recordings(arm, fore, filter="simple")
+    assert [w for w in res.warnings if "not used" in w] == [
+        f"arm: filter 'simple' not used: {os.path.basename(arm.source)} has device quaternions, "
+        f"and orientation 'auto' uses them (orientation 'filter' runs the filter)"]
+
+
+def test_unit_calibration_of_readings_the_unit_calibrated_is_refused(protocol):
+    """A .kfr whose samples the unit had calibrated (flag 'calibrated') got the unit file's maps
+    applied once more: biases removed twice, scales squared, without a word."""
+    import dataclasses
+    from kinefuse.host.calib import unitfile
+    P = protocol
+    doc = unitfile.new("DOT-7")
+    unitfile.set_sensor(doc, "gyro", np.eye(3), [0.01, 0.0, 0.0], method="static")
+    task = {s: dataclasses.replace(P.task[s], metadata={**P.task[s].metadata, "calibrated_on_unit": True})
+            for s in P.task}
+    with pytest.raises(KinefuseError, match=r"applied its stored calibration to these readings already"):
+        report.knee_from_recordings(*pair(task), unit_calibrations=(doc, doc))
+    arm, fore, _ = _elbow_recordings()
+    cal_arm = dataclasses.replace(arm, metadata={**arm.metadata, "calibrated_on_unit": True})
+    with pytest.raises(KinefuseError, match=r"\(--unit-cal\) would apply one a second time"):
+        report.elbow_from_recordings(cal_arm, fore, unit_calibrations=(doc, doc))
+    # readings the unit did not calibrate take the file, and calibrated ones without a file run
+    raw = {s: dataclasses.replace(P.task[s], metadata={**P.task[s].metadata, "calibrated_on_unit": False})
+           for s in P.task}
+    report.knee_from_recordings(*pair(raw), unit_calibrations=(doc, doc))
+    report.elbow_from_recordings(cal_arm, fore)

@@ -239,3 +239,26 @@ def test_status_comment_says_what_the_numbered_columns_hold(run, tmp_path, filt,
         comment = _csv(out)[0]
         for note in notes:
             assert note in comment, comment
+
+
+def test_non_imu_filters_and_angle_series_point_to_run(run, tmp_path):
+    """A joint-angle series given to replay was "unknown recording format", and a smoother was
+    refused only after the whole recording had been read: both name the `run` that takes them."""
+    import shlex
+    series = tmp_path / "knee angle.csv"
+    series.write_text("t,angle_deg\n0,1\n0.01,2\n0.02,3\n")
+    out = tmp_path / "smoothed.csv"
+    code, stdout, err = run("replay", series, "--out", out, "--impl", "q", "--status")
+    _one_line_error(code, stdout, err, "is a joint-angle series (t, angle_deg), not IMU samples")
+    cmd = shlex.split(err.split("e.g. ", 1)[1])
+    assert cmd == ["kinefuse", "run", "--filter", "angle-kf", "--input", str(series), "--out", str(out),
+                   "--impl", "q", "--status"], err
+    assert run(*cmd[1:])[0] == 0 and out.exists()       # the suggested command does the job
+    # a smoother or another non-IMU filter: refused before the recording is read (a missing
+    # file is not even looked at)
+    for name, extra in (("angle-kf", "kinefuse run --filter angle-kf --input SERIES.csv"),
+                        ("pendulum", "replay runs the IMU filters (")):
+        code, stdout, err = run("replay", tmp_path / "missing.kfr", "--out", tmp_path / "o.csv",
+                                "--filter", name)
+        _one_line_error(code, stdout, err, "not IMU samples")
+        assert extra in err and "not found" not in err, err

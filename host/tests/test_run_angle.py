@@ -118,6 +118,8 @@ def test_missing_angle_predicts_and_bad_samples_are_rejected(run, tmp_path):
     code, _, err = run("run", "--filter", "angle-kf", "--input", src, "--out", out, "--status")
     assert code == 0, err
     assert "1 sample(s) rejected" in err and "1 sample(s) without an angle" in err
+    # the limit in the input's unit too: the series is in degrees, the filter's limit in rad
+    assert "angle beyond ±3.2 rad = ±183°" in err, err
     _, header, x = _csv(out)
     assert header == ["t", "angle_deg", "rate_deg_s", "rejected"]
     # sample 30: constant-rate prediction only (rate kept, angle advanced by rate·dt)
