@@ -11,7 +11,10 @@ import hashlib
 import importlib.util
 import os
 import re
+import shlex
+import subprocess
 import sys
+import sysconfig
 from pathlib import Path
 
 from kinefuse.codegen.generate import GENERATED_DIR
@@ -31,6 +34,30 @@ def cache_dir() -> Path:
     d = Path(os.environ.get("KINEFUSE_CACHE", Path.home() / ".cache" / "kinefuse")) / "cffi"
     d.mkdir(parents=True, exist_ok=True)
     return d
+
+
+def host_cc() -> str:
+    """The C compiler command setuptools (hence cffi) compiles with: $CC, else Python's own."""
+    return os.environ.get("CC") or sysconfig.get_config_var("CC") or "cc"
+
+
+_CC_IDENTITY: dict[str, str] = {}
+
+
+def compiler_identity() -> str:
+    """The command and ``--version`` output of :func:`host_cc` (run once per process and
+    command)."""
+    cc = host_cc()
+    if cc not in _CC_IDENTITY:
+        argv = shlex.split(cc)
+        try:
+            out = subprocess.run([argv[0], "--version"], capture_output=True, text=True,
+                                 timeout=60)
+            text = out.stdout + out.stderr
+        except (OSError, subprocess.SubprocessError) as exc:
+            text = f"unavailable: {exc}"      # the build itself then reports the problem
+        _CC_IDENTITY[cc] = f"{cc}\n{text}"
+    return _CC_IDENTITY[cc]
 
 
 def cdef_of(header_text: str) -> str:
@@ -54,6 +81,8 @@ def build(module_stem: str, headers: list[Path], sources: list[Path], extra_cdef
         for h in sorted(Path(inc).glob("*.h")):
             blob.update(h.name.encode() + b"\0" + h.read_bytes())
     blob.update(repr((flags, extra_cdef, extra_source, include_dirs, sys.version)).encode())
+    # a compiler upgrade must rebuild, not load a module the old compiler made
+    blob.update(compiler_identity().encode())
     name = f"_kf_{re.sub(r'[^a-zA-Z0-9_]', '_', module_stem)}_{blob.hexdigest()[:16]}"
     d = cache_dir()
     existing = _find_built(d, name)
@@ -102,5 +131,8 @@ def build_filter(name: str, system: str, gen_dir: Path = GENERATED_DIR):
     header = gen_dir / f"{P}.h"
     if not header.exists():
         raise FileNotFoundError(f"{header} does not exist; run `kinefuse codegen`")
-    spec_header = re.search(r'#include "(kf_\w+\.h)"', header.read_text()).group(1)
-    return build(P, [gen_dir / spec_header, header], [gen_dir / f"{P}.c"], include_dirs=[gen_dir])
+    m = re.search(r'#include "(kf_\w+\.h)"', header.read_text())
+    if m is None:      # not an AttributeError from deep in here
+        raise ValueError(f"{header} does not include its input record header (kf_<record>_"
+                         f"{system}.h): edited by hand? run `kinefuse codegen`")
+    return build(P, [gen_dir / m.group(1), header], [gen_dir / f"{P}.c"], include_dirs=[gen_dir])

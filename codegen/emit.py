@@ -6,9 +6,10 @@ C and the model are printed from identical statements in identical order.
 from __future__ import annotations
 
 import inspect
+import re
 import textwrap
 
-from kinefuse.codegen.estimator import Estimator, Interface, Var
+from kinefuse.codegen.estimator import Estimator, EstimatorError, Interface, Var
 from kinefuse.codegen.fixed import FixedLowering
 from kinefuse.codegen.float32 import Float32Lowering
 from kinefuse.codegen.ir import BOOL, INT, REAL, Graph, Node
@@ -31,10 +32,65 @@ def leaf_name(kind: str, var: Var, index: int) -> str:
     return f"{PREFIX[kind]}_{var.name}" + (str(index) if var.size > 1 else "")
 
 
+_C_KEYWORDS = frozenset(
+    "auto break case char const continue default do double else enum extern float for goto if "
+    "inline int long register restrict return short signed sizeof static struct switch typedef "
+    "union unsigned void volatile while _Bool _Complex _Imaginary".split())
+_IDENT = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def check_declaration(est: Estimator) -> None:
+    """The names that become C identifiers and file names must be usable as such, and distinct:
+    otherwise the C does not compile, or two values share one name in the Python model.  Ranges
+    must not be empty, and initial states must lie in them."""
+    def ident(what: str, name: str, text: str) -> None:
+        if not isinstance(name, str) or not _IDENT.fullmatch(text) or text in _C_KEYWORDS:
+            raise EstimatorError(f"{est.name or type(est).__name__}: {what} {name!r} is not usable "
+                                 "as a C identifier (letters, digits and _, not starting with a "
+                                 "digit, not a C keyword)")
+
+    ident("filter name", est.name, str(est.name).replace("-", "_"))
+    ident("input record name", est.inputs.name, est.inputs.name)
+    leaves: dict[str, str] = {}
+    params = tuple(q.as_var() for q in est.params)
+    for kind, decl in (("input", est.inputs.fields), ("param", params), ("state", est.state),
+                       ("output", est.outputs)):
+        seen = set()
+        for v in decl:
+            ident(f"{kind}", v.name, v.name)
+            if v.name in seen:
+                raise EstimatorError(f"{est.name}: {kind} {v.name!r} is declared twice")
+            seen.add(v.name)
+            # an empty (or NaN) range gives formats and rejection tests that hold for nothing
+            if v.type == REAL and not v.lo <= v.hi:
+                raise EstimatorError(f"{est.name}: {kind} {v.name}: declared range "
+                                     f"[{v.lo:g}, {v.hi:g}] is empty (lo > hi)")
+            if kind == "output":
+                continue
+            if kind == "state":
+                try:
+                    init = v.init_values()
+                except ValueError as exc:
+                    raise EstimatorError(f"{est.name}: state {exc}") from None
+                # fixed point would clip it silently; the float paths would start outside the
+                # range the formats were chosen for
+                bad = [x for x in init if v.type == REAL and not v.lo <= float(x) <= v.hi]
+                if bad:
+                    raise EstimatorError(f"{est.name}: state {v.name}: initial value {bad[0]!r} "
+                                         f"outside its declared range [{v.lo:g}, {v.hi:g}]")
+            for i in range(v.size):
+                leaf = leaf_name(kind, v, i)
+                if leaf in leaves:
+                    raise EstimatorError(f"{est.name}: {kind} {v.name!r} and {leaves[leaf]} both "
+                                         f"become the C variable {leaf}: rename one")
+                leaves[leaf] = f"{kind} {v.name!r}"
+
+
 class Lowered:
     """An estimator's optimised graph lowered to one number system."""
 
     def __init__(self, est: Estimator, graph: Graph, system: str):
+        check_declaration(est)
         self.est = est
         self.g = graph
         self.system = system

@@ -19,6 +19,9 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import os
+import sysconfig
+import traceback
 from types import SimpleNamespace
 from typing import Any, ClassVar
 
@@ -191,9 +194,27 @@ class Estimator:
         return {p.name: p.value(values[p.name], cls.name) for p in cls.params}
 
 
-def _ns(vars_: tuple[Var, ...], values: dict[str, tuple]) -> SimpleNamespace:
-    return SimpleNamespace(**{v.name: values[v.name][0] if v.size == 1 else tuple(values[v.name])
-                              for v in vars_})
+class _Fields(SimpleNamespace):
+    """Attribute access to declared variables; a name that is not declared is an error that
+    says what is declared (not SimpleNamespace's bare AttributeError)."""
+
+    _what = "variable"
+
+    def __getattr__(self, name):
+        if name.startswith("__"):
+            raise AttributeError(name)
+        raise AttributeError(f"no {self._what} named {name!r} is declared "
+                             f"({self._what}s: {', '.join(vars(self)) or 'none'})")
+
+
+_FIELDS = {w: type("_Fields", (_Fields,), {"_what": w})
+           for w in ("variable", "input", "parameter", "state variable")}
+
+
+def _ns(vars_: tuple[Var, ...], values: dict[str, tuple],
+        what: str = "variable") -> SimpleNamespace:
+    return _FIELDS[what](**{v.name: values[v.name][0] if v.size == 1 else tuple(values[v.name])
+                            for v in vars_})
 
 
 def _flatten(est_name: str, what: str, decl: tuple[Var, ...], got: dict) -> dict[str, tuple]:
@@ -214,6 +235,8 @@ def _flatten(est_name: str, what: str, decl: tuple[Var, ...], got: dict) -> dict
 
 def trace(est: Estimator) -> Graph:
     """Record one step of `est` as a raw (unoptimised) graph."""
+    from kinefuse.codegen.emit import check_declaration   # emit imports this module
+    check_declaration(est)
     g = Graph(est.name)
 
     def leaves(kind, decl):
@@ -223,21 +246,91 @@ def trace(est: Estimator) -> Graph:
     u = leaves("input", est.inputs.fields)
     p = leaves("param", tuple(p.as_var() for p in est.params))
     x = leaves("state", est.state)
-    nx, y = est.step(_ns(est.state, x), _ns(est.inputs.fields, u),
-                     _ns(tuple(q.as_var() for q in est.params), p))
+    try:
+        res = est.step(_ns(est.state, x, "state variable"), _ns(est.inputs.fields, u, "input"),
+                       _ns(tuple(q.as_var() for q in est.params), p, "parameter"))
+    except EstimatorError:
+        raise
+    except Exception as exc:
+        # a rule of the reference code broken (an `if` on a value, math.*, ...): one line naming
+        # the estimator, its source line and the rule, not a traceback from inside the generator
+        raise EstimatorError(f"{est.name}: {_where(exc)}: {_rule(exc)}") from exc
+    if not (isinstance(res, tuple) and len(res) == 2 and all(isinstance(r, dict) for r in res)):
+        raise EstimatorError(f"{est.name}.step must return (next_state: dict, outputs: dict), "
+                             f"not {type(res).__name__}")
+    nx, y = res
     for kind, decl, got in (("state", est.state, nx), ("output", est.outputs, y)):
         flat = _flatten(est.name, kind, decl, got)
         for v in decl:
             for i, val in enumerate(flat[v.name]):
-                g.set_result(kind, v.name, i, _as_node(g, val, v.type, f"{kind} {v.name}"))
+                g.set_result(kind, v.name, i,
+                             _as_node(g, val, v.type, f"{est.name}.step: {kind} {v.name}"))
     g.check()
     return g
+
+
+class EstimatorError(TypeError, ValueError):
+    """The reference code of an estimator breaks a rule of the generator (codegen/scalar.py).
+    A TypeError as the bare errors were, and a ValueError as the other generator errors."""
+
+
+_GENERATOR_DIR = os.path.dirname(os.path.abspath(__file__))
+_CORE = {os.path.join(_GENERATOR_DIR, f) for f in
+         ("scalar.py", "ir.py", "linalg.py", "estimator.py", "mathlib.py")}
+_PACKAGE_DIR = os.path.dirname(_GENERATOR_DIR) + os.sep     # kinefuse's own files count
+_LIBRARY_DIRS = tuple({os.path.abspath(sysconfig.get_paths()[k]) + os.sep
+                       for k in ("stdlib", "purelib", "platlib")})
+
+
+def _where(exc: BaseException) -> str:
+    """Source line of the estimator code that failed: ``path:line (code)``, and the line of
+    step() itself when that is not the same (the failure is in a helper it called)."""
+    user = mine = None
+    for fs in traceback.extract_tb(exc.__traceback__):
+        f = os.path.abspath(fs.filename)
+        if f in _CORE or fs.filename.startswith("<") or (
+                f.startswith(_LIBRARY_DIRS) and not f.startswith(_PACKAGE_DIR)):
+            continue
+        user = fs
+        if mine is None:
+            mine = fs            # the outermost: step()
+
+    def show(fs):
+        f = os.path.abspath(fs.filename)
+        rel = f[len(_PACKAGE_DIR):] if f.startswith(_PACKAGE_DIR) else fs.filename
+        code = (fs.line or "").strip()
+        return f"{rel}:{fs.lineno}" + (f" ({code[:80]})" if code else "")
+
+    if user is None:
+        return "in step()"
+    if mine is None or mine is user:
+        return show(user)
+    return f"{show(user)}, called from {show(mine)}"
+
+
+def _rule(exc: BaseException) -> str:
+    """The rule a tracing failure breaks, in the words of codegen/scalar.py."""
+    msg = str(exc)
+    if "cannot be converted to float" in msg:
+        return ("no math.* or float() on traced values: use sqrt, rsqrt, rnorm, fabs, fmin, "
+                "fmax, clamp, floor (kinefuse.codegen.scalar) and sin, cos, atan2, asin, acos, "
+                "exp (kinefuse.codegen.mathlib)")
+    if "ufunc" in msg or "numpy" in msg.lower():
+        return ("no numpy functions on traced values: use the functions of "
+                "kinefuse.codegen.scalar / mathlib / linalg (" + msg + ")")
+    if "** or pow()" in msg:
+        return "no ** on traced values: write x * x (or sqrt(...))"
+    if "arguments, got int" in msg:
+        return msg + " (int values are counters: inc_if, select and comparisons only)"
+    if isinstance(exc, (TypeError, ValueError)):
+        return msg
+    return f"{type(exc).__name__}: {msg}"
 
 
 def _as_node(g: Graph, val, type_: str, what: str):
     if isinstance(val, Sym):
         if val.type != type_:
-            raise TypeError(f"{what}: declared {type_}, step returned {val.type}")
+            raise EstimatorError(f"{what}: declared {type_}, step returned {val.type}")
         return val.n
     if type_ == BOOL:
         return g.const(bool(val), BOOL)
@@ -259,7 +352,7 @@ def run_reference(est: Estimator, inputs: dict[str, np.ndarray], params: dict[st
     """
     prm = est.resolve_params(params)
     pvals = {k: (float(v),) for k, v in prm.items()}
-    pns = _ns(tuple(q.as_var() for q in est.params), pvals)
+    pns = _ns(tuple(q.as_var() for q in est.params), pvals, "parameter")
     cols = {}
     n = None
     for f in est.inputs.fields:
@@ -278,9 +371,9 @@ def run_reference(est: Estimator, inputs: dict[str, np.ndarray], params: dict[st
     outs = {v.name: [[] for _ in range(v.size)] for v in est.outputs}
     in_fields = est.inputs.fields
     for k in range(n or 0):
-        u = SimpleNamespace(**{f.name: cols[f.name][0][k] if f.size == 1
-                               else tuple(c[k] for c in cols[f.name]) for f in in_fields})
-        nx, y = est.step(_ns(est.state, st), u, pns)
+        u = _FIELDS["input"](**{f.name: cols[f.name][0][k] if f.size == 1
+                                else tuple(c[k] for c in cols[f.name]) for f in in_fields})
+        nx, y = est.step(_ns(est.state, st, "state variable"), u, pns)
         st = _flatten(est.name, "state", est.state, nx)
         yf = _flatten(est.name, "output", est.outputs, y)
         for v in est.outputs:

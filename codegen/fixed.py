@@ -104,10 +104,35 @@ class FixedPlan:
 
     # -- step 1 ---------------------------------------------------------------------------
     def _err(self, n: Node, msg: str):
-        raise RangeError(f"{self.where}: {msg} (node %{n.id} {n.op}"
-                         f"{' at ' + n.loc if n.loc else ''})")
+        raise RangeError(f"{self.where}: {msg} ({self._describe(n)})")
+
+    def _describe(self, n: Node) -> str:
+        """Which value: a declared variable by name, else the operation, its estimator line, its
+        operands' ranges and the result it is stored as (if it is one)."""
+        if n.op == "input":
+            return f"{n.kind} {n.name}[{n.index}]"
+        text = f"node %{n.id} {n.op}{' at ' + n.loc if n.loc else ''}"
+        ops = []
+        for a in n.args:
+            if a.type != REAL or a.id not in self.ival:
+                continue
+            lo, hi = self.ival[a.id]
+            iv = f"[{lo:g}, {hi:g}]"
+            if a.op == "input":
+                dlo, dhi = self._leaf_ranges[(a.kind, a.name)]
+                iv = f"{a.kind} {a.name}[{a.index}] {iv}" + (
+                    f" (declared [{dlo:g}, {dhi:g}] plus the sample inputs' headroom bit)"
+                    if a.kind == "input" else "")
+            ops.append(iv)
+        if ops:
+            text += ", operand ranges " + ", ".join(ops)
+        stored = [f"{r.kind} {r.name}[{r.index}]" for r in self.g.results if r.node is n]
+        if stored:
+            text += ", stored as " + ", ".join(stored[:3])
+        return text
 
     def _real_intervals(self, leaf_ranges):
+        self._leaf_ranges = leaf_ranges
         users = self.g.users()
         self._input_frac: dict[tuple[str, str], int] = {}
         self._assumed: dict[int, tuple[float, float]] = {}
@@ -127,6 +152,10 @@ class FixedPlan:
                 iv = (n.value, n.value)
             elif op == "input":
                 lo, hi = leaf_ranges[(n.kind, n.name)]
+                if not (math.isfinite(lo) and math.isfinite(hi)):
+                    self._err(n, f"declared range [{lo:g}, {hi:g}] of {n.kind} {n.name} is "
+                                 "unbounded; fixed point needs finite bounds (or declare the "
+                                 "estimator float32 only: systems = ('f32',))")
                 if n.kind == "input":
                     # one bit of headroom: out-of-range samples stay representable
                     f = input_frac(lo, hi)
@@ -149,7 +178,8 @@ class FixedPlan:
             elif op == "div":
                 lo, hi = a[1]
                 if lo <= 0.0 <= hi:
-                    self._err(n, f"divisor range [{lo:g}, {hi:g}] contains 0; guard it")
+                    self._err(n, f"divisor range [{lo:g}, {hi:g}] contains 0; "
+                                 "guard it: x / fmax(d, eps)")
                 iv = _ival_mul(a[0], (1.0 / hi, 1.0 / lo))
             elif op == "neg":
                 iv = (-a[0][1], -a[0][0])
@@ -385,6 +415,11 @@ class FixedLowering:
             if var.type != REAL or (kind, var.name) in out:
                 continue
             r = max(abs(var.lo), abs(var.hi))
+            if not math.isfinite(r):
+                raise RangeError(f"{self.decl.where}: {kind} {var.name}: declared range "
+                                 f"[{var.lo:g}, {var.hi:g}] is unbounded; fixed point needs "
+                                 "finite bounds (or declare the estimator float32 only: "
+                                 "systems = ('f32',))")
             if kind == "input":
                 out[(kind, var.name)] = Fmt(input_frac(var.lo, var.hi), -RAW_MAX, RAW_MAX)
             else:
@@ -453,7 +488,9 @@ class FixedLowering:
             fx = [self.fmt[x.id] for x in a]
             if fx[0].dyn or fx[1].dyn:
                 if fx[0].dyn and fx[1].dyn:
-                    raise NotImplementedError("product of two rsqrt values")
+                    raise RangeError(f"{self.decl.where}: product of two reciprocal square "
+                                     "roots (rsqrt/rnorm values) is not supported in fixed "
+                                     f"point: multiply one by another value first (at {loc})")
                 s, d = (a[1], a[0]) if fx[0].dyn else (a[0], a[1])
                 kbase = self.fmt[s.id].frac - f
                 return [Assign(t, "i32", Call("kf_mul_dyn", (self.ref(s, names), self.ref(d, names),
@@ -511,7 +548,8 @@ class FixedLowering:
                 return stmts + [Assign(t, "dyn", r, comment)]
             c = a[-1]
             if self.fmt[c.id].dyn:
-                raise NotImplementedError("rnorm scaled by an rsqrt value")
+                raise RangeError(f"{self.decl.where}: rnorm scaled by a reciprocal square root "
+                                 f"(rsqrt/rnorm value) is not supported in fixed point (at {loc})")
             return stmts + [Assign(t + "_u", "dyn", r, comment),
                             Assign(t, "dyn", Call("kf_dyn_scale", (
                                 Var(t + "_u"), self.ref(c, names), Int(self.fmt[c.id].frac))))]

@@ -40,6 +40,18 @@ def render_all(names: list[str] | None = None) -> dict[str, str]:
         "kf_fixed.h": (RUNTIME_DIR / "kf_fixed.h").read_text(),
     }
     rows = []
+    owner: dict[str, str] = {}
+
+    def put(rel: str, text: str, name: str) -> None:
+        # one file, two different texts: the later filter would silently replace the earlier
+        # one's input record (or its whole C: names that differ only in - and _)
+        if rel in owner and files[rel] != text:
+            raise ValueError(f"filters {owner[rel]} and {name} both generate {rel}, with "
+                             "different contents (an input record shared by name must be "
+                             "declared identically; filter names must differ after - -> _)")
+        files[rel] = text
+        owner.setdefault(rel, name)
+
     for name in names or list(estimators.ESTIMATORS):
         src = source_file(name)
         # an estimator may restrict its number systems (e.g. float32 only: a covariance
@@ -47,10 +59,10 @@ def render_all(names: list[str] | None = None) -> dict[str, str]:
         for system in getattr(estimators.get(name), "systems", SYSTEMS):
             lo = lowered(name, system)
             P = lo.prefix
-            files[f"{P}.h"] = c_header(lo, src)
-            files[f"{P}.c"] = c_source(lo, src)
-            files[f"models/{P}.py"] = py_model(lo, src)
-            files[f"kf_{lo.est.inputs.name}_{system}.h"] = c_input_header(lo)
+            put(f"{P}.h", c_header(lo, src), name)
+            put(f"{P}.c", c_source(lo, src), name)
+            put(f"models/{P}.py", py_model(lo, src), name)
+            put(f"kf_{lo.est.inputs.name}_{system}.h", c_input_header(lo), name)
             rows.append((name, system, lo.op_summary()))
     if names is None:   # the table covers every registered filter
         files["OPS.md"] = _ops_table(rows)
@@ -74,26 +86,50 @@ def write(out_dir: Path = GENERATED_DIR, names: list[str] | None = None) -> list
     written = []
     for rel, text in files.items():
         path = out_dir / rel
-        if not path.exists() or path.read_text() != text:
-            path.write_text(text)
+        data = text.encode("utf-8")
+        if not path.exists() or path.read_bytes() != data:
+            path.write_bytes(data)     # bytes: UTF-8 and \n whatever the locale and platform
             written.append(rel)
     if names is None:
-        for path in list(out_dir.glob("*.[ch]")) + list((out_dir / "models").glob("*.py")):
-            rel = str(path.relative_to(out_dir))
-            if rel not in files:
-                path.unlink()
-                written.append(f"(removed) {rel}")
+        for rel in _extra(out_dir, files):
+            (out_dir / rel).unlink()
+            written.append(f"(removed) {rel}")
     return written
 
 
+def _extra(out_dir: Path, files: dict[str, str]) -> list[str]:
+    """Generated-looking files in out_dir that the generator does not produce (any more)."""
+    return [str(p.relative_to(out_dir)) for p in
+            sorted(out_dir.glob("*.[ch]")) + sorted((out_dir / "models").glob("*.py"))
+            if str(p.relative_to(out_dir)) not in files]
+
+
+def differences(out_dir: Path, files: dict[str, str]) -> list[str]:
+    """``path: why`` for every file of `files` that is missing or differs in out_dir (compared
+    byte for byte: a file re-saved with other line endings or encoding differs too)."""
+    out = []
+    for rel, text in files.items():
+        path = out_dir / rel
+        if not path.is_file():
+            out.append(f"{rel}: missing")
+            continue
+        have, want = path.read_bytes(), text.encode("utf-8")
+        if have == want:
+            continue
+        if have.replace(b"\r\n", b"\n") == want:
+            out.append(f"{rel}: differs in its line endings only (CRLF: re-saved by an editor?)")
+            continue
+        hl, wl = have.split(b"\n"), want.split(b"\n")
+        line = next((i for i, (a, b) in enumerate(zip(hl, wl)) if a != b), min(len(hl), len(wl)))
+        out.append(f"{rel}: differs from the generator's output from line {line + 1} "
+                   "(edited by hand, or the reference code changed)")
+    return out
+
+
 def check(out_dir: Path = GENERATED_DIR) -> list[str]:
-    """Paths that differ from what the generator produces now (empty: up to date)."""
+    """``path: why`` for every file that differs from what the generator produces now
+    (empty: up to date)."""
     files = render_all()
-    stale = [rel for rel, text in files.items()
-             if not (out_dir / rel).exists() or (out_dir / rel).read_text() != text]
-    extra = [str(p.relative_to(out_dir)) for p in
-             list(out_dir.glob("*.[ch]")) + list((out_dir / "models").glob("*.py"))
-             if str(p.relative_to(out_dir)) not in files]
-    return stale + [f"{e} (not produced by the generator)" for e in extra]
-
-
+    return differences(out_dir, files) + [
+        f"{e}: not produced by the generator (`kinefuse codegen` removes it)"
+        for e in _extra(out_dir, files)]

@@ -11,7 +11,11 @@ values feed the C and the model, so their outputs can be compared bit for bit.
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import importlib
+import importlib.util
+import sys
+from pathlib import Path
 
 import numpy as np
 
@@ -30,6 +34,25 @@ class Encoded:
     n: int
 
 
+_MODULE_DIGEST: dict[str, bytes] = {}
+
+
+def current_module(modname: str):
+    """``importlib.import_module``, reloaded when the module's file changed since this process
+    loaded it (the models were regenerated): never the interface of the old generated code."""
+    mod = sys.modules.get(modname) or importlib.import_module(modname)
+    path = getattr(mod, "__file__", None)
+    if path and Path(path).is_file():
+        digest = hashlib.sha256(Path(path).read_bytes()).digest()
+        if _MODULE_DIGEST.setdefault(modname, digest) != digest:
+            # the bytecode cache validates by mtime (seconds) and size: a file regenerated in
+            # the same second with the same size would reload the old code
+            Path(importlib.util.cache_from_source(path)).unlink(missing_ok=True)
+            mod = importlib.reload(mod)
+            _MODULE_DIGEST[modname] = digest
+    return mod
+
+
 class ModelInfo:
     """Interface metadata of a generated filter (from its generated Python model)."""
 
@@ -37,8 +60,8 @@ class ModelInfo:
         self.name, self.system = name, system
         if mod is None:
             try:
-                mod = importlib.import_module("kinefuse.firmware.generated.models."
-                                              f"{name.replace('-', '_')}_{system}")
+                mod = current_module("kinefuse.firmware.generated.models."
+                                     f"{name.replace('-', '_')}_{system}")
             except ModuleNotFoundError as exc:
                 raise RuntimeError(f"no generated model for {name} ({system}); run "
                                    "`kinefuse codegen`") from exc
@@ -179,12 +202,26 @@ class CRunner(ModelInfo):
         return call, collect
 
 
-_RUNNERS: dict[tuple[str, str], ModelInfo] = {}
+_RUNNERS: dict[tuple[str, str, str], ModelInfo] = {}
+
+
+def _generated_digest(name: str, system: str) -> str:
+    """SHA-256 of the generated files a runner is made of: model, C source, every header."""
+    from kinefuse.codegen.generate import GENERATED_DIR
+    P = f"{name.replace('-', '_')}_{system}"
+    h = hashlib.sha256()
+    for path in [GENERATED_DIR / "models" / f"{P}.py", GENERATED_DIR / f"{P}.c",
+                 *sorted(GENERATED_DIR.glob("*.h"))]:
+        h.update(path.name.encode() + b"\0")
+        h.update(path.read_bytes() if path.is_file() else b"(missing)")
+        h.update(b"\0")
+    return h.hexdigest()
 
 
 def runner(name: str, impl: str) -> ModelInfo:
-    """Cached runner for impl in f32, q (C) or f32-model, q-model."""
-    key = (name, impl)
+    """Cached runner for impl in f32, q (C) or f32-model, q-model (per process, keyed on the
+    generated files' content: regenerated code gets a new runner, not the old one)."""
+    key = (name, impl, _generated_digest(name, impl.split("-")[0]))
     if key not in _RUNNERS:
         system = impl.split("-")[0]
         _RUNNERS[key] = (ModelRunner if impl.endswith("-model") else CRunner)(name, system)

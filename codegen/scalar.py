@@ -103,11 +103,14 @@ class Sym:
     def __rand__(self, o): return self._bin("and", o, self)
     def __or__(self, o): return self._bin("or", self, o)
     def __ror__(self, o): return self._bin("or", o, self)
-    def __invert__(self): return self._op("not", self)
+    def __invert__(self):
+        # ~True is -2 (true) in the float64 reference: the C's !b would differ from it
+        raise TypeError("~ on a traced value: use logical_not(b) (in Python ~True is -2)")
 
     def __bool__(self):
-        raise TypeError("a traced value has no truth value while generating code: "
-                        "use select(cond, a, b) instead of if/else, and logical_and/or/not")
+        raise TypeError("a traced value has no truth value while generating code (an if, "
+                        "and/or/not, min()/max() or a chained comparison on it): use "
+                        "select(cond, a, b), logical_and/or/not, fmin/fmax")
 
     def __float__(self):
         raise TypeError("a traced value cannot be converted to float while generating code")

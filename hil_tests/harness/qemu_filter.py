@@ -13,6 +13,7 @@ compared bit for bit with the Python models.
 """
 from __future__ import annotations
 
+import hashlib
 import re
 from dataclasses import dataclass
 
@@ -136,10 +137,26 @@ def build_filter_program(name: str, system: str, target: str, params: dict[str, 
 _CACHE: dict[tuple, FilterProgram] = {}
 
 
+def _sources_digest(name: str, system: str) -> str:
+    """SHA-256 of what the program compiles: the filter's generated C and every header it may
+    include (its own, the shared input record, kf_fixed.h)."""
+    P = f"{name.replace('-', '_')}_{system}"
+    h = hashlib.sha256()
+    for path in [GENERATED_DIR / f"{P}.c", *sorted(GENERATED_DIR.glob("*.h"))]:
+        h.update(path.name.encode() + b"\0")
+        h.update(path.read_bytes() if path.is_file() else b"(missing)")
+        h.update(b"\0")
+    return h.hexdigest()
+
+
 def filter_program(name: str, system: str, target: str, params: dict[str, object]) -> FilterProgram:
-    """Cached :func:`build_filter_program` (per process; builds are also cached on disk)."""
+    """Cached :func:`build_filter_program` (per process; builds are also cached on disk).
+
+    Keyed on the content of the generated sources, so regenerated C (``kinefuse codegen`` in the
+    same process, a test writing new code) is built anew, never answered by a stale program."""
     key = (name, system, target, tuple(sorted((k, repr(np.asarray(v).tolist()))
-                                              for k, v in params.items())))
+                                              for k, v in params.items())),
+           _sources_digest(name, system))
     if key not in _CACHE:
         _CACHE[key] = build_filter_program(name, system, target, params)
     return _CACHE[key]

@@ -19,15 +19,18 @@ def run(args) -> int:
     from kinefuse.codegen import generate
     from kinefuse.codegen.fixed import RangeError
     try:
+        out_dir = generate.GENERATED_DIR
         if args.check:
-            stale = _check(generate, args.filter) if args.filter else generate.check()
+            stale = (generate.differences(out_dir, generate.render_all(args.filter))
+                     if args.filter else generate.check(out_dir))
             if stale:
-                print("kinefuse codegen --check: stale generated files (run `kinefuse codegen` and "
-                      "commit):\n  " + "\n  ".join(stale), file=sys.stderr)
+                print(f"kinefuse codegen --check: {len(stale)} generated file(s) in {out_dir} "
+                      "are out of date (run `kinefuse codegen` and commit):\n  "
+                      + "\n  ".join(stale), file=sys.stderr)
                 return 1
             print("generated files are up to date", file=sys.stderr)
             return 0
-        written = generate.write(names=args.filter)
+        written = generate.write(out_dir, names=args.filter)
     except RangeError as exc:
         raise KinefuseError(f"fixed-point range analysis: {exc}") from None
     except ValueError as exc:
@@ -37,11 +40,3 @@ def run(args) -> int:
     print(f"{len(written)} file(s) updated in {generate.GENERATED_DIR}", file=sys.stderr)
     return 0
 
-
-def _check(generate, names: list[str]) -> list[str]:
-    """``--check --filter``: the generated files of these filters that differ (``--filter`` was
-    ignored: every filter was checked, and an unknown name passed)."""
-    out_dir = generate.GENERATED_DIR
-    files = generate.render_all(names)          # ValueError on an unknown filter
-    return [rel for rel, text in files.items()
-            if not (out_dir / rel).exists() or (out_dir / rel).read_text() != text]
