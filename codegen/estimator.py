@@ -18,6 +18,7 @@ and values outside an input's range are rejected by the filters.
 from __future__ import annotations
 
 import dataclasses
+import decimal
 import math
 import os
 import sysconfig
@@ -29,6 +30,23 @@ import numpy as np
 
 from kinefuse.codegen.ir import BOOL, INT, REAL, Graph
 from kinefuse.codegen.scalar import Sym
+
+
+def bound_text(v, upper: bool) -> str:
+    """A range bound to 6 significant digits, rounded into the range (a max of 0.08726646 shown
+    as 0.0872665 was a value the range check then refused); whole numbers as they are."""
+    if isinstance(v, int):
+        return str(v)
+    if not math.isfinite(v) or float(f"{v:g}") == v:
+        return f"{v:g}"
+    d = decimal.Decimal(float(v))
+    q = d.quantize(decimal.Decimal(1).scaleb(d.adjusted() - 5),
+                   rounding=decimal.ROUND_FLOOR if upper else decimal.ROUND_CEILING)
+    return f"{float(q):g}"
+
+
+def range_text(lo, hi) -> str:
+    return f"[{bound_text(lo, False)}, {bound_text(hi, True)}]"
 
 
 @dataclasses.dataclass(frozen=True)
@@ -118,7 +136,7 @@ class Param:
             if v not in self.choices:
                 raise ValueError(f"{who}={v:g} is not one of its choices {self.choices_text()}")
         elif not self.lo <= v <= self.hi:
-            raise ValueError(f"{who}={v!r} outside [{self.lo:g}, {self.hi:g}] {self.unit}".rstrip())
+            raise ValueError(f"{who}={v!r} outside {range_text(self.lo, self.hi)} {self.unit}".rstrip())
         return v
 
 

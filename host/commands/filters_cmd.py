@@ -1,11 +1,10 @@
 """`kinefuse filters`: the registered filters, their parameters, defaults and units."""
 from __future__ import annotations
 
-import decimal
 import json
-import math
 
 from kinefuse.codegen import estimators
+from kinefuse.codegen.estimator import bound_text, range_text  # noqa: F401 (params uses them)
 from kinefuse.host.console import print_table
 
 
@@ -14,23 +13,6 @@ def register(sub):
     p.add_argument("names", nargs="*", metavar="NAME", help="only these filters (default: all)")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
     p.set_defaults(func=run)
-
-
-def bound_text(v, upper: bool) -> str:
-    """A range bound to 6 significant digits, rounded into the range (a max of 0.08726646 shown
-    as 0.0872665 was a value the range check then refused); whole numbers as they are."""
-    if isinstance(v, int):
-        return str(v)
-    if not math.isfinite(v) or float(f"{v:g}") == v:
-        return f"{v:g}"
-    d = decimal.Decimal(float(v))
-    q = d.quantize(decimal.Decimal(1).scaleb(d.adjusted() - 5),
-                   rounding=decimal.ROUND_FLOOR if upper else decimal.ROUND_CEILING)
-    return f"{float(q):g}"
-
-
-def range_text(lo, hi) -> str:
-    return f"[{bound_text(lo, False)}, {bound_text(hi, True)}]"
 
 
 def describe() -> dict:

@@ -68,3 +68,17 @@ def test_params_describe_of_a_unit(run):
     lines = {ln.split(" = ")[0]: ln for ln in out.splitlines() if " = " in ln}
     assert "([1, 2000], default 1000) sensor sample rate" in lines["KF_RATE_HZ"]
     assert lines["KF_ACC_TAU_S"].endswith("(not in this host's firmware tables)")
+
+
+def test_a_range_error_shows_bounds_the_check_accepts():
+    """heading_rw's max 0.08726646 was shown as 0.0872665 in the refusal, a value refused again."""
+    import re
+
+    from kinefuse.codegen import estimators
+    est = estimators.get("flagship")
+    with pytest.raises(ValueError) as exc:
+        est.resolve_params({"heading_rw": 1.0})
+    lo, hi = re.search(r"outside \[([^,]+), ([^\]]+)\]", str(exc.value)).groups()
+    assert hi != f"{0.08726646259971647:g}"       # the 6-digit rounding that lies outside
+    for v in (lo, hi):
+        assert est.resolve_params({"heading_rw": float(v)})["heading_rw"] == float(v)
