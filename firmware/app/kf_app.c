@@ -28,7 +28,7 @@ void kf_app_init(kf_app *app)
     kf_config_load(app);
     kf_app_set_key(app, app->key, app->sign_floor);
     kf_config_select_filter(app);
-    kf_config_apply_rates(app);
+    (void)kf_config_apply_rates(app);   /* a grant outside KF_RATE_HZ's range: the stored rate stays */
     app->streaming = (uint8_t)(app->values[KF_P_STREAM_BOOT].u != 0u);
     app->next_status_us = app->clock_now;   /* announce ourselves at once */
     app->rates.t0 = app->clock_now;

@@ -41,7 +41,8 @@ typedef struct {
 typedef struct {
     uint32_t samples;            /* samples processed */
     uint32_t samples_dropped;    /* sensor samples lost before processing (HAL FIFO overrun) */
-    uint32_t rejected_base;      /* rejections of previous filter instances */
+    uint32_t rejected_base;      /* rejections of previous filter instances (sensor 0: reported) */
+    uint32_t rejected2_base;     /* the same for sensor 1's instance (two-sensor mode) */
     uint32_t unknown_messages;   /* valid frames not handled + candidates with unknown ids */
     uint32_t param_rejects;
     uint32_t unsigned_refused;   /* unsigned configuration/commands refused (key set) */
@@ -58,6 +59,8 @@ typedef struct {
     float sensor_hz, raw_hz, ori_hz;
     uint16_t load;               /* d% */
     uint32_t frames_dropped0;    /* tx.frames_dropped at the previous status (TX_OVERFLOW) */
+    uint32_t store_errors0;      /* store.errors at the previous status (STATUSTEXT) */
+    uint32_t stored_rejects0;    /* cnt.stored_rejects at the previous status (STATUSTEXT) */
 } kf_rates;
 
 typedef struct kf_app {
@@ -86,6 +89,7 @@ typedef struct kf_app {
     kf_filter_state_u scratch;     /* parameter validation without touching the running filter */
     kf_filter_params_u fparams;
     int32_t filter;                /* index in kf_gen_filters, -1: none */
+    int32_t mode_param;            /* the active filter's 6D/9D `mode` switch in values, -1: none */
     kf_filter_out out;
     kf_imu_input last_in;          /* last filter input (HIGHRES_IMU) */
     uint8_t initialised;

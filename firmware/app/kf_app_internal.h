@@ -13,7 +13,9 @@ void kf_config_load(kf_app *app);
 int kf_config_save(kf_app *app);
 /* validate, apply and persist one parameter value: 0 or a MAV_PARAM_ERROR code */
 uint8_t kf_config_set(kf_app *app, int32_t index, kf_pvalue value);
-void kf_config_apply_rates(kf_app *app);
+/* configure the sensor (its granted rate becomes KF_RATE_HZ) and the dividers: 0, or -1 when
+ * the sensor delivers a rate outside KF_RATE_HZ's range */
+int kf_config_apply_rates(kf_app *app);
 void kf_config_select_filter(kf_app *app);
 void kf_config_reset_filter(kf_app *app);
 void kf_config_reset_filter2(kf_app *app);
@@ -34,6 +36,8 @@ int kf_send_param_value(kf_app *app, int32_t index);
 int kf_send_param_error(kf_app *app, const char *name16, int32_t index, uint8_t error,
                         uint8_t to_sys, uint8_t to_comp);
 int kf_send_ack(kf_app *app, uint16_t command, uint8_t result, uint8_t to_sys, uint8_t to_comp);
+/* STATUSTEXT (text: at most 50 characters, not chunked) */
+int kf_send_statustext(kf_app *app, uint8_t severity, const char *text);
 int kf_send_heartbeat(kf_app *app);
 int kf_send_unit_status(kf_app *app);
 int kf_send_sys_status(kf_app *app);

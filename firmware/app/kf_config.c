@@ -106,6 +106,7 @@ void kf_config_reset_filter(kf_app *app)
 static void reset_two_sensors(kf_app *app)
 {
     float jv[KF_GEN_JOINT_PARAM_COUNT];
+    app->cnt.rejected2_base += (uint32_t)app->out2.rejected;
     app->two_sensors = (uint8_t)(app->values[KF_P_JOINT_ID].u != 0u);
     memset(&app->out2, 0, sizeof app->out2);
     app->out2.q[0] = 1.0f;
@@ -122,7 +123,7 @@ void kf_config_reset_filter2(kf_app *app)
 {
     float vec[KF_GEN_FILTER_PARAM_MAX + 1];
     const kf_filter_ops *f = active_ops(app);
-    app->cnt.rejected_base += (uint32_t)app->out2.rejected;
+    app->cnt.rejected2_base += (uint32_t)app->out2.rejected;   /* sensor 1's own count, not sensor 0's */
     memset(&app->out2, 0, sizeof app->out2);
     app->out2.q[0] = 1.0f;
     app->initialised2 = 0u;
@@ -138,6 +139,21 @@ void kf_config_reset_filter2(kf_app *app)
 void kf_config_select_filter(kf_app *app)
 {
     app->filter = kf_filter_index(app->values[KF_P_FILTER].u);
+    /* the filter's `mode` choice (KF_FL_MODE, KF_EK_MODE: 0 ignores the magnetometer), found
+     * once here rather than by name for every KF_ORIENTATION */
+    app->mode_param = -1;
+    if (app->filter >= 0) {
+        const kf_filter_ops *f = &kf_gen_filters[app->filter];
+        for (uint16_t i = 0; i < f->param_count; i++) {
+            uint32_t k = KF_P_FILTER_FIRST + f->first_param + i;
+            const char *n = kf_param_table[k].name;
+            size_t len = strlen(n);
+            if ((kf_param_table[k].flags & KF_PF_CHOICE) != 0u && len > 5u
+                && strcmp(n + len - 5u, "_MODE") == 0) {
+                app->mode_param = (int32_t)k;
+            }
+        }
+    }
     kf_config_reset_filter(app);
 }
 
@@ -150,15 +166,30 @@ static uint16_t divider(uint32_t rate, uint32_t hz)
     return (uint16_t)(d == 0u ? 1u : d);
 }
 
-void kf_config_apply_rates(kf_app *app)
+/* The sensor is configured first: when it delivers another rate than KF_RATE_HZ asks for, that
+ * rate becomes KF_RATE_HZ (time steps, dividers, PARAM_VALUE and KF_UNIT_STATUS tell what the
+ * unit really does).  Returns -1 when the rate it delivers is outside KF_RATE_HZ's range (the
+ * parameter is then left as it was asked). */
+int kf_config_apply_rates(kf_app *app)
 {
+    int r = 0;
+    int32_t granted = kf_hal_sensor_configure(app->values[KF_P_RATE_HZ].u);
+    if (granted > 0) {                 /* -1: no sensor (samples over the link): as asked */
+        kf_pvalue g;
+        g.u = (uint32_t)granted;
+        if (kf_param_in_range(&kf_param_table[KF_P_RATE_HZ], g)) {
+            app->values[KF_P_RATE_HZ] = g;
+        } else {
+            r = -1;
+        }
+    }
     uint32_t rate = app->values[KF_P_RATE_HZ].u;
     app->div_ori = divider(rate, app->values[KF_P_ORI_RATE_HZ].u);
     app->div_hr = divider(rate, app->values[KF_P_HRIMU_RATE].u);
     app->div_aq = divider(rate, app->values[KF_P_ATTQ_RATE].u);
     app->div_eff = divider(rate, app->values[KF_P_EFF_RATE_HZ].u);
     app->cnt_ori = app->cnt_hr = app->cnt_aq = app->cnt_eff = 0u;
-    (void)kf_hal_sensor_configure(rate);
+    return r;
 }
 
 /* --- persistence ------------------------------------------------------------------------ */
@@ -367,16 +398,22 @@ uint8_t kf_config_set(kf_app *app, int32_t index, kf_pvalue v)
             }
             break;
         case KF_P_EFF_RATE_HZ:
-            kf_config_apply_rates(app);
+            (void)kf_config_apply_rates(app);
             if ((old != 0u) != (v.u != 0u)) {
                 kf_leg_reset(app);             /* the leg EKF on (from its start) or off */
             }
             break;
         case KF_P_RATE_HZ:
+            if (kf_config_apply_rates(app) != 0) {
+                app->values[index].u = old;    /* the sensor cannot deliver it: keep the old rate */
+                (void)kf_config_apply_rates(app);
+                return MAV_PARAM_ERROR_VALUE_OUT_OF_RANGE;
+            }
+            break;
         case KF_P_ORI_RATE_HZ:
         case KF_P_HRIMU_RATE:
         case KF_P_ATTQ_RATE:
-            kf_config_apply_rates(app);
+            (void)kf_config_apply_rates(app);
             break;
         default:
             break;

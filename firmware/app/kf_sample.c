@@ -122,6 +122,13 @@ static void output_cov(const kf_app *app, float cov[6])
     cov[5] = zz;
 }
 
+/* 1 when the active filter runs 6D: its `mode` switch at 0 ignores the magnetometer, so
+ * KF_ORIENTATION must not say MAG_USED */
+static int filter_6d(const kf_app *app)
+{
+    return app->mode_param >= 0 && app->values[app->mode_param].f < 0.5f;
+}
+
 static void send_orientation(kf_app *app, uint64_t t, uint32_t counter)
 {
     mavlink_message_t msg;
@@ -133,7 +140,7 @@ static void send_orientation(kf_app *app, uint64_t t, uint32_t counter)
     st |= app->initialised ? KF_ORIENTATION_STATUS_INITIALISED : 0u;
     st |= app->out.rest ? KF_ORIENTATION_STATUS_AT_REST : 0u;
     st |= app->out.mag_disturbed ? KF_ORIENTATION_STATUS_MAG_DISTURBED : 0u;
-    st |= (app->mag_seen && !app->out.mag_disturbed) ? KF_ORIENTATION_STATUS_MAG_USED : 0u;
+    st |= (app->mag_seen && !app->out.mag_disturbed && !filter_6d(app)) ? KF_ORIENTATION_STATUS_MAG_USED : 0u;
     st |= app->tared ? KF_ORIENTATION_STATUS_HEADING_TARED : 0u;
     st |= app->clipped ? KF_ORIENTATION_STATUS_INPUT_CLIPPED : 0u;
     st |= app->numeric_reset ? KF_ORIENTATION_STATUS_NUMERIC_RESET : 0u;
@@ -220,7 +227,8 @@ static void send_joint_angle(kf_app *app, uint64_t t, uint32_t counter)
     kf_gen_joint_update(&app->joint, &app->out, &app->out2, &app->jout);
     st |= (app->initialised && app->initialised2 && app->jout.valid) ? KF_JOINT_ANGLE_STATUS_VALID : 0u;
     st |= (a[1] > KF_NEAR_LOCK_RAD || a[1] < -KF_NEAR_LOCK_RAD) ? KF_JOINT_ANGLE_STATUS_NEAR_SINGULARITY : 0u;
-    st |= (app->values[KF_P_MAG_ENABLE].u == 0u || app->out.mag_disturbed || app->out2.mag_disturbed)
+    st |= (app->values[KF_P_MAG_ENABLE].u == 0u || filter_6d(app) || app->out.mag_disturbed
+           || app->out2.mag_disturbed)
               ? KF_JOINT_ANGLE_STATUS_HEADING_UNRELIABLE : 0u;
     mavlink_msg_kf_joint_angle_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg, t,
                                            counter, a[0], a[1], a[2],

@@ -57,6 +57,19 @@ int kf_send_ack(kf_app *app, uint16_t command, uint8_t result, uint8_t to_sys, u
     return kf_send(app, &msg);
 }
 
+int kf_send_statustext(kf_app *app, uint8_t severity, const char *text)
+{
+    mavlink_message_t msg;
+    char buf[MAVLINK_MSG_STATUSTEXT_FIELD_TEXT_LEN];   /* the packer copies all 50 bytes */
+    memset(buf, 0, sizeof buf);
+    for (uint32_t i = 0; i < sizeof buf && text[i] != '\0'; i++) {
+        buf[i] = text[i];
+    }
+    mavlink_msg_statustext_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg,
+                                       severity, buf, 0u, 0u);
+    return kf_send(app, &msg);
+}
+
 int kf_send_heartbeat(kf_app *app)
 {
     mavlink_message_t msg;
@@ -74,7 +87,7 @@ static uint32_t status_flags(const kf_app *app)
     f |= app->calibrated ? KF_UNIT_STATUS_FLAGS_CALIBRATED : 0u;
     /* "since the previous status": frames_dropped itself counts since boot */
     f |= app->tx.frames_dropped != app->rates.frames_dropped0 ? KF_UNIT_STATUS_FLAGS_TX_OVERFLOW : 0u;
-    f |= app->store.errors != 0u ? KF_UNIT_STATUS_FLAGS_SENSOR_FAULT : 0u;
+    /* storage errors are not a sensor fault: they go out as STATUSTEXT (kf_status.c) */
     return f;
 }
 
@@ -92,7 +105,8 @@ int kf_send_unit_status(kf_app *app)
         KF_GIT_HASH, KF_DIALECT_HASH, c->samples, c->samples_dropped, app->tx.frames_dropped,
         rejected, app->rx.crc_errors + app->rx.bad_frames, unknown, c->param_rejects,
         (float)rate, app->rates.sensor_hz, app->streaming ? (float)rate : 0.0f, app->rates.raw_hz,
-        app->streaming ? (float)ori : 0.0f, app->rates.ori_hz, mv, app->rates.load,
+        /* KF_FILTER 0 (none): no KF_ORIENTATION goes out, so none is requested */
+        (app->streaming && app->filter >= 0) ? (float)ori : 0.0f, app->rates.ori_hz, mv, app->rates.load,
         (uint16_t)status_flags(app), -1, kf_sysid(app),
         app->filter >= 0 ? kf_gen_filters[app->filter].id : 0u,
         KF_NUMERIC_Q ? KF_NUMERIC_FORMAT_FIXED_POINT : KF_NUMERIC_FORMAT_FLOAT32, KF_EARTH_FRAME_ENU);
@@ -114,8 +128,11 @@ int kf_send_sys_status(kf_app *app)
     }
     uint32_t sensors = MAV_SYS_STATUS_SENSOR_3D_GYRO | MAV_SYS_STATUS_SENSOR_3D_ACCEL
                        | MAV_SYS_STATUS_SENSOR_3D_MAG;
+    /* KF_MAG_ENABLE 0: the magnetometer is not used (present, not enabled) */
+    uint32_t enabled = app->values[KF_P_MAG_ENABLE].u != 0u
+                       ? sensors : sensors & ~(uint32_t)MAV_SYS_STATUS_SENSOR_3D_MAG;
     mavlink_msg_sys_status_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg,
-                                       sensors, sensors, sensors, app->rates.load, kf_hal_battery_mv(),
+                                       sensors, enabled, sensors, app->rates.load, kf_hal_battery_mv(),
                                        -1, -1, 0u, s[0], s[1], s[2], s[3], s[4], 0u, 0u, 0u);
     return kf_send(app, &msg);
 }

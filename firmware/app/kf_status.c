@@ -1,6 +1,7 @@
 /*
  * kf_status.c - once per second: HEARTBEAT, KF_UNIT_STATUS and SYS_STATUS, with the rates
- * achieved and the processor load measured over the second that ended.
+ * achieved and the processor load measured over the second that ended; a STATUSTEXT when the
+ * parameter storage failed, or a stored value was refused at load, since the previous one.
  */
 #include <stdint.h>
 
@@ -28,6 +29,20 @@ void kf_status_tick(kf_app *app, uint64_t now)
     (void)kf_send_unit_status(app);
     (void)kf_send_sys_status(app);
     r->frames_dropped0 = app->tx.frames_dropped;
+    if (app->store.errors != r->store_errors0) {
+        /* a failed load or save since the previous status (at boot: since reset); no
+         * KF_UNIT_STATUS flag means "storage", and it is not a sensor fault */
+        if (kf_send_statustext(app, MAV_SEVERITY_ERROR, "parameter storage error: settings may be lost")) {
+            r->store_errors0 = app->store.errors;
+        }
+    }
+    if (app->cnt.stored_rejects != r->stored_rejects0) {
+        /* stored values the firmware refused at load (e.g. a range narrowed by an update):
+         * the defaults run instead, which the user must know */
+        if (kf_send_statustext(app, MAV_SEVERITY_WARNING, "stored parameter out of range: default used")) {
+            r->stored_rejects0 = app->cnt.stored_rejects;
+        }
+    }
     /* next second on the device clock; after a stall, skip what was missed */
     app->next_status_us += KF_STATUS_PERIOD_US;
     if (app->next_status_us <= now) {

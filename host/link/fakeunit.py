@@ -42,6 +42,24 @@ DEFAULT_PARAMS = {
 }
 
 
+def divider(rate_hz: int, hz: int) -> int:
+    """Every how many samples a stream at ``hz`` goes out at sensor rate ``rate_hz`` (0: off),
+    as the firmware computes it (kf_config.c): rounded half up, at least 1 (Python's round()
+    rounds half to even: 250 Hz / 100 Hz gave 2 here and 3 on the unit)."""
+    if hz <= 0 or rate_hz <= 0:
+        return 0
+    return max(1, (int(rate_hz) + int(hz) // 2) // int(hz))
+
+
+def interval_rate(interval_us: float):
+    """MAV_CMD_SET_MESSAGE_INTERVAL interval (us) -> whole Hz as the firmware computes it
+    (kf_handle.c: float32, rounded half up); None when the unit answers DENIED."""
+    if math.isnan(interval_us) or 0 < interval_us < 100:
+        return None                       # NaN, faster than 10 kHz
+    rate = int(np.float32(1e6) / np.float32(interval_us) + np.float32(0.5))
+    return None if rate == 0 else rate    # slower than 0.5 Hz (or inf) is not "off"
+
+
 def _quat_mul(a, b):
     w1, x1, y1, z1 = a
     w2, x2, y2, z2 = b
@@ -89,6 +107,8 @@ class FakeUnit:
     def _reset_state(self):
         self.t0_ns = time.monotonic_ns()
         self.sample_counter = 0
+        self.cnt_ori = 0        # samples since the last KF_ORIENTATION (the firmware's cnt_ori)
+        self.samples_taken = 0  # KF_UNIT_STATUS.samples: since boot (MAV_CMD_KF_STREAM p2 resets only the counter)
         self.next_sample_us = 0
         self.next_status_us = 0
         self.q = np.array([1.0, 0.0, 0.0, 0.0])
@@ -151,8 +171,7 @@ class FakeUnit:
         if not self.streaming or self.hil:
             self.next_sample_us = max(self.next_sample_us, now)
             return out
-        ori_every = 0 if self.params["KF_ORI_RATE_HZ"] <= 0 else \
-            max(1, round(self.params["KF_RATE_HZ"] / self.params["KF_ORI_RATE_HZ"]))
+        ori_every = divider(self.params["KF_RATE_HZ"], self.params["KF_ORI_RATE_HZ"])
         budget = 2000
         while self.next_sample_us <= now and budget:
             budget -= 1
@@ -161,13 +180,19 @@ class FakeUnit:
             frame = self._sample(t)
             counter = self.sample_counter          # the counter this sample's frame carries
             self.sample_counter = (self.sample_counter + 1) & 0xFFFFFFFF
+            self.samples_taken = (self.samples_taken + 1) & 0xFFFFFFFF
             if self.drop_every and self.sample_counter % self.drop_every == 0:
                 self.counters["frames_dropped"] += 1
             else:
                 out.append(frame)
                 self.sent_samples += 1
-            if ori_every and self.sample_counter % ori_every == 0:
-                out.append(self._orientation(t, counter))
+            # as the firmware's due(): every ori_every-th sample since the counter was last reset
+            # (rate change, stream start with counter reset), not sample_counter % ori_every
+            if ori_every:
+                self.cnt_ori += 1
+                if self.cnt_ori >= ori_every:
+                    self.cnt_ori = 0
+                    out.append(self._orientation(t, counter))
         return out
 
     def _sample(self, t_us: int) -> bytes:
@@ -211,7 +236,7 @@ class FakeUnit:
         rate = self.params["KF_RATE_HZ"] if self.streaming else 0
         return self.enc.encode(
             MSG_STATUS, time_boot_us=now_us, firmware_version=FIRMWARE_VERSION, firmware_git_hash=0x0BADC0DE,
-            dialect_hash=DIALECT_HASH(), samples=self.sample_counter, samples_dropped=0,
+            dialect_hash=DIALECT_HASH(), samples=self.samples_taken, samples_dropped=0,
             frames_dropped=self.counters["frames_dropped"], rejected_samples=0, crc_errors=c.crc_errors,
             unknown_messages=self.counters["unknown_messages"], param_rejects=self.counters["param_rejects"],
             sensor_rate_requested=float(self.params["KF_RATE_HZ"]), sensor_rate_achieved=float(self.params["KF_RATE_HZ"]),
@@ -250,10 +275,13 @@ class FakeUnit:
                 return []
             names = list(self.params)
             if m.param_index >= 0:
-                return [self._param_value(m.param_index)] if m.param_index < len(names) else []
+                if m.param_index < len(names):
+                    return [self._param_value(m.param_index)]
+                # as the unit: PARAM_ERROR (no such parameter), not silence (a host timeout)
+                return [self._param_error(m.param_id, m.param_index, 1, f, count=False)]
             if m.param_id in self.params:
                 return [self._param_value(names.index(m.param_id))]
-            return [self._param_error(m.param_id, -1, 1, f)]
+            return [self._param_error(m.param_id, -1, 1, f, count=False)]
         if name == "PARAM_SET":
             return self._param_set(m, f) if self.answer_params else []
         if name == "COMMAND_LONG":
@@ -276,6 +304,7 @@ class FakeUnit:
                                 gyro_z=int(g[2]), mag_x=int(mg[0]), mag_y=int(mg[1]), mag_z=int(mg[2]),
                                 temperature=int(t), unit_id=self.params["KF_UNIT_ID"], flags=flags)
         self.sample_counter = (self.sample_counter + 1) & 0xFFFFFFFF
+        self.samples_taken = (self.samples_taken + 1) & 0xFFFFFFFF
         self.sent_samples += 1
         return [frame]
 
@@ -285,8 +314,9 @@ class FakeUnit:
         return self.enc.encode("PARAM_VALUE", param_id=name, param_value=encode_value(self.params[name], ptype),
                                param_type=ptype, param_count=len(self.params), param_index=index)
 
-    def _param_error(self, name: str, index: int, error: int, f) -> bytes:
-        self.counters["param_rejects"] += 1
+    def _param_error(self, name: str, index: int, error: int, f, count: bool = True) -> bytes:
+        if count:                         # param_rejects counts rejected PARAM_SETs only (as the unit)
+            self.counters["param_rejects"] += 1
         return self.enc.encode("PARAM_ERROR", target_system=f.sysid, target_component=f.compid,
                                param_id=name, param_index=index, error=error)
 
@@ -298,6 +328,8 @@ class FakeUnit:
         value = decode_value(m.param_value, m.param_type)
         if m.param_type != ptype or not (lo <= value <= hi) or (isinstance(value, float) and math.isnan(value)):
             return [self._param_error(m.param_id, index, 2, f), self._param_value(index)]
+        if m.param_id in ("KF_RATE_HZ", "KF_ORI_RATE_HZ") and value != self.params[m.param_id]:
+            self.cnt_ori = 0              # a change restarts the firmware's dividers (kf_config_apply_rates)
         self.params[m.param_id] = value
         if m.param_id == "KF_UNIT_ID":
             self.enc.sysid = int(value)
@@ -314,6 +346,7 @@ class FakeUnit:
             self.streaming = p[0] >= 0.5
             if self.streaming and p[1] >= 0.5:
                 self.sample_counter = 0
+                self.cnt_ori = 0
             return [self._ack(m.command, 0, f)]
         if m.command == CMD_SET_INTERVAL:
             msgid, interval = int(p[0]), p[1]
@@ -321,9 +354,11 @@ class FakeUnit:
             if key is None:
                 return [self._ack(m.command, 3, f)]
             lo, hi = DEFAULT_PARAMS[key][2:]
-            rate = 0 if interval < 0 else DEFAULT_PARAMS[key][1] if interval == 0 else round(1e6 / interval)
-            if not lo <= rate <= hi:
+            rate = 0 if interval < 0 else DEFAULT_PARAMS[key][1] if interval == 0 else interval_rate(interval)
+            if rate is None or not lo <= rate <= hi:
                 return [self._ack(m.command, 2, f)]
+            if rate != self.params[key]:
+                self.cnt_ori = 0
             self.params[key] = rate
             return [self._ack(m.command, 0, f)]
         if m.command == CMD_REQUEST_MESSAGE:

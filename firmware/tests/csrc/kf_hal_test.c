@@ -6,7 +6,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "kf_app.h"
+#include "kf_app_internal.h"
 #include "kf_hal_test.h"
 
 #define T_UART 65536u
@@ -26,6 +26,8 @@ static uint32_t g_written;
 static kf_raw_sample g_sensor[T_SENSOR];
 static uint32_t g_sensor_head, g_sensor_tail;
 static int g_reboots;
+static int32_t g_grant = -1;            /* kf_hal_sensor_configure: -1 no sensor, 0 as asked, else this */
+static uint32_t g_asked;                /* the rate last asked for */
 
 void kf_hal_init(void) {}
 
@@ -103,6 +105,15 @@ void kf_hal_reboot(void)
     g_reboots++;
 }
 
+int32_t kf_hal_sensor_configure(uint32_t rate_hz)
+{
+    g_asked = rate_hz;
+    if (g_grant < 0) {
+        return -1;
+    }
+    return g_grant == 0 ? (int32_t)rate_hz : g_grant;
+}
+
 /* --- test control ------------------------------------------------------------------------ */
 
 uint32_t kft_app_size(void)
@@ -121,6 +132,8 @@ void kft_reset(uint32_t storage_size)
     g_written = 0u;
     g_sensor_head = g_sensor_tail = 0u;
     g_reboots = 0;
+    g_grant = -1;
+    g_asked = 0u;
 }
 
 uint32_t kft_feed(const uint8_t *data, uint32_t len)
@@ -188,6 +201,16 @@ int kft_reboots(void)
     return g_reboots;
 }
 
+void kft_sensor_grant(int32_t hz)
+{
+    g_grant = hz;
+}
+
+uint32_t kft_sensor_asked(void)
+{
+    return g_asked;
+}
+
 /* --- views of the application ------------------------------------------------------------ */
 
 void kft_counters(const void *vapp, uint32_t out[12])
@@ -205,6 +228,22 @@ void kft_counters(const void *vapp, uint32_t out[12])
     out[9] = app->cnt.samples;
     out[10] = app->store.errors;
     out[11] = app->cnt.stored_rejects;
+}
+
+/* rejection counters: sensor 0's base and instance, sensor 1's base and instance */
+void kft_rejected(const void *vapp, uint32_t out[4])
+{
+    const kf_app *app = (const kf_app *)vapp;
+    out[0] = app->cnt.rejected_base;
+    out[1] = (uint32_t)app->out.rejected;
+    out[2] = app->cnt.rejected2_base;
+    out[3] = (uint32_t)app->out2.rejected;
+}
+
+/* what the unit does after a non-finite output of sensor 1's filter */
+void kft_reset_filter2(void *vapp)
+{
+    kf_config_reset_filter2((kf_app *)vapp);
 }
 
 uint32_t kft_param_count(void)
