@@ -180,6 +180,19 @@ class Unit:
 
 
 @pytest.fixture(scope="session")
+def unit_type():
+    """The Unit class for tests that make their own units (``from conftest import Unit`` found
+    host/tests/conftest.py instead when both folders ran in one process)."""
+    return Unit
+
+
+@pytest.fixture(scope="session")
+def inproc_builder():
+    """build_inproc, for the same reason as unit_type."""
+    return build_inproc
+
+
+@pytest.fixture(scope="session")
 def inproc_lib():
     return build_inproc("f32")
 

@@ -81,14 +81,13 @@ def test_byte_by_byte_delivery(unit):
 
 @settings(max_examples=60, deadline=None, derandomize=True)
 @given(chunks=st.lists(st.tuples(st.binary(max_size=300), st.integers(0, 60)), min_size=1, max_size=12))
-def test_garbage_never_crashes_and_never_costs_a_valid_frame(inproc_lib, chunks):
+def test_garbage_never_crashes_and_never_costs_a_valid_frame(inproc_lib, unit_type, chunks):
     """Random bytes and truncated frames between valid requests: the unit answers exactly the
     requests the host's reference decoder finds in the same byte stream (every valid one, once),
     and nothing crashes."""
-    from conftest import Unit
     from kinefuse.host.link.decoder import StreamDecoder
     ffi, lib = inproc_lib
-    u = Unit(ffi, lib)
+    u = unit_type(ffi, lib)
     stream = b""
     for i, (junk, cut) in enumerate(chunks):
         full = read_req(i % 20)
@@ -103,10 +102,9 @@ def test_garbage_never_crashes_and_never_costs_a_valid_frame(inproc_lib, chunks)
 
 @settings(max_examples=40, deadline=None, derandomize=True)
 @given(data=st.binary(min_size=1, max_size=2000))
-def test_arbitrary_bytes_are_survived(inproc_lib, data):
-    from conftest import Unit
+def test_arbitrary_bytes_are_survived(inproc_lib, unit_type, data):
     ffi, lib = inproc_lib
-    u = Unit(ffi, lib)
+    u = unit_type(ffi, lib)
     u.feed(data, polls=2)
     u.feed(b"\x00" * 280 + read_req(3))               # still alive and answering
     assert 3 in [m.param_index for m in only(u.take(), "PARAM_VALUE")]

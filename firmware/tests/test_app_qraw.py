@@ -10,16 +10,14 @@ from kinefuse.firmware.hostunit import counts_model, synthetic_samples
 
 
 @pytest.fixture(scope="module")
-def qlib():
-    from conftest import build_inproc
-    return build_inproc("q")
+def qlib(inproc_builder):
+    return inproc_builder("q")
 
 
 @pytest.mark.parametrize("name, fid, params", [("flagship", 5, {"tau_acc": 2.0}), ("madgwick", 3, {"beta": 0.1})])
-def test_raw_q_output_equals_the_models(qlib, name, fid, params):
-    from conftest import Unit
+def test_raw_q_output_equals_the_models(qlib, unit_type, name, fid, params):
     ffi, lib = qlib
-    u = Unit(ffi, lib)
+    u = unit_type(ffi, lib)
     calib = {"gyr_b1": 0.004, "acc_m11": 0.98, "mag_b0": -2.5}
     names = {"gyr_b1": "KF_GYR_B1", "acc_m11": "KF_ACC_M11", "mag_b0": "KF_MAG_B0"}
     for k, v in calib.items():
