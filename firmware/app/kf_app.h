@@ -48,7 +48,7 @@ typedef struct {
     uint32_t unsigned_refused;   /* unsigned configuration/commands refused (key set) */
     uint32_t signature_failures; /* signed frames whose signature or timestamp failed */
     uint32_t hil_invalid;        /* HIL_SENSOR samples with NaN values or an unknown sensor id (not processed) */
-    uint32_t numeric_resets;     /* filter re-initialised after a non-finite output */
+    uint32_t numeric_resets;     /* a filter (either sensor's) re-initialised after a non-finite output */
     uint32_t stored_rejects;     /* stored values out of range at load (defaults used) */
 } kf_counters;
 
@@ -59,7 +59,8 @@ typedef struct {
     float sensor_hz, raw_hz, ori_hz;
     uint16_t load;               /* d% */
     uint32_t frames_dropped0;    /* tx.frames_dropped at the previous status (TX_OVERFLOW) */
-    uint32_t store_errors0;      /* store.errors at the previous status (STATUSTEXT) */
+    uint32_t store_errors0;      /* store.errors when the last storage STATUSTEXT was queued */
+    uint32_t store_errors_st0;   /* store.errors at the previous status (STORAGE_ERROR) */
     uint32_t stored_rejects0;    /* cnt.stored_rejects at the previous status (STATUSTEXT) */
 } kf_rates;
 
@@ -93,7 +94,9 @@ typedef struct kf_app {
     kf_filter_out out;
     kf_imu_input last_in;          /* last filter input (HIGHRES_IMU) */
     uint8_t initialised;
-    uint8_t numeric_reset;         /* reported once in KF_ORIENTATION.status */
+    uint8_t numeric_reset;         /* sensor 0's filter reset: reported once in KF_ORIENTATION.status */
+    uint8_t joint_reset;           /* either sensor's filter reset: once in KF_JOINT_ANGLE.status */
+    uint8_t mag_present;           /* a magnetometer reading of sensor 0 arrived since boot */
     uint8_t clipped;               /* a clipped sample since the previous KF_ORIENTATION */
     uint8_t mag_seen;              /* a magnetometer reading reached the filter since then */
     uint8_t calibrated;            /* calibration differs from the defaults */

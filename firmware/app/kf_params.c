@@ -71,6 +71,10 @@ int kf_param_in_range(const kf_param_desc *d, kf_pvalue v)
     if (d == &kf_param_table[KF_P_EFF_RATE_HZ]) {
         return v.u == 0u || KF_HAVE_LEG;                   /* the leg EKF is in this build */
     }
+    if (d == &kf_param_table[KF_P_HIL_MODE]) {
+        /* the raw Q quaternion exists in fixed-point builds only: elsewhere the bit would do nothing */
+        return (v.u & KF_HIL_MODE_Q_RAW) == 0u || KF_NUMERIC_Q;
+    }
     return 1;
 }
 

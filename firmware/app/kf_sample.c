@@ -230,11 +230,14 @@ static void send_joint_angle(kf_app *app, uint64_t t, uint32_t counter)
     st |= (app->values[KF_P_MAG_ENABLE].u == 0u || filter_6d(app) || app->out.mag_disturbed
            || app->out2.mag_disturbed)
               ? KF_JOINT_ANGLE_STATUS_HEADING_UNRELIABLE : 0u;
+    st |= app->joint_reset ? KF_JOINT_ANGLE_STATUS_NUMERIC_RESET : 0u;
     mavlink_msg_kf_joint_angle_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg, t,
                                            counter, a[0], a[1], a[2],
                                            (uint8_t)app->values[KF_P_JOINT_ID].u, joint_sequence(app),
                                            st, kf_sysid(app), kf_sysid(app));
-    (void)kf_send(app, &msg);
+    if (kf_send(app, &msg)) {
+        app->joint_reset = 0u;            /* told once; a dropped frame keeps it for the next */
+    }
 }
 
 void kf_app_sample2(kf_app *app, const kf_sample *s)
@@ -256,7 +259,7 @@ void kf_app_sample2(kf_app *app, const kf_sample *s)
     if (!isfinite(app->out2.q[0]) || !isfinite(app->out2.q[1]) || !isfinite(app->out2.q[2])
         || !isfinite(app->out2.q[3])) {
         kf_config_reset_filter2(app);
-        app->numeric_reset = 1u;
+        app->joint_reset = 1u;            /* sensor 1 has no KF_ORIENTATION: not sensor 0's flag */
         app->cnt.numeric_resets++;
     } else if (app->out2.rejected == before) {
         app->initialised2 = 1u;
@@ -293,6 +296,7 @@ void kf_app_sample(kf_app *app, const kf_sample *s)
     filter_input(app, &app->calib, s, dt_us, &in);
     app->last_in = in;
     app->mag_seen |= in.mag_valid;
+    app->mag_present |= mag_valid;            /* a reading arrived, whether KF_MAG_ENABLE uses it or not */
     if ((s->flags & (KF_RAW_SAMPLE_FLAGS_ACC_CLIPPED | KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED
                      | KF_RAW_SAMPLE_FLAGS_MAG_CLIPPED)) != 0u) {
         app->clipped = 1u;
@@ -303,6 +307,7 @@ void kf_app_sample(kf_app *app, const kf_sample *s)
         if (!quat_finite(app->out.q)) {
             kf_config_reset_filter(app);      /* never stream NaN: start again from the next sample */
             app->numeric_reset = 1u;
+            app->joint_reset = 1u;            /* the joint angle uses this filter too */
             app->cnt.numeric_resets++;
         } else if (app->out.rejected == before) {
             app->initialised = 1u;

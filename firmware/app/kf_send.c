@@ -85,9 +85,12 @@ static uint32_t status_flags(const kf_app *app)
     f |= app->streaming ? KF_UNIT_STATUS_FLAGS_STREAMING : 0u;
     f |= app->hil ? KF_UNIT_STATUS_FLAGS_HIL : 0u;
     f |= app->calibrated ? KF_UNIT_STATUS_FLAGS_CALIBRATED : 0u;
+    f |= app->mag_present ? KF_UNIT_STATUS_FLAGS_MAG_PRESENT : 0u;
+    /* LOW_BATTERY is never set: the unit has no warning threshold (battery_voltage is sent) */
     /* "since the previous status": frames_dropped itself counts since boot */
     f |= app->tx.frames_dropped != app->rates.frames_dropped0 ? KF_UNIT_STATUS_FLAGS_TX_OVERFLOW : 0u;
-    /* storage errors are not a sensor fault: they go out as STATUSTEXT (kf_status.c) */
+    /* storage errors are not a sensor fault: their own flag (and a STATUSTEXT, kf_status.c) */
+    f |= app->store.errors != app->rates.store_errors_st0 ? KF_UNIT_STATUS_FLAGS_STORAGE_ERROR : 0u;
     return f;
 }
 
@@ -100,6 +103,8 @@ int kf_send_unit_status(kf_app *app)
     uint16_t mv = kf_hal_battery_mv();
     uint32_t unknown = c->unknown_messages + app->rx.unknown_ids;
     uint32_t rejected = c->rejected_base + (uint32_t)app->out.rejected;
+    /* sensor 1's filter (two-sensor mode): its own count, kept across its restarts */
+    uint32_t rejected2 = c->rejected2_base + (uint32_t)app->out2.rejected;
     mavlink_msg_kf_unit_status_pack_status(
         kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg, kf_app_time(app), KF_FW_VERSION,
         KF_GIT_HASH, KF_DIALECT_HASH, c->samples, c->samples_dropped, app->tx.frames_dropped,
@@ -109,7 +114,8 @@ int kf_send_unit_status(kf_app *app)
         (app->streaming && app->filter >= 0) ? (float)ori : 0.0f, app->rates.ori_hz, mv, app->rates.load,
         (uint16_t)status_flags(app), -1, kf_sysid(app),
         app->filter >= 0 ? kf_gen_filters[app->filter].id : 0u,
-        KF_NUMERIC_Q ? KF_NUMERIC_FORMAT_FIXED_POINT : KF_NUMERIC_FORMAT_FLOAT32, KF_EARTH_FRAME_ENU);
+        KF_NUMERIC_Q ? KF_NUMERIC_FORMAT_FIXED_POINT : KF_NUMERIC_FORMAT_FLOAT32, KF_EARTH_FRAME_ENU,
+        c->numeric_resets, c->hil_invalid, rejected2);
     return kf_send(app, &msg);
 }
 

@@ -37,6 +37,7 @@ void kft_sensor_grant(int32_t hz);
 uint32_t kft_sensor_asked(void);
 void kft_rejected(const void *app, uint32_t out[4]);
 void kft_reset_filter2(void *app);
+void kft_poison_filter(void *app, int sensor);
 void kft_counters(const void *app, uint32_t out[12]);
 uint32_t kft_param_count(void);
 const char *kft_param_name(uint32_t i);

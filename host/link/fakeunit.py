@@ -96,7 +96,7 @@ class FakeUnit:
         self.rng = np.random.default_rng(seed)
         self.enc = Encoder(sysid=unit_id, compid=UNIT_COMPONENT_ID)
         self.dec = StreamDecoder()
-        self.counters = {"param_rejects": 0, "unknown_messages": 0, "frames_dropped": 0}
+        self.counters = {"param_rejects": 0, "unknown_messages": 0, "frames_dropped": 0, "hil_invalid": 0}
         self.sent_samples = 0
         self.commands: list = []  # (command, params) received, for tests
         self._stop = threading.Event()
@@ -115,6 +115,7 @@ class FakeUnit:
         self.bias = np.array([0.01, -0.02, 0.005])
         self.tared = False
         self.hil = False  # True after the first HIL_SENSOR: samples come from the host
+        self.mag_present = False  # a magnetometer reading since boot (KF_UNIT_STATUS_FLAGS_MAG_PRESENT)
 
     def device_time_us(self) -> int:
         """Unit clock: us since boot, running (1 + drift) times as fast as the host clock."""
@@ -178,6 +179,7 @@ class FakeUnit:
             t = int(self.next_sample_us)
             self.next_sample_us += self.period_us
             frame = self._sample(t)
+            self.mag_present = True                # every streamed sample has a magnetometer reading
             counter = self.sample_counter          # the counter this sample's frame carries
             self.sample_counter = (self.sample_counter + 1) & 0xFFFFFFFF
             self.samples_taken = (self.samples_taken + 1) & 0xFFFFFFFF
@@ -244,9 +246,14 @@ class FakeUnit:
             orientation_rate_requested=float(self.params["KF_ORI_RATE_HZ"] if self.streaming else 0),
             orientation_rate_achieved=float(self.params["KF_ORI_RATE_HZ"] if self.streaming else 0),
             battery_voltage=3900, cpu_load=123,
-            status_flags=(1 if self.streaming else 0) | 2 | 32 | (8 if self.hil else 0),
+            # as the firmware: MAG_PRESENT once a magnetometer reading arrived, never LOW_BATTERY
+            # (no threshold); no storage, so never STORAGE_ERROR
+            status_flags=(1 if self.streaming else 0) | (2 if self.mag_present else 0) | 32
+            | (8 if self.hil else 0),
             battery_remaining=80, unit_id=self.params["KF_UNIT_ID"], filter_id=self.params["KF_FILTER"],
-            numeric_format=1, earth_frame=1)
+            numeric_format=1, earth_frame=1,
+            # extensions: a strapdown integration never resets, one sensor (no sensor 1 rejections)
+            numeric_resets=0, hil_invalid=self.counters["hil_invalid"], rejected_samples2=0)
 
     # ------------------------------------------------------------------------------ requests
     def _for_me(self, m) -> bool:
@@ -293,12 +300,23 @@ class FakeUnit:
     def _hil_sample(self, m) -> list:
         """HIL mode: answer a HIL_SENSOR with the KF_RAW_SAMPLE the sensors would have given."""
         from kinefuse.host.link.hil import UT_PER_GAUSS, UPDATED_MAG, UPDATED_TEMPERATURE, raw_counts
+        values = (m.xacc, m.yacc, m.zacc, m.xgyro, m.ygyro, m.zgyro, m.xmag, m.ymag, m.zmag)
+        if getattr(m, "id", 0) != 0 or any(math.isnan(v) for v in values):
+            # as the firmware (one-sensor unit): not processed, no answer, counted in
+            # KF_UNIT_STATUS.hil_invalid
+            self.counters["hil_invalid"] += 1
+            return []
         self.hil = True
+        if m.fields_updated & UPDATED_MAG:
+            self.mag_present = True
+        temperature, updated = m.temperature, m.fields_updated
+        if math.isnan(temperature):       # as the firmware: no measurement, not flagged valid
+            temperature, updated = 0.0, updated & ~UPDATED_TEMPERATURE
         a, g, mg, t, clip = raw_counts([m.xacc, m.yacc, m.zacc], [m.xgyro, m.ygyro, m.zgyro],
                                        [m.xmag * UT_PER_GAUSS, m.ymag * UT_PER_GAUSS, m.zmag * UT_PER_GAUSS],
-                                       m.temperature)
-        flags = int(clip) | 16 | 64 | (8 if m.fields_updated & UPDATED_MAG else 0) \
-            | (32 if m.fields_updated & UPDATED_TEMPERATURE else 0)
+                                       temperature)
+        flags = int(clip) | 16 | 64 | (8 if updated & UPDATED_MAG else 0) \
+            | (32 if updated & UPDATED_TEMPERATURE else 0)
         frame = self.enc.encode(MSG_RAW, time_boot_us=m.time_usec, sample_counter=self.sample_counter,
                                 acc_x=int(a[0]), acc_y=int(a[1]), acc_z=int(a[2]), gyro_x=int(g[0]), gyro_y=int(g[1]),
                                 gyro_z=int(g[2]), mag_x=int(mg[0]), mag_y=int(mg[1]), mag_z=int(mg[2]),

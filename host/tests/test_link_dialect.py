@@ -89,7 +89,7 @@ def test_dialect_hash_matches_c_header():
 def test_generated_module_knows_our_messages():
     d = kinefuse_dialect()
     for name, size in [("KF_RAW_SAMPLE", 34), ("KF_ORIENTATION", 61), ("KF_JOINT_ANGLE", 29),
-                       ("KF_EFFORTS", 111), ("KF_UNIT_STATUS", 83)]:
+                       ("KF_EFFORTS", 111), ("KF_UNIT_STATUS", 95)]:   # 83 + 12 bytes of extensions
         assert d[name].length == size, name
     m = module()
     assert m.MAV_CMD_KF_STREAM == 52500 and m.MAV_CMD_KF_HEADING_TARE == 52501

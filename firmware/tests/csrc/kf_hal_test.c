@@ -246,6 +246,18 @@ void kft_reset_filter2(void *vapp)
     kf_config_reset_filter2((kf_app *)vapp);
 }
 
+/* a non-finite filter state (every 32-bit word a NaN) for sensor 0 or 1: the next update of
+ * that sensor's filter gives a non-finite quaternion, the unit's numeric reset path */
+void kft_poison_filter(void *vapp, int sensor)
+{
+    kf_app *app = (kf_app *)vapp;
+    kf_filter_state_u *f = sensor ? &app->filt2 : &app->filt;
+    const uint32_t nan = 0x7FC00000u;
+    for (uint32_t i = 0; i + sizeof nan <= sizeof *f; i += sizeof nan) {
+        memcpy((uint8_t *)f + i, &nan, sizeof nan);
+    }
+}
+
 uint32_t kft_param_count(void)
 {
     return KF_PARAM_COUNT;

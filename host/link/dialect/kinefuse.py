@@ -529,8 +529,10 @@ KF_JOINT_ANGLE_STATUS_NEAR_SINGULARITY = 2
 enums["KF_JOINT_ANGLE_STATUS"][2] = EnumEntry("KF_JOINT_ANGLE_STATUS_NEAR_SINGULARITY", """angle_2 is within 10 deg of the gimbal-lock singularity of the sequence: angle_1 and angle_3 are ill-conditioned.""")
 KF_JOINT_ANGLE_STATUS_HEADING_UNRELIABLE = 4
 enums["KF_JOINT_ANGLE_STATUS"][4] = EnumEntry("KF_JOINT_ANGLE_STATUS_HEADING_UNRELIABLE", """At least one segment had no valid heading (6D or magnetic disturbance); rotations about the vertical may drift.""")
-KF_JOINT_ANGLE_STATUS_ENUM_END = 5
-enums["KF_JOINT_ANGLE_STATUS"][5] = EnumEntry("KF_JOINT_ANGLE_STATUS_ENUM_END", """""")
+KF_JOINT_ANGLE_STATUS_NUMERIC_RESET = 8
+enums["KF_JOINT_ANGLE_STATUS"][8] = EnumEntry("KF_JOINT_ANGLE_STATUS_NUMERIC_RESET", """The orientation filter of either segment (proximal or distal sensor) detected a non-finite state and was reset since the previous KF_JOINT_ANGLE. A reset of the distal sensor's filter is told only here (it has no KF_ORIENTATION); the proximal one's also in KF_ORIENTATION_STATUS_NUMERIC_RESET.""")
+KF_JOINT_ANGLE_STATUS_ENUM_END = 9
+enums["KF_JOINT_ANGLE_STATUS"][9] = EnumEntry("KF_JOINT_ANGLE_STATUS_ENUM_END", """""")
 
 # KF_EFFORT_MODEL
 enums["KF_EFFORT_MODEL"] = Enum()
@@ -564,19 +566,21 @@ enums["KF_UNIT_STATUS_FLAGS"].bitmask = True
 KF_UNIT_STATUS_FLAGS_STREAMING = 1
 enums["KF_UNIT_STATUS_FLAGS"][1] = EnumEntry("KF_UNIT_STATUS_FLAGS_STREAMING", """Sample streaming is on (MAV_CMD_KF_STREAM).""")
 KF_UNIT_STATUS_FLAGS_MAG_PRESENT = 2
-enums["KF_UNIT_STATUS_FLAGS"][2] = EnumEntry("KF_UNIT_STATUS_FLAGS_MAG_PRESENT", """A magnetometer was detected.""")
+enums["KF_UNIT_STATUS_FLAGS"][2] = EnumEntry("KF_UNIT_STATUS_FLAGS_MAG_PRESENT", """A magnetometer was detected: a magnetometer reading of sensor 0 (from the sensor or HIL_SENSOR) has arrived since boot.""")
 KF_UNIT_STATUS_FLAGS_SENSOR_FAULT = 4
 enums["KF_UNIT_STATUS_FLAGS"][4] = EnumEntry("KF_UNIT_STATUS_FLAGS_SENSOR_FAULT", """A sensor failed to respond or reported an error since boot.""")
 KF_UNIT_STATUS_FLAGS_HIL = 8
 enums["KF_UNIT_STATUS_FLAGS"][8] = EnumEntry("KF_UNIT_STATUS_FLAGS_HIL", """Sensor input comes from HIL_SENSOR messages (simulation), not from the sensors.""")
 KF_UNIT_STATUS_FLAGS_LOW_BATTERY = 16
-enums["KF_UNIT_STATUS_FLAGS"][16] = EnumEntry("KF_UNIT_STATUS_FLAGS_LOW_BATTERY", """Battery below its warning threshold.""")
+enums["KF_UNIT_STATUS_FLAGS"][16] = EnumEntry("KF_UNIT_STATUS_FLAGS_LOW_BATTERY", """Battery below its warning threshold. Not set by the kinefuse firmware: it has no battery warning threshold (battery_voltage tells the measured voltage where the board measures it).""")
 KF_UNIT_STATUS_FLAGS_CALIBRATED = 32
 enums["KF_UNIT_STATUS_FLAGS"][32] = EnumEntry("KF_UNIT_STATUS_FLAGS_CALIBRATED", """A sensor calibration is stored on the unit and applied.""")
 KF_UNIT_STATUS_FLAGS_TX_OVERFLOW = 64
 enums["KF_UNIT_STATUS_FLAGS"][64] = EnumEntry("KF_UNIT_STATUS_FLAGS_TX_OVERFLOW", """The transmit buffer overflowed since the previous status (see frames_dropped).""")
-KF_UNIT_STATUS_FLAGS_ENUM_END = 65
-enums["KF_UNIT_STATUS_FLAGS"][65] = EnumEntry("KF_UNIT_STATUS_FLAGS_ENUM_END", """""")
+KF_UNIT_STATUS_FLAGS_STORAGE_ERROR = 128
+enums["KF_UNIT_STATUS_FLAGS"][128] = EnumEntry("KF_UNIT_STATUS_FLAGS_STORAGE_ERROR", """Loading or saving the stored configuration failed since the previous status (at boot: the load); parameter changes may be lost. A STATUSTEXT (severity ERROR) tells it too.""")
+KF_UNIT_STATUS_FLAGS_ENUM_END = 129
+enums["KF_UNIT_STATUS_FLAGS"][129] = EnumEntry("KF_UNIT_STATUS_FLAGS_ENUM_END", """""")
 
 # MAV_CMD
 enums["MAV_CMD"] = Enum()
@@ -7000,22 +7004,22 @@ class MAVLink_kf_unit_status_message(MAVLink_message):
 
     id = MAVLINK_MSG_ID_KF_UNIT_STATUS
     msgname = "KF_UNIT_STATUS"
-    fieldnames = ["time_boot_us", "firmware_version", "firmware_git_hash", "dialect_hash", "samples", "samples_dropped", "frames_dropped", "rejected_samples", "crc_errors", "unknown_messages", "param_rejects", "sensor_rate_requested", "sensor_rate_achieved", "raw_rate_requested", "raw_rate_achieved", "orientation_rate_requested", "orientation_rate_achieved", "battery_voltage", "cpu_load", "status_flags", "battery_remaining", "unit_id", "filter_id", "numeric_format", "earth_frame"]
-    ordered_fieldnames = ["time_boot_us", "firmware_version", "firmware_git_hash", "dialect_hash", "samples", "samples_dropped", "frames_dropped", "rejected_samples", "crc_errors", "unknown_messages", "param_rejects", "sensor_rate_requested", "sensor_rate_achieved", "raw_rate_requested", "raw_rate_achieved", "orientation_rate_requested", "orientation_rate_achieved", "battery_voltage", "cpu_load", "status_flags", "battery_remaining", "unit_id", "filter_id", "numeric_format", "earth_frame"]
-    fieldtypes = ["uint64_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "float", "float", "float", "float", "float", "float", "uint16_t", "uint16_t", "uint16_t", "int8_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t"]
+    fieldnames = ["time_boot_us", "firmware_version", "firmware_git_hash", "dialect_hash", "samples", "samples_dropped", "frames_dropped", "rejected_samples", "crc_errors", "unknown_messages", "param_rejects", "sensor_rate_requested", "sensor_rate_achieved", "raw_rate_requested", "raw_rate_achieved", "orientation_rate_requested", "orientation_rate_achieved", "battery_voltage", "cpu_load", "status_flags", "battery_remaining", "unit_id", "filter_id", "numeric_format", "earth_frame", "numeric_resets", "hil_invalid", "rejected_samples2"]
+    ordered_fieldnames = ["time_boot_us", "firmware_version", "firmware_git_hash", "dialect_hash", "samples", "samples_dropped", "frames_dropped", "rejected_samples", "crc_errors", "unknown_messages", "param_rejects", "sensor_rate_requested", "sensor_rate_achieved", "raw_rate_requested", "raw_rate_achieved", "orientation_rate_requested", "orientation_rate_achieved", "battery_voltage", "cpu_load", "status_flags", "battery_remaining", "unit_id", "filter_id", "numeric_format", "earth_frame", "numeric_resets", "hil_invalid", "rejected_samples2"]
+    fieldtypes = ["uint64_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "uint32_t", "float", "float", "float", "float", "float", "float", "uint16_t", "uint16_t", "uint16_t", "int8_t", "uint8_t", "uint8_t", "uint8_t", "uint8_t", "uint32_t", "uint32_t", "uint32_t"]
     fielddisplays_by_name: Dict[str, str] = {"status_flags": "bitmask"}
     fieldenums_by_name: Dict[str, str] = {"status_flags": "KF_UNIT_STATUS_FLAGS", "filter_id": "KF_FILTER", "numeric_format": "KF_NUMERIC_FORMAT", "earth_frame": "KF_EARTH_FRAME"}
     fieldunits_by_name: Dict[str, str] = {"time_boot_us": "us", "sensor_rate_requested": "Hz", "sensor_rate_achieved": "Hz", "raw_rate_requested": "Hz", "raw_rate_achieved": "Hz", "orientation_rate_requested": "Hz", "orientation_rate_achieved": "Hz", "battery_voltage": "mV", "cpu_load": "d%", "battery_remaining": "%"}
-    native_format = bytearray(b"<QIIIIIIIIIIffffffHHHbBBBB")
-    orders = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24]
-    lengths = [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]
-    array_lengths = [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
+    native_format = bytearray(b"<QIIIIIIIIIIffffffHHHbBBBBIII")
+    orders = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27]
+    lengths = [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]
+    array_lengths = [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
     crc_extra = 185
-    unpacker = struct.Struct("<QIIIIIIIIIIffffffHHHbBBBB")
+    unpacker = struct.Struct("<QIIIIIIIIIIffffffHHHbBBBBIII")
     instance_field = None
     instance_offset = -1
 
-    def __init__(self, time_boot_us: int, firmware_version: int, firmware_git_hash: int, dialect_hash: int, samples: int, samples_dropped: int, frames_dropped: int, rejected_samples: int, crc_errors: int, unknown_messages: int, param_rejects: int, sensor_rate_requested: float, sensor_rate_achieved: float, raw_rate_requested: float, raw_rate_achieved: float, orientation_rate_requested: float, orientation_rate_achieved: float, battery_voltage: int, cpu_load: int, status_flags: int, battery_remaining: int, unit_id: int, filter_id: int, numeric_format: int, earth_frame: int):
+    def __init__(self, time_boot_us: int, firmware_version: int, firmware_git_hash: int, dialect_hash: int, samples: int, samples_dropped: int, frames_dropped: int, rejected_samples: int, crc_errors: int, unknown_messages: int, param_rejects: int, sensor_rate_requested: float, sensor_rate_achieved: float, raw_rate_requested: float, raw_rate_achieved: float, orientation_rate_requested: float, orientation_rate_achieved: float, battery_voltage: int, cpu_load: int, status_flags: int, battery_remaining: int, unit_id: int, filter_id: int, numeric_format: int, earth_frame: int, numeric_resets: int = 0, hil_invalid: int = 0, rejected_samples2: int = 0):
         MAVLink_message.__init__(self, MAVLink_kf_unit_status_message.id, MAVLink_kf_unit_status_message.msgname)
         self._fieldnames = MAVLink_kf_unit_status_message.fieldnames
         self._instance_field = MAVLink_kf_unit_status_message.instance_field
@@ -7045,9 +7049,12 @@ class MAVLink_kf_unit_status_message(MAVLink_message):
         self.filter_id = filter_id
         self.numeric_format = numeric_format
         self.earth_frame = earth_frame
+        self.numeric_resets = numeric_resets
+        self.hil_invalid = hil_invalid
+        self.rejected_samples2 = rejected_samples2
 
     def pack(self, mav: "MAVLink", force_mavlink1: bool = False) -> bytes:
-        return self._pack(mav, self.crc_extra, self.unpacker.pack(self.time_boot_us, self.firmware_version, self.firmware_git_hash, self.dialect_hash, self.samples, self.samples_dropped, self.frames_dropped, self.rejected_samples, self.crc_errors, self.unknown_messages, self.param_rejects, self.sensor_rate_requested, self.sensor_rate_achieved, self.raw_rate_requested, self.raw_rate_achieved, self.orientation_rate_requested, self.orientation_rate_achieved, self.battery_voltage, self.cpu_load, self.status_flags, self.battery_remaining, self.unit_id, self.filter_id, self.numeric_format, self.earth_frame), force_mavlink1=force_mavlink1)
+        return self._pack(mav, self.crc_extra, self.unpacker.pack(self.time_boot_us, self.firmware_version, self.firmware_git_hash, self.dialect_hash, self.samples, self.samples_dropped, self.frames_dropped, self.rejected_samples, self.crc_errors, self.unknown_messages, self.param_rejects, self.sensor_rate_requested, self.sensor_rate_achieved, self.raw_rate_requested, self.raw_rate_achieved, self.orientation_rate_requested, self.orientation_rate_achieved, self.battery_voltage, self.cpu_load, self.status_flags, self.battery_remaining, self.unit_id, self.filter_id, self.numeric_format, self.earth_frame, self.numeric_resets, self.hil_invalid, self.rejected_samples2), force_mavlink1=force_mavlink1)
 
 
 # Define name on the class for backwards compatibility (it is now msgname).
@@ -17921,7 +17928,7 @@ class MAVLink(object):
         """
         self.send(self.kf_efforts_encode(time_boot_us, sample_counter, effort, effort_std, model_id, count, status), force_mavlink1=force_mavlink1)
 
-    def kf_unit_status_encode(self, time_boot_us: int, firmware_version: int, firmware_git_hash: int, dialect_hash: int, samples: int, samples_dropped: int, frames_dropped: int, rejected_samples: int, crc_errors: int, unknown_messages: int, param_rejects: int, sensor_rate_requested: float, sensor_rate_achieved: float, raw_rate_requested: float, raw_rate_achieved: float, orientation_rate_requested: float, orientation_rate_achieved: float, battery_voltage: int, cpu_load: int, status_flags: int, battery_remaining: int, unit_id: int, filter_id: int, numeric_format: int, earth_frame: int) -> MAVLink_kf_unit_status_message:
+    def kf_unit_status_encode(self, time_boot_us: int, firmware_version: int, firmware_git_hash: int, dialect_hash: int, samples: int, samples_dropped: int, frames_dropped: int, rejected_samples: int, crc_errors: int, unknown_messages: int, param_rejects: int, sensor_rate_requested: float, sensor_rate_achieved: float, raw_rate_requested: float, raw_rate_achieved: float, orientation_rate_requested: float, orientation_rate_achieved: float, battery_voltage: int, cpu_load: int, status_flags: int, battery_remaining: int, unit_id: int, filter_id: int, numeric_format: int, earth_frame: int, numeric_resets: int = 0, hil_invalid: int = 0, rejected_samples2: int = 0) -> MAVLink_kf_unit_status_message:
         """
         Health and configuration of a unit, sent at 1 Hz and on
         MAV_CMD_REQUEST_MESSAGE. Counters count since boot and wrap at
@@ -17952,11 +17959,14 @@ class MAVLink(object):
         filter_id                 : Orientation estimator running. (type:uint8_t, values:KF_FILTER)
         numeric_format            : Arithmetic of the estimators. (type:uint8_t, values:KF_NUMERIC_FORMAT)
         earth_frame               : Earth frame of KF_ORIENTATION. (type:uint8_t, values:KF_EARTH_FRAME)
+        numeric_resets            : Orientation filter restarts after a non-finite state (either sensor's filter in two-sensor mode; each also sets NUMERIC_RESET in KF_ORIENTATION or KF_JOINT_ANGLE). (type:uint32_t)
+        hil_invalid               : HIL_SENSOR messages not processed: a NaN acc/gyro/mag value, or a sensor id the unit does not have (id 1 without two-sensor mode, id > 1). (type:uint32_t)
+        rejected_samples2         : Samples rejected by sensor 1's orientation filter (two-sensor mode, KF_JOINT_ID != 0; rejected_samples is sensor 0's). (type:uint32_t)
 
         """
-        return MAVLink_kf_unit_status_message(time_boot_us, firmware_version, firmware_git_hash, dialect_hash, samples, samples_dropped, frames_dropped, rejected_samples, crc_errors, unknown_messages, param_rejects, sensor_rate_requested, sensor_rate_achieved, raw_rate_requested, raw_rate_achieved, orientation_rate_requested, orientation_rate_achieved, battery_voltage, cpu_load, status_flags, battery_remaining, unit_id, filter_id, numeric_format, earth_frame)
+        return MAVLink_kf_unit_status_message(time_boot_us, firmware_version, firmware_git_hash, dialect_hash, samples, samples_dropped, frames_dropped, rejected_samples, crc_errors, unknown_messages, param_rejects, sensor_rate_requested, sensor_rate_achieved, raw_rate_requested, raw_rate_achieved, orientation_rate_requested, orientation_rate_achieved, battery_voltage, cpu_load, status_flags, battery_remaining, unit_id, filter_id, numeric_format, earth_frame, numeric_resets, hil_invalid, rejected_samples2)
 
-    def kf_unit_status_send(self, time_boot_us: int, firmware_version: int, firmware_git_hash: int, dialect_hash: int, samples: int, samples_dropped: int, frames_dropped: int, rejected_samples: int, crc_errors: int, unknown_messages: int, param_rejects: int, sensor_rate_requested: float, sensor_rate_achieved: float, raw_rate_requested: float, raw_rate_achieved: float, orientation_rate_requested: float, orientation_rate_achieved: float, battery_voltage: int, cpu_load: int, status_flags: int, battery_remaining: int, unit_id: int, filter_id: int, numeric_format: int, earth_frame: int, force_mavlink1: bool = False) -> None:
+    def kf_unit_status_send(self, time_boot_us: int, firmware_version: int, firmware_git_hash: int, dialect_hash: int, samples: int, samples_dropped: int, frames_dropped: int, rejected_samples: int, crc_errors: int, unknown_messages: int, param_rejects: int, sensor_rate_requested: float, sensor_rate_achieved: float, raw_rate_requested: float, raw_rate_achieved: float, orientation_rate_requested: float, orientation_rate_achieved: float, battery_voltage: int, cpu_load: int, status_flags: int, battery_remaining: int, unit_id: int, filter_id: int, numeric_format: int, earth_frame: int, numeric_resets: int = 0, hil_invalid: int = 0, rejected_samples2: int = 0, force_mavlink1: bool = False) -> None:
         """
         Health and configuration of a unit, sent at 1 Hz and on
         MAV_CMD_REQUEST_MESSAGE. Counters count since boot and wrap at
@@ -17987,9 +17997,12 @@ class MAVLink(object):
         filter_id                 : Orientation estimator running. (type:uint8_t, values:KF_FILTER)
         numeric_format            : Arithmetic of the estimators. (type:uint8_t, values:KF_NUMERIC_FORMAT)
         earth_frame               : Earth frame of KF_ORIENTATION. (type:uint8_t, values:KF_EARTH_FRAME)
+        numeric_resets            : Orientation filter restarts after a non-finite state (either sensor's filter in two-sensor mode; each also sets NUMERIC_RESET in KF_ORIENTATION or KF_JOINT_ANGLE). (type:uint32_t)
+        hil_invalid               : HIL_SENSOR messages not processed: a NaN acc/gyro/mag value, or a sensor id the unit does not have (id 1 without two-sensor mode, id > 1). (type:uint32_t)
+        rejected_samples2         : Samples rejected by sensor 1's orientation filter (two-sensor mode, KF_JOINT_ID != 0; rejected_samples is sensor 0's). (type:uint32_t)
 
         """
-        self.send(self.kf_unit_status_encode(time_boot_us, firmware_version, firmware_git_hash, dialect_hash, samples, samples_dropped, frames_dropped, rejected_samples, crc_errors, unknown_messages, param_rejects, sensor_rate_requested, sensor_rate_achieved, raw_rate_requested, raw_rate_achieved, orientation_rate_requested, orientation_rate_achieved, battery_voltage, cpu_load, status_flags, battery_remaining, unit_id, filter_id, numeric_format, earth_frame), force_mavlink1=force_mavlink1)
+        self.send(self.kf_unit_status_encode(time_boot_us, firmware_version, firmware_git_hash, dialect_hash, samples, samples_dropped, frames_dropped, rejected_samples, crc_errors, unknown_messages, param_rejects, sensor_rate_requested, sensor_rate_achieved, raw_rate_requested, raw_rate_achieved, orientation_rate_requested, orientation_rate_achieved, battery_voltage, cpu_load, status_flags, battery_remaining, unit_id, filter_id, numeric_format, earth_frame, numeric_resets, hil_invalid, rejected_samples2), force_mavlink1=force_mavlink1)
 
     def sys_status_encode(self, onboard_control_sensors_present: int, onboard_control_sensors_enabled: int, onboard_control_sensors_health: int, load: int, voltage_battery: int, current_battery: int, battery_remaining: int, drop_rate_comm: int, errors_comm: int, errors_count1: int, errors_count2: int, errors_count3: int, errors_count4: int, onboard_control_sensors_present_extended: int = 0, onboard_control_sensors_enabled_extended: int = 0, onboard_control_sensors_health_extended: int = 0) -> MAVLink_sys_status_message:
         """

@@ -5,7 +5,7 @@
 
 #define MAVLINK_MSG_ID_KF_UNIT_STATUS 52504
 
-
+MAVPACKED(
 typedef struct __mavlink_kf_unit_status_t {
  uint64_t time_boot_us; /*< [us] Unit clock, microseconds since boot.*/
  uint32_t firmware_version; /*<  Firmware version: major << 24 | minor << 16 | patch << 8 | FIRMWARE_VERSION_TYPE.*/
@@ -32,11 +32,14 @@ typedef struct __mavlink_kf_unit_status_t {
  uint8_t filter_id; /*<  Orientation estimator running.*/
  uint8_t numeric_format; /*<  Arithmetic of the estimators.*/
  uint8_t earth_frame; /*<  Earth frame of KF_ORIENTATION.*/
-} mavlink_kf_unit_status_t;
+ uint32_t numeric_resets; /*<  Orientation filter restarts after a non-finite state (either sensor's filter in two-sensor mode; each also sets NUMERIC_RESET in KF_ORIENTATION or KF_JOINT_ANGLE).*/
+ uint32_t hil_invalid; /*<  HIL_SENSOR messages not processed: a NaN acc/gyro/mag value, or a sensor id the unit does not have (id 1 without two-sensor mode, id > 1).*/
+ uint32_t rejected_samples2; /*<  Samples rejected by sensor 1's orientation filter (two-sensor mode, KF_JOINT_ID != 0; rejected_samples is sensor 0's).*/
+}) mavlink_kf_unit_status_t;
 
-#define MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN 83
+#define MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN 95
 #define MAVLINK_MSG_ID_KF_UNIT_STATUS_MIN_LEN 83
-#define MAVLINK_MSG_ID_52504_LEN 83
+#define MAVLINK_MSG_ID_52504_LEN 95
 #define MAVLINK_MSG_ID_52504_MIN_LEN 83
 
 #define MAVLINK_MSG_ID_KF_UNIT_STATUS_CRC 185
@@ -48,7 +51,7 @@ typedef struct __mavlink_kf_unit_status_t {
 #define MAVLINK_MESSAGE_INFO_KF_UNIT_STATUS { \
     52504, \
     "KF_UNIT_STATUS", \
-    25, \
+    28, \
     {  { "time_boot_us", NULL, MAVLINK_TYPE_UINT64_T, 0, 0, offsetof(mavlink_kf_unit_status_t, time_boot_us) }, \
          { "firmware_version", NULL, MAVLINK_TYPE_UINT32_T, 0, 8, offsetof(mavlink_kf_unit_status_t, firmware_version) }, \
          { "firmware_git_hash", NULL, MAVLINK_TYPE_UINT32_T, 0, 12, offsetof(mavlink_kf_unit_status_t, firmware_git_hash) }, \
@@ -74,12 +77,15 @@ typedef struct __mavlink_kf_unit_status_t {
          { "filter_id", NULL, MAVLINK_TYPE_UINT8_T, 0, 80, offsetof(mavlink_kf_unit_status_t, filter_id) }, \
          { "numeric_format", NULL, MAVLINK_TYPE_UINT8_T, 0, 81, offsetof(mavlink_kf_unit_status_t, numeric_format) }, \
          { "earth_frame", NULL, MAVLINK_TYPE_UINT8_T, 0, 82, offsetof(mavlink_kf_unit_status_t, earth_frame) }, \
+         { "numeric_resets", NULL, MAVLINK_TYPE_UINT32_T, 0, 83, offsetof(mavlink_kf_unit_status_t, numeric_resets) }, \
+         { "hil_invalid", NULL, MAVLINK_TYPE_UINT32_T, 0, 87, offsetof(mavlink_kf_unit_status_t, hil_invalid) }, \
+         { "rejected_samples2", NULL, MAVLINK_TYPE_UINT32_T, 0, 91, offsetof(mavlink_kf_unit_status_t, rejected_samples2) }, \
          } \
 }
 #else
 #define MAVLINK_MESSAGE_INFO_KF_UNIT_STATUS { \
     "KF_UNIT_STATUS", \
-    25, \
+    28, \
     {  { "time_boot_us", NULL, MAVLINK_TYPE_UINT64_T, 0, 0, offsetof(mavlink_kf_unit_status_t, time_boot_us) }, \
          { "firmware_version", NULL, MAVLINK_TYPE_UINT32_T, 0, 8, offsetof(mavlink_kf_unit_status_t, firmware_version) }, \
          { "firmware_git_hash", NULL, MAVLINK_TYPE_UINT32_T, 0, 12, offsetof(mavlink_kf_unit_status_t, firmware_git_hash) }, \
@@ -105,6 +111,9 @@ typedef struct __mavlink_kf_unit_status_t {
          { "filter_id", NULL, MAVLINK_TYPE_UINT8_T, 0, 80, offsetof(mavlink_kf_unit_status_t, filter_id) }, \
          { "numeric_format", NULL, MAVLINK_TYPE_UINT8_T, 0, 81, offsetof(mavlink_kf_unit_status_t, numeric_format) }, \
          { "earth_frame", NULL, MAVLINK_TYPE_UINT8_T, 0, 82, offsetof(mavlink_kf_unit_status_t, earth_frame) }, \
+         { "numeric_resets", NULL, MAVLINK_TYPE_UINT32_T, 0, 83, offsetof(mavlink_kf_unit_status_t, numeric_resets) }, \
+         { "hil_invalid", NULL, MAVLINK_TYPE_UINT32_T, 0, 87, offsetof(mavlink_kf_unit_status_t, hil_invalid) }, \
+         { "rejected_samples2", NULL, MAVLINK_TYPE_UINT32_T, 0, 91, offsetof(mavlink_kf_unit_status_t, rejected_samples2) }, \
          } \
 }
 #endif
@@ -140,10 +149,13 @@ typedef struct __mavlink_kf_unit_status_t {
  * @param filter_id  Orientation estimator running.
  * @param numeric_format  Arithmetic of the estimators.
  * @param earth_frame  Earth frame of KF_ORIENTATION.
+ * @param numeric_resets  Orientation filter restarts after a non-finite state (either sensor's filter in two-sensor mode; each also sets NUMERIC_RESET in KF_ORIENTATION or KF_JOINT_ANGLE).
+ * @param hil_invalid  HIL_SENSOR messages not processed: a NaN acc/gyro/mag value, or a sensor id the unit does not have (id 1 without two-sensor mode, id > 1).
+ * @param rejected_samples2  Samples rejected by sensor 1's orientation filter (two-sensor mode, KF_JOINT_ID != 0; rejected_samples is sensor 0's).
  * @return length of the message in bytes (excluding serial stream start sign)
  */
 static inline uint16_t mavlink_msg_kf_unit_status_pack(uint8_t system_id, uint8_t component_id, mavlink_message_t* msg,
-                               uint64_t time_boot_us, uint32_t firmware_version, uint32_t firmware_git_hash, uint32_t dialect_hash, uint32_t samples, uint32_t samples_dropped, uint32_t frames_dropped, uint32_t rejected_samples, uint32_t crc_errors, uint32_t unknown_messages, uint32_t param_rejects, float sensor_rate_requested, float sensor_rate_achieved, float raw_rate_requested, float raw_rate_achieved, float orientation_rate_requested, float orientation_rate_achieved, uint16_t battery_voltage, uint16_t cpu_load, uint16_t status_flags, int8_t battery_remaining, uint8_t unit_id, uint8_t filter_id, uint8_t numeric_format, uint8_t earth_frame)
+                               uint64_t time_boot_us, uint32_t firmware_version, uint32_t firmware_git_hash, uint32_t dialect_hash, uint32_t samples, uint32_t samples_dropped, uint32_t frames_dropped, uint32_t rejected_samples, uint32_t crc_errors, uint32_t unknown_messages, uint32_t param_rejects, float sensor_rate_requested, float sensor_rate_achieved, float raw_rate_requested, float raw_rate_achieved, float orientation_rate_requested, float orientation_rate_achieved, uint16_t battery_voltage, uint16_t cpu_load, uint16_t status_flags, int8_t battery_remaining, uint8_t unit_id, uint8_t filter_id, uint8_t numeric_format, uint8_t earth_frame, uint32_t numeric_resets, uint32_t hil_invalid, uint32_t rejected_samples2)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN];
@@ -172,6 +184,9 @@ static inline uint16_t mavlink_msg_kf_unit_status_pack(uint8_t system_id, uint8_
     _mav_put_uint8_t(buf, 80, filter_id);
     _mav_put_uint8_t(buf, 81, numeric_format);
     _mav_put_uint8_t(buf, 82, earth_frame);
+    _mav_put_uint32_t(buf, 83, numeric_resets);
+    _mav_put_uint32_t(buf, 87, hil_invalid);
+    _mav_put_uint32_t(buf, 91, rejected_samples2);
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), buf, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN);
 #else
@@ -201,6 +216,9 @@ static inline uint16_t mavlink_msg_kf_unit_status_pack(uint8_t system_id, uint8_
     packet.filter_id = filter_id;
     packet.numeric_format = numeric_format;
     packet.earth_frame = earth_frame;
+    packet.numeric_resets = numeric_resets;
+    packet.hil_invalid = hil_invalid;
+    packet.rejected_samples2 = rejected_samples2;
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), &packet, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN);
 #endif
@@ -241,10 +259,13 @@ static inline uint16_t mavlink_msg_kf_unit_status_pack(uint8_t system_id, uint8_
  * @param filter_id  Orientation estimator running.
  * @param numeric_format  Arithmetic of the estimators.
  * @param earth_frame  Earth frame of KF_ORIENTATION.
+ * @param numeric_resets  Orientation filter restarts after a non-finite state (either sensor's filter in two-sensor mode; each also sets NUMERIC_RESET in KF_ORIENTATION or KF_JOINT_ANGLE).
+ * @param hil_invalid  HIL_SENSOR messages not processed: a NaN acc/gyro/mag value, or a sensor id the unit does not have (id 1 without two-sensor mode, id > 1).
+ * @param rejected_samples2  Samples rejected by sensor 1's orientation filter (two-sensor mode, KF_JOINT_ID != 0; rejected_samples is sensor 0's).
  * @return length of the message in bytes (excluding serial stream start sign)
  */
 static inline uint16_t mavlink_msg_kf_unit_status_pack_status(uint8_t system_id, uint8_t component_id, mavlink_status_t *_status, mavlink_message_t* msg,
-                               uint64_t time_boot_us, uint32_t firmware_version, uint32_t firmware_git_hash, uint32_t dialect_hash, uint32_t samples, uint32_t samples_dropped, uint32_t frames_dropped, uint32_t rejected_samples, uint32_t crc_errors, uint32_t unknown_messages, uint32_t param_rejects, float sensor_rate_requested, float sensor_rate_achieved, float raw_rate_requested, float raw_rate_achieved, float orientation_rate_requested, float orientation_rate_achieved, uint16_t battery_voltage, uint16_t cpu_load, uint16_t status_flags, int8_t battery_remaining, uint8_t unit_id, uint8_t filter_id, uint8_t numeric_format, uint8_t earth_frame)
+                               uint64_t time_boot_us, uint32_t firmware_version, uint32_t firmware_git_hash, uint32_t dialect_hash, uint32_t samples, uint32_t samples_dropped, uint32_t frames_dropped, uint32_t rejected_samples, uint32_t crc_errors, uint32_t unknown_messages, uint32_t param_rejects, float sensor_rate_requested, float sensor_rate_achieved, float raw_rate_requested, float raw_rate_achieved, float orientation_rate_requested, float orientation_rate_achieved, uint16_t battery_voltage, uint16_t cpu_load, uint16_t status_flags, int8_t battery_remaining, uint8_t unit_id, uint8_t filter_id, uint8_t numeric_format, uint8_t earth_frame, uint32_t numeric_resets, uint32_t hil_invalid, uint32_t rejected_samples2)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN];
@@ -273,6 +294,9 @@ static inline uint16_t mavlink_msg_kf_unit_status_pack_status(uint8_t system_id,
     _mav_put_uint8_t(buf, 80, filter_id);
     _mav_put_uint8_t(buf, 81, numeric_format);
     _mav_put_uint8_t(buf, 82, earth_frame);
+    _mav_put_uint32_t(buf, 83, numeric_resets);
+    _mav_put_uint32_t(buf, 87, hil_invalid);
+    _mav_put_uint32_t(buf, 91, rejected_samples2);
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), buf, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN);
 #else
@@ -302,6 +326,9 @@ static inline uint16_t mavlink_msg_kf_unit_status_pack_status(uint8_t system_id,
     packet.filter_id = filter_id;
     packet.numeric_format = numeric_format;
     packet.earth_frame = earth_frame;
+    packet.numeric_resets = numeric_resets;
+    packet.hil_invalid = hil_invalid;
+    packet.rejected_samples2 = rejected_samples2;
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), &packet, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN);
 #endif
@@ -345,11 +372,14 @@ static inline uint16_t mavlink_msg_kf_unit_status_pack_status(uint8_t system_id,
  * @param filter_id  Orientation estimator running.
  * @param numeric_format  Arithmetic of the estimators.
  * @param earth_frame  Earth frame of KF_ORIENTATION.
+ * @param numeric_resets  Orientation filter restarts after a non-finite state (either sensor's filter in two-sensor mode; each also sets NUMERIC_RESET in KF_ORIENTATION or KF_JOINT_ANGLE).
+ * @param hil_invalid  HIL_SENSOR messages not processed: a NaN acc/gyro/mag value, or a sensor id the unit does not have (id 1 without two-sensor mode, id > 1).
+ * @param rejected_samples2  Samples rejected by sensor 1's orientation filter (two-sensor mode, KF_JOINT_ID != 0; rejected_samples is sensor 0's).
  * @return length of the message in bytes (excluding serial stream start sign)
  */
 static inline uint16_t mavlink_msg_kf_unit_status_pack_chan(uint8_t system_id, uint8_t component_id, uint8_t chan,
                                mavlink_message_t* msg,
-                                   uint64_t time_boot_us,uint32_t firmware_version,uint32_t firmware_git_hash,uint32_t dialect_hash,uint32_t samples,uint32_t samples_dropped,uint32_t frames_dropped,uint32_t rejected_samples,uint32_t crc_errors,uint32_t unknown_messages,uint32_t param_rejects,float sensor_rate_requested,float sensor_rate_achieved,float raw_rate_requested,float raw_rate_achieved,float orientation_rate_requested,float orientation_rate_achieved,uint16_t battery_voltage,uint16_t cpu_load,uint16_t status_flags,int8_t battery_remaining,uint8_t unit_id,uint8_t filter_id,uint8_t numeric_format,uint8_t earth_frame)
+                                   uint64_t time_boot_us,uint32_t firmware_version,uint32_t firmware_git_hash,uint32_t dialect_hash,uint32_t samples,uint32_t samples_dropped,uint32_t frames_dropped,uint32_t rejected_samples,uint32_t crc_errors,uint32_t unknown_messages,uint32_t param_rejects,float sensor_rate_requested,float sensor_rate_achieved,float raw_rate_requested,float raw_rate_achieved,float orientation_rate_requested,float orientation_rate_achieved,uint16_t battery_voltage,uint16_t cpu_load,uint16_t status_flags,int8_t battery_remaining,uint8_t unit_id,uint8_t filter_id,uint8_t numeric_format,uint8_t earth_frame,uint32_t numeric_resets,uint32_t hil_invalid,uint32_t rejected_samples2)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN];
@@ -378,6 +408,9 @@ static inline uint16_t mavlink_msg_kf_unit_status_pack_chan(uint8_t system_id, u
     _mav_put_uint8_t(buf, 80, filter_id);
     _mav_put_uint8_t(buf, 81, numeric_format);
     _mav_put_uint8_t(buf, 82, earth_frame);
+    _mav_put_uint32_t(buf, 83, numeric_resets);
+    _mav_put_uint32_t(buf, 87, hil_invalid);
+    _mav_put_uint32_t(buf, 91, rejected_samples2);
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), buf, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN);
 #else
@@ -407,6 +440,9 @@ static inline uint16_t mavlink_msg_kf_unit_status_pack_chan(uint8_t system_id, u
     packet.filter_id = filter_id;
     packet.numeric_format = numeric_format;
     packet.earth_frame = earth_frame;
+    packet.numeric_resets = numeric_resets;
+    packet.hil_invalid = hil_invalid;
+    packet.rejected_samples2 = rejected_samples2;
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), &packet, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN);
 #endif
@@ -425,7 +461,7 @@ static inline uint16_t mavlink_msg_kf_unit_status_pack_chan(uint8_t system_id, u
  */
 static inline uint16_t mavlink_msg_kf_unit_status_encode(uint8_t system_id, uint8_t component_id, mavlink_message_t* msg, const mavlink_kf_unit_status_t* kf_unit_status)
 {
-    return mavlink_msg_kf_unit_status_pack(system_id, component_id, msg, kf_unit_status->time_boot_us, kf_unit_status->firmware_version, kf_unit_status->firmware_git_hash, kf_unit_status->dialect_hash, kf_unit_status->samples, kf_unit_status->samples_dropped, kf_unit_status->frames_dropped, kf_unit_status->rejected_samples, kf_unit_status->crc_errors, kf_unit_status->unknown_messages, kf_unit_status->param_rejects, kf_unit_status->sensor_rate_requested, kf_unit_status->sensor_rate_achieved, kf_unit_status->raw_rate_requested, kf_unit_status->raw_rate_achieved, kf_unit_status->orientation_rate_requested, kf_unit_status->orientation_rate_achieved, kf_unit_status->battery_voltage, kf_unit_status->cpu_load, kf_unit_status->status_flags, kf_unit_status->battery_remaining, kf_unit_status->unit_id, kf_unit_status->filter_id, kf_unit_status->numeric_format, kf_unit_status->earth_frame);
+    return mavlink_msg_kf_unit_status_pack(system_id, component_id, msg, kf_unit_status->time_boot_us, kf_unit_status->firmware_version, kf_unit_status->firmware_git_hash, kf_unit_status->dialect_hash, kf_unit_status->samples, kf_unit_status->samples_dropped, kf_unit_status->frames_dropped, kf_unit_status->rejected_samples, kf_unit_status->crc_errors, kf_unit_status->unknown_messages, kf_unit_status->param_rejects, kf_unit_status->sensor_rate_requested, kf_unit_status->sensor_rate_achieved, kf_unit_status->raw_rate_requested, kf_unit_status->raw_rate_achieved, kf_unit_status->orientation_rate_requested, kf_unit_status->orientation_rate_achieved, kf_unit_status->battery_voltage, kf_unit_status->cpu_load, kf_unit_status->status_flags, kf_unit_status->battery_remaining, kf_unit_status->unit_id, kf_unit_status->filter_id, kf_unit_status->numeric_format, kf_unit_status->earth_frame, kf_unit_status->numeric_resets, kf_unit_status->hil_invalid, kf_unit_status->rejected_samples2);
 }
 
 /**
@@ -439,7 +475,7 @@ static inline uint16_t mavlink_msg_kf_unit_status_encode(uint8_t system_id, uint
  */
 static inline uint16_t mavlink_msg_kf_unit_status_encode_chan(uint8_t system_id, uint8_t component_id, uint8_t chan, mavlink_message_t* msg, const mavlink_kf_unit_status_t* kf_unit_status)
 {
-    return mavlink_msg_kf_unit_status_pack_chan(system_id, component_id, chan, msg, kf_unit_status->time_boot_us, kf_unit_status->firmware_version, kf_unit_status->firmware_git_hash, kf_unit_status->dialect_hash, kf_unit_status->samples, kf_unit_status->samples_dropped, kf_unit_status->frames_dropped, kf_unit_status->rejected_samples, kf_unit_status->crc_errors, kf_unit_status->unknown_messages, kf_unit_status->param_rejects, kf_unit_status->sensor_rate_requested, kf_unit_status->sensor_rate_achieved, kf_unit_status->raw_rate_requested, kf_unit_status->raw_rate_achieved, kf_unit_status->orientation_rate_requested, kf_unit_status->orientation_rate_achieved, kf_unit_status->battery_voltage, kf_unit_status->cpu_load, kf_unit_status->status_flags, kf_unit_status->battery_remaining, kf_unit_status->unit_id, kf_unit_status->filter_id, kf_unit_status->numeric_format, kf_unit_status->earth_frame);
+    return mavlink_msg_kf_unit_status_pack_chan(system_id, component_id, chan, msg, kf_unit_status->time_boot_us, kf_unit_status->firmware_version, kf_unit_status->firmware_git_hash, kf_unit_status->dialect_hash, kf_unit_status->samples, kf_unit_status->samples_dropped, kf_unit_status->frames_dropped, kf_unit_status->rejected_samples, kf_unit_status->crc_errors, kf_unit_status->unknown_messages, kf_unit_status->param_rejects, kf_unit_status->sensor_rate_requested, kf_unit_status->sensor_rate_achieved, kf_unit_status->raw_rate_requested, kf_unit_status->raw_rate_achieved, kf_unit_status->orientation_rate_requested, kf_unit_status->orientation_rate_achieved, kf_unit_status->battery_voltage, kf_unit_status->cpu_load, kf_unit_status->status_flags, kf_unit_status->battery_remaining, kf_unit_status->unit_id, kf_unit_status->filter_id, kf_unit_status->numeric_format, kf_unit_status->earth_frame, kf_unit_status->numeric_resets, kf_unit_status->hil_invalid, kf_unit_status->rejected_samples2);
 }
 
 /**
@@ -453,7 +489,7 @@ static inline uint16_t mavlink_msg_kf_unit_status_encode_chan(uint8_t system_id,
  */
 static inline uint16_t mavlink_msg_kf_unit_status_encode_status(uint8_t system_id, uint8_t component_id, mavlink_status_t* _status, mavlink_message_t* msg, const mavlink_kf_unit_status_t* kf_unit_status)
 {
-    return mavlink_msg_kf_unit_status_pack_status(system_id, component_id, _status, msg,  kf_unit_status->time_boot_us, kf_unit_status->firmware_version, kf_unit_status->firmware_git_hash, kf_unit_status->dialect_hash, kf_unit_status->samples, kf_unit_status->samples_dropped, kf_unit_status->frames_dropped, kf_unit_status->rejected_samples, kf_unit_status->crc_errors, kf_unit_status->unknown_messages, kf_unit_status->param_rejects, kf_unit_status->sensor_rate_requested, kf_unit_status->sensor_rate_achieved, kf_unit_status->raw_rate_requested, kf_unit_status->raw_rate_achieved, kf_unit_status->orientation_rate_requested, kf_unit_status->orientation_rate_achieved, kf_unit_status->battery_voltage, kf_unit_status->cpu_load, kf_unit_status->status_flags, kf_unit_status->battery_remaining, kf_unit_status->unit_id, kf_unit_status->filter_id, kf_unit_status->numeric_format, kf_unit_status->earth_frame);
+    return mavlink_msg_kf_unit_status_pack_status(system_id, component_id, _status, msg,  kf_unit_status->time_boot_us, kf_unit_status->firmware_version, kf_unit_status->firmware_git_hash, kf_unit_status->dialect_hash, kf_unit_status->samples, kf_unit_status->samples_dropped, kf_unit_status->frames_dropped, kf_unit_status->rejected_samples, kf_unit_status->crc_errors, kf_unit_status->unknown_messages, kf_unit_status->param_rejects, kf_unit_status->sensor_rate_requested, kf_unit_status->sensor_rate_achieved, kf_unit_status->raw_rate_requested, kf_unit_status->raw_rate_achieved, kf_unit_status->orientation_rate_requested, kf_unit_status->orientation_rate_achieved, kf_unit_status->battery_voltage, kf_unit_status->cpu_load, kf_unit_status->status_flags, kf_unit_status->battery_remaining, kf_unit_status->unit_id, kf_unit_status->filter_id, kf_unit_status->numeric_format, kf_unit_status->earth_frame, kf_unit_status->numeric_resets, kf_unit_status->hil_invalid, kf_unit_status->rejected_samples2);
 }
 
 /**
@@ -485,10 +521,13 @@ static inline uint16_t mavlink_msg_kf_unit_status_encode_status(uint8_t system_i
  * @param filter_id  Orientation estimator running.
  * @param numeric_format  Arithmetic of the estimators.
  * @param earth_frame  Earth frame of KF_ORIENTATION.
+ * @param numeric_resets  Orientation filter restarts after a non-finite state (either sensor's filter in two-sensor mode; each also sets NUMERIC_RESET in KF_ORIENTATION or KF_JOINT_ANGLE).
+ * @param hil_invalid  HIL_SENSOR messages not processed: a NaN acc/gyro/mag value, or a sensor id the unit does not have (id 1 without two-sensor mode, id > 1).
+ * @param rejected_samples2  Samples rejected by sensor 1's orientation filter (two-sensor mode, KF_JOINT_ID != 0; rejected_samples is sensor 0's).
  */
 #ifdef MAVLINK_USE_CONVENIENCE_FUNCTIONS
 
-static inline void mavlink_msg_kf_unit_status_send(mavlink_channel_t chan, uint64_t time_boot_us, uint32_t firmware_version, uint32_t firmware_git_hash, uint32_t dialect_hash, uint32_t samples, uint32_t samples_dropped, uint32_t frames_dropped, uint32_t rejected_samples, uint32_t crc_errors, uint32_t unknown_messages, uint32_t param_rejects, float sensor_rate_requested, float sensor_rate_achieved, float raw_rate_requested, float raw_rate_achieved, float orientation_rate_requested, float orientation_rate_achieved, uint16_t battery_voltage, uint16_t cpu_load, uint16_t status_flags, int8_t battery_remaining, uint8_t unit_id, uint8_t filter_id, uint8_t numeric_format, uint8_t earth_frame)
+static inline void mavlink_msg_kf_unit_status_send(mavlink_channel_t chan, uint64_t time_boot_us, uint32_t firmware_version, uint32_t firmware_git_hash, uint32_t dialect_hash, uint32_t samples, uint32_t samples_dropped, uint32_t frames_dropped, uint32_t rejected_samples, uint32_t crc_errors, uint32_t unknown_messages, uint32_t param_rejects, float sensor_rate_requested, float sensor_rate_achieved, float raw_rate_requested, float raw_rate_achieved, float orientation_rate_requested, float orientation_rate_achieved, uint16_t battery_voltage, uint16_t cpu_load, uint16_t status_flags, int8_t battery_remaining, uint8_t unit_id, uint8_t filter_id, uint8_t numeric_format, uint8_t earth_frame, uint32_t numeric_resets, uint32_t hil_invalid, uint32_t rejected_samples2)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN];
@@ -517,6 +556,9 @@ static inline void mavlink_msg_kf_unit_status_send(mavlink_channel_t chan, uint6
     _mav_put_uint8_t(buf, 80, filter_id);
     _mav_put_uint8_t(buf, 81, numeric_format);
     _mav_put_uint8_t(buf, 82, earth_frame);
+    _mav_put_uint32_t(buf, 83, numeric_resets);
+    _mav_put_uint32_t(buf, 87, hil_invalid);
+    _mav_put_uint32_t(buf, 91, rejected_samples2);
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_KF_UNIT_STATUS, buf, MAVLINK_MSG_ID_KF_UNIT_STATUS_MIN_LEN, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN, MAVLINK_MSG_ID_KF_UNIT_STATUS_CRC);
 #else
@@ -546,6 +588,9 @@ static inline void mavlink_msg_kf_unit_status_send(mavlink_channel_t chan, uint6
     packet.filter_id = filter_id;
     packet.numeric_format = numeric_format;
     packet.earth_frame = earth_frame;
+    packet.numeric_resets = numeric_resets;
+    packet.hil_invalid = hil_invalid;
+    packet.rejected_samples2 = rejected_samples2;
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_KF_UNIT_STATUS, (const char *)&packet, MAVLINK_MSG_ID_KF_UNIT_STATUS_MIN_LEN, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN, MAVLINK_MSG_ID_KF_UNIT_STATUS_CRC);
 #endif
@@ -559,7 +604,7 @@ static inline void mavlink_msg_kf_unit_status_send(mavlink_channel_t chan, uint6
 static inline void mavlink_msg_kf_unit_status_send_struct(mavlink_channel_t chan, const mavlink_kf_unit_status_t* kf_unit_status)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
-    mavlink_msg_kf_unit_status_send(chan, kf_unit_status->time_boot_us, kf_unit_status->firmware_version, kf_unit_status->firmware_git_hash, kf_unit_status->dialect_hash, kf_unit_status->samples, kf_unit_status->samples_dropped, kf_unit_status->frames_dropped, kf_unit_status->rejected_samples, kf_unit_status->crc_errors, kf_unit_status->unknown_messages, kf_unit_status->param_rejects, kf_unit_status->sensor_rate_requested, kf_unit_status->sensor_rate_achieved, kf_unit_status->raw_rate_requested, kf_unit_status->raw_rate_achieved, kf_unit_status->orientation_rate_requested, kf_unit_status->orientation_rate_achieved, kf_unit_status->battery_voltage, kf_unit_status->cpu_load, kf_unit_status->status_flags, kf_unit_status->battery_remaining, kf_unit_status->unit_id, kf_unit_status->filter_id, kf_unit_status->numeric_format, kf_unit_status->earth_frame);
+    mavlink_msg_kf_unit_status_send(chan, kf_unit_status->time_boot_us, kf_unit_status->firmware_version, kf_unit_status->firmware_git_hash, kf_unit_status->dialect_hash, kf_unit_status->samples, kf_unit_status->samples_dropped, kf_unit_status->frames_dropped, kf_unit_status->rejected_samples, kf_unit_status->crc_errors, kf_unit_status->unknown_messages, kf_unit_status->param_rejects, kf_unit_status->sensor_rate_requested, kf_unit_status->sensor_rate_achieved, kf_unit_status->raw_rate_requested, kf_unit_status->raw_rate_achieved, kf_unit_status->orientation_rate_requested, kf_unit_status->orientation_rate_achieved, kf_unit_status->battery_voltage, kf_unit_status->cpu_load, kf_unit_status->status_flags, kf_unit_status->battery_remaining, kf_unit_status->unit_id, kf_unit_status->filter_id, kf_unit_status->numeric_format, kf_unit_status->earth_frame, kf_unit_status->numeric_resets, kf_unit_status->hil_invalid, kf_unit_status->rejected_samples2);
 #else
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_KF_UNIT_STATUS, (const char *)kf_unit_status, MAVLINK_MSG_ID_KF_UNIT_STATUS_MIN_LEN, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN, MAVLINK_MSG_ID_KF_UNIT_STATUS_CRC);
 #endif
@@ -573,7 +618,7 @@ static inline void mavlink_msg_kf_unit_status_send_struct(mavlink_channel_t chan
   is usually the receive buffer for the channel, and allows a reply to an
   incoming message with minimum stack space usage.
  */
-static inline void mavlink_msg_kf_unit_status_send_buf(mavlink_message_t *msgbuf, mavlink_channel_t chan,  uint64_t time_boot_us, uint32_t firmware_version, uint32_t firmware_git_hash, uint32_t dialect_hash, uint32_t samples, uint32_t samples_dropped, uint32_t frames_dropped, uint32_t rejected_samples, uint32_t crc_errors, uint32_t unknown_messages, uint32_t param_rejects, float sensor_rate_requested, float sensor_rate_achieved, float raw_rate_requested, float raw_rate_achieved, float orientation_rate_requested, float orientation_rate_achieved, uint16_t battery_voltage, uint16_t cpu_load, uint16_t status_flags, int8_t battery_remaining, uint8_t unit_id, uint8_t filter_id, uint8_t numeric_format, uint8_t earth_frame)
+static inline void mavlink_msg_kf_unit_status_send_buf(mavlink_message_t *msgbuf, mavlink_channel_t chan,  uint64_t time_boot_us, uint32_t firmware_version, uint32_t firmware_git_hash, uint32_t dialect_hash, uint32_t samples, uint32_t samples_dropped, uint32_t frames_dropped, uint32_t rejected_samples, uint32_t crc_errors, uint32_t unknown_messages, uint32_t param_rejects, float sensor_rate_requested, float sensor_rate_achieved, float raw_rate_requested, float raw_rate_achieved, float orientation_rate_requested, float orientation_rate_achieved, uint16_t battery_voltage, uint16_t cpu_load, uint16_t status_flags, int8_t battery_remaining, uint8_t unit_id, uint8_t filter_id, uint8_t numeric_format, uint8_t earth_frame, uint32_t numeric_resets, uint32_t hil_invalid, uint32_t rejected_samples2)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char *buf = (char *)msgbuf;
@@ -602,6 +647,9 @@ static inline void mavlink_msg_kf_unit_status_send_buf(mavlink_message_t *msgbuf
     _mav_put_uint8_t(buf, 80, filter_id);
     _mav_put_uint8_t(buf, 81, numeric_format);
     _mav_put_uint8_t(buf, 82, earth_frame);
+    _mav_put_uint32_t(buf, 83, numeric_resets);
+    _mav_put_uint32_t(buf, 87, hil_invalid);
+    _mav_put_uint32_t(buf, 91, rejected_samples2);
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_KF_UNIT_STATUS, buf, MAVLINK_MSG_ID_KF_UNIT_STATUS_MIN_LEN, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN, MAVLINK_MSG_ID_KF_UNIT_STATUS_CRC);
 #else
@@ -631,6 +679,9 @@ static inline void mavlink_msg_kf_unit_status_send_buf(mavlink_message_t *msgbuf
     packet->filter_id = filter_id;
     packet->numeric_format = numeric_format;
     packet->earth_frame = earth_frame;
+    packet->numeric_resets = numeric_resets;
+    packet->hil_invalid = hil_invalid;
+    packet->rejected_samples2 = rejected_samples2;
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_KF_UNIT_STATUS, (const char *)packet, MAVLINK_MSG_ID_KF_UNIT_STATUS_MIN_LEN, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN, MAVLINK_MSG_ID_KF_UNIT_STATUS_CRC);
 #endif
@@ -893,6 +944,36 @@ static inline uint8_t mavlink_msg_kf_unit_status_get_earth_frame(const mavlink_m
 }
 
 /**
+ * @brief Get field numeric_resets from kf_unit_status message
+ *
+ * @return  Orientation filter restarts after a non-finite state (either sensor's filter in two-sensor mode; each also sets NUMERIC_RESET in KF_ORIENTATION or KF_JOINT_ANGLE).
+ */
+static inline uint32_t mavlink_msg_kf_unit_status_get_numeric_resets(const mavlink_message_t* msg)
+{
+    return _MAV_RETURN_uint32_t(msg,  83);
+}
+
+/**
+ * @brief Get field hil_invalid from kf_unit_status message
+ *
+ * @return  HIL_SENSOR messages not processed: a NaN acc/gyro/mag value, or a sensor id the unit does not have (id 1 without two-sensor mode, id > 1).
+ */
+static inline uint32_t mavlink_msg_kf_unit_status_get_hil_invalid(const mavlink_message_t* msg)
+{
+    return _MAV_RETURN_uint32_t(msg,  87);
+}
+
+/**
+ * @brief Get field rejected_samples2 from kf_unit_status message
+ *
+ * @return  Samples rejected by sensor 1's orientation filter (two-sensor mode, KF_JOINT_ID != 0; rejected_samples is sensor 0's).
+ */
+static inline uint32_t mavlink_msg_kf_unit_status_get_rejected_samples2(const mavlink_message_t* msg)
+{
+    return _MAV_RETURN_uint32_t(msg,  91);
+}
+
+/**
  * @brief Decode a kf_unit_status message into a struct
  *
  * @param msg The message to decode
@@ -926,6 +1007,9 @@ static inline void mavlink_msg_kf_unit_status_decode(const mavlink_message_t* ms
     kf_unit_status->filter_id = mavlink_msg_kf_unit_status_get_filter_id(msg);
     kf_unit_status->numeric_format = mavlink_msg_kf_unit_status_get_numeric_format(msg);
     kf_unit_status->earth_frame = mavlink_msg_kf_unit_status_get_earth_frame(msg);
+    kf_unit_status->numeric_resets = mavlink_msg_kf_unit_status_get_numeric_resets(msg);
+    kf_unit_status->hil_invalid = mavlink_msg_kf_unit_status_get_hil_invalid(msg);
+    kf_unit_status->rejected_samples2 = mavlink_msg_kf_unit_status_get_rejected_samples2(msg);
 #else
         uint8_t len = msg->len < MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN? msg->len : MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN;
         memset(kf_unit_status, 0, MAVLINK_MSG_ID_KF_UNIT_STATUS_LEN);

@@ -312,7 +312,7 @@ static void mavlink_test_kf_unit_status(uint8_t system_id, uint8_t component_id,
         uint8_t buffer[MAVLINK_MAX_PACKET_LEN];
         uint16_t i;
     mavlink_kf_unit_status_t packet_in = {
-        93372036854775807ULL,963497880,963498088,963498296,963498504,963498712,963498920,963499128,963499336,963499544,963499752,353.0,381.0,409.0,437.0,465.0,493.0,20979,21083,21187,111,178,245,56,123
+        93372036854775807ULL,963497880,963498088,963498296,963498504,963498712,963498920,963499128,963499336,963499544,963499752,353.0,381.0,409.0,437.0,465.0,493.0,20979,21083,21187,111,178,245,56,123,963501780,963501988,963502196
     };
     mavlink_kf_unit_status_t packet1, packet2;
         memset(&packet1, 0, sizeof(packet1));
@@ -341,6 +341,9 @@ static void mavlink_test_kf_unit_status(uint8_t system_id, uint8_t component_id,
         packet1.filter_id = packet_in.filter_id;
         packet1.numeric_format = packet_in.numeric_format;
         packet1.earth_frame = packet_in.earth_frame;
+        packet1.numeric_resets = packet_in.numeric_resets;
+        packet1.hil_invalid = packet_in.hil_invalid;
+        packet1.rejected_samples2 = packet_in.rejected_samples2;
         
         
 #ifdef MAVLINK_STATUS_FLAG_OUT_MAVLINK1
@@ -355,12 +358,12 @@ static void mavlink_test_kf_unit_status(uint8_t system_id, uint8_t component_id,
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
         memset(&packet2, 0, sizeof(packet2));
-    mavlink_msg_kf_unit_status_pack(system_id, component_id, &msg , packet1.time_boot_us , packet1.firmware_version , packet1.firmware_git_hash , packet1.dialect_hash , packet1.samples , packet1.samples_dropped , packet1.frames_dropped , packet1.rejected_samples , packet1.crc_errors , packet1.unknown_messages , packet1.param_rejects , packet1.sensor_rate_requested , packet1.sensor_rate_achieved , packet1.raw_rate_requested , packet1.raw_rate_achieved , packet1.orientation_rate_requested , packet1.orientation_rate_achieved , packet1.battery_voltage , packet1.cpu_load , packet1.status_flags , packet1.battery_remaining , packet1.unit_id , packet1.filter_id , packet1.numeric_format , packet1.earth_frame );
+    mavlink_msg_kf_unit_status_pack(system_id, component_id, &msg , packet1.time_boot_us , packet1.firmware_version , packet1.firmware_git_hash , packet1.dialect_hash , packet1.samples , packet1.samples_dropped , packet1.frames_dropped , packet1.rejected_samples , packet1.crc_errors , packet1.unknown_messages , packet1.param_rejects , packet1.sensor_rate_requested , packet1.sensor_rate_achieved , packet1.raw_rate_requested , packet1.raw_rate_achieved , packet1.orientation_rate_requested , packet1.orientation_rate_achieved , packet1.battery_voltage , packet1.cpu_load , packet1.status_flags , packet1.battery_remaining , packet1.unit_id , packet1.filter_id , packet1.numeric_format , packet1.earth_frame , packet1.numeric_resets , packet1.hil_invalid , packet1.rejected_samples2 );
     mavlink_msg_kf_unit_status_decode(&msg, &packet2);
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
         memset(&packet2, 0, sizeof(packet2));
-    mavlink_msg_kf_unit_status_pack_chan(system_id, component_id, MAVLINK_COMM_0, &msg , packet1.time_boot_us , packet1.firmware_version , packet1.firmware_git_hash , packet1.dialect_hash , packet1.samples , packet1.samples_dropped , packet1.frames_dropped , packet1.rejected_samples , packet1.crc_errors , packet1.unknown_messages , packet1.param_rejects , packet1.sensor_rate_requested , packet1.sensor_rate_achieved , packet1.raw_rate_requested , packet1.raw_rate_achieved , packet1.orientation_rate_requested , packet1.orientation_rate_achieved , packet1.battery_voltage , packet1.cpu_load , packet1.status_flags , packet1.battery_remaining , packet1.unit_id , packet1.filter_id , packet1.numeric_format , packet1.earth_frame );
+    mavlink_msg_kf_unit_status_pack_chan(system_id, component_id, MAVLINK_COMM_0, &msg , packet1.time_boot_us , packet1.firmware_version , packet1.firmware_git_hash , packet1.dialect_hash , packet1.samples , packet1.samples_dropped , packet1.frames_dropped , packet1.rejected_samples , packet1.crc_errors , packet1.unknown_messages , packet1.param_rejects , packet1.sensor_rate_requested , packet1.sensor_rate_achieved , packet1.raw_rate_requested , packet1.raw_rate_achieved , packet1.orientation_rate_requested , packet1.orientation_rate_achieved , packet1.battery_voltage , packet1.cpu_load , packet1.status_flags , packet1.battery_remaining , packet1.unit_id , packet1.filter_id , packet1.numeric_format , packet1.earth_frame , packet1.numeric_resets , packet1.hil_invalid , packet1.rejected_samples2 );
     mavlink_msg_kf_unit_status_decode(&msg, &packet2);
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
@@ -373,7 +376,7 @@ static void mavlink_test_kf_unit_status(uint8_t system_id, uint8_t component_id,
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
         
         memset(&packet2, 0, sizeof(packet2));
-    mavlink_msg_kf_unit_status_send(MAVLINK_COMM_1 , packet1.time_boot_us , packet1.firmware_version , packet1.firmware_git_hash , packet1.dialect_hash , packet1.samples , packet1.samples_dropped , packet1.frames_dropped , packet1.rejected_samples , packet1.crc_errors , packet1.unknown_messages , packet1.param_rejects , packet1.sensor_rate_requested , packet1.sensor_rate_achieved , packet1.raw_rate_requested , packet1.raw_rate_achieved , packet1.orientation_rate_requested , packet1.orientation_rate_achieved , packet1.battery_voltage , packet1.cpu_load , packet1.status_flags , packet1.battery_remaining , packet1.unit_id , packet1.filter_id , packet1.numeric_format , packet1.earth_frame );
+    mavlink_msg_kf_unit_status_send(MAVLINK_COMM_1 , packet1.time_boot_us , packet1.firmware_version , packet1.firmware_git_hash , packet1.dialect_hash , packet1.samples , packet1.samples_dropped , packet1.frames_dropped , packet1.rejected_samples , packet1.crc_errors , packet1.unknown_messages , packet1.param_rejects , packet1.sensor_rate_requested , packet1.sensor_rate_achieved , packet1.raw_rate_requested , packet1.raw_rate_achieved , packet1.orientation_rate_requested , packet1.orientation_rate_achieved , packet1.battery_voltage , packet1.cpu_load , packet1.status_flags , packet1.battery_remaining , packet1.unit_id , packet1.filter_id , packet1.numeric_format , packet1.earth_frame , packet1.numeric_resets , packet1.hil_invalid , packet1.rejected_samples2 );
     mavlink_msg_kf_unit_status_decode(last_msg, &packet2);
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
