@@ -43,7 +43,8 @@ def summarize(df) -> dict:
         out["host"] = head.get("host", {}).get("hostname")
     for sid, ds in sorted(df.streams.items()):
         s = {"id": sid, "connection": ds.info.get("connection"), "bytes": ds.rx_bytes,
-             "counters": ds.counters.as_dict(), "messages": {}, "events": [], "units": {}}
+             "counters": ds.counters.as_dict(), "messages": {}, "events": [], "units": {},
+             "unknown_ids": {str(k): v for k, v in sorted(ds.unknown_ids.items())}}
         for mid, arr in sorted(ds.arrays.items()):
             s["messages"][d.get(mid).name] = int(arr.size)
             for sysid in np.unique(arr["_sysid"]):
@@ -52,6 +53,10 @@ def summarize(df) -> dict:
         host = [h for h in ds.host_ns.values() if h is not None and h.size]
         if host:
             s["host_span_s"] = (max(int(h.max()) for h in host) - min(int(h.min()) for h in host)) / 1e9
+        from kinefuse.host.link.stats import stream_crc_extra_mismatches
+        mm = stream_crc_extra_mismatches(df, sid)
+        if mm is not None:
+            s["crc_extra_mismatch"] = mm
         for m in ds.meta:
             if m.get("type") in ("event", "warning"):
                 s["events"].append({k: v for k, v in m.items() if k != "t_ns"})
@@ -102,7 +107,7 @@ def check_input(path, raw: bool) -> None:
 
 def run(args) -> int:
     from kinefuse.host.link.cli_util import progress
-    from kinefuse.host.link.frames import decode_file
+    from kinefuse.host.link.frames import decode_file, unknown_ids_text
     if args.show < 0:
         raise KinefuseError("--show must be 0 or more (messages per type)")
     check_input(args.file, args.raw)
@@ -135,7 +140,9 @@ def run(args) -> int:
         c = s["counters"]
         con.print(f"\nstream {s['id']} ({s['connection']}): {fmt_bytes(s['bytes'])}, {c['frames_ok']:,} frames, "
                   f"{c['crc_errors']} CRC errors, {c['bytes_skipped']:,} bytes skipped, "
-                  f"{c['unknown_msgid']} unknown ids" + (f", {s['host_span_s']:.1f} s" if "host_span_s" in s else ""))
+                  f"{c['unknown_msgid']} unknown ids" + unknown_ids_text({int(k): v for k, v in s["unknown_ids"].items()})
+                  + (f", {c['bad_incompat']} with unknown incompatibility flags" if c["bad_incompat"] else "")
+                  + (f", {s['host_span_s']:.1f} s" if "host_span_s" in s else ""), soft_wrap=True)
         if s.get("firmware"):
             con.print("units: " + ", ".join(f"{k} (firmware {v})" for k, v in s["firmware"].items()))
         t = Table("message", "count", box=None)
@@ -144,6 +151,9 @@ def run(args) -> int:
         print_table(t, con)
         for e in s["events"]:
             con.print(f"  {e.get('type')}: {e.get('text') or e.get('event')} {e.get('error') or ''}".rstrip())
+        from kinefuse.host.link.stats import crc_extra_text
+        for m in s.get("crc_extra_mismatch") or ():
+            con.print(f"[yellow]warning:[/] {crc_extra_text(m)}", soft_wrap=True)
     if args.show:
         for name, rows in _first(df, args.show).items():
             con.print(f"\n[bold]{name}[/]")

@@ -77,9 +77,32 @@ def _held_text(df, messages) -> str:
 
 
 def _warnings(df) -> list[str]:
-    """What the exported CSVs miss: a truncated file or damaged chunks (as decode and stats say)."""
+    """What the exported CSVs miss: a truncated file or damaged chunks (as decode and stats say),
+    and units whose frames are two units' mixed (one system id on one link)."""
+    import numpy as np
+    from kinefuse.host.link.spec import kinefuse_dialect
+    from kinefuse.host.link.stats import (crc_extra_text, interleaved_clocks, interleaved_text,
+                                          stream_crc_extra_mismatches)
+    out, mixed_units = [], set()
+    for sid, ds in sorted(df.streams.items()):
+        # a message of another dialect version fails every CRC: none of it is in the CSVs
+        out += [f"stream {sid}: {crc_extra_text(m)}: missing from the CSVs"
+                for m in stream_crc_extra_mismatches(df, sid) or ()]
+        for mid, arr in sorted(ds.arrays.items()):
+            spec = kinefuse_dialect().get(mid)
+            if spec is None or not spec.name.startswith("KF_") or "time_boot_us" not in arr.dtype.names:
+                continue
+            for sysid in np.unique(arr["_sysid"]):
+                if (sid, int(sysid)) in mixed_units:   # one warning per unit
+                    continue
+                a = arr[arr["_sysid"] == sysid]
+                mixed = interleaved_clocks(a["time_boot_us"],
+                                           a["sample_counter"] if "sample_counter" in a.dtype.names else None)
+                if mixed is not None:
+                    mixed_units.add((sid, int(sysid)))
+                    out.append(f"stream {sid} " + interleaved_text(int(sysid), spec.name, mixed,
+                                                                   "in one CSV with one t_s clock"))
     rec = df.recording
-    out = []
     if rec is None:
         return out
     if rec.truncated:

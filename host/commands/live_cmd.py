@@ -53,13 +53,26 @@ class UnitView:
     earth_frame: str | None = None
     ori_frames: int = 0
     status: object = None                             # latest KF_UNIT_STATUS record
+    repeats: int = 0                                  # frames delivered again or late (not samples)
+    max_t: int | None = None                          # latest device time of the current clock segment
+    seen: dict = field(default_factory=dict)          # (time, counter) of its latest frames (bounded)
 
     # -- updates -------------------------------------------------------------------------------
     def raw(self, m) -> None:
         self.raw_frames += 1
-        t = int(m.time_boot_us)
-        if self.window and t < self.window[-1]:
-            self.window.clear()                       # device clock restarted (reboot)
+        t, c = int(m.time_boot_us), int(m.sample_counter)
+        if self.max_t is not None and t <= self.max_t:
+            if (t, c) in self.seen:
+                # a frame delivered again or late (stats' rule, device_segments): was a counter
+                # reset, and the step from it back onto the stream that many samples "lost"
+                self.repeats += 1
+                return
+            self.window.clear()                       # back onto a time not sent: a reboot
+            self.seen.clear()
+        self.max_t = t
+        self.seen[(t, c)] = None
+        if len(self.seen) > 4096:
+            del self.seen[next(iter(self.seen))]
         self.window.append(t)
         while self.window and self.window[0] < t - RATE_WINDOW_US:
             self.window.popleft()

@@ -24,7 +24,7 @@ def register(subparsers) -> None:
 
 def run(args) -> int:
     from kinefuse.host.link import stats
-    from kinefuse.host.link.frames import decode_file
+    from kinefuse.host.link.frames import decode_file, unknown_ids_text
     from kinefuse.host.link.cli_util import progress
     from kinefuse.host.commands.decode_cmd import check_input
     check_input(args.file, args.raw)
@@ -44,7 +44,9 @@ def run(args) -> int:
     for s in result["streams"]:
         con.print(f"\n[bold]stream {s['id']}[/] {s['connection']}: {s['frames_ok']:,} frames, "
                   f"{s['crc_errors']} CRC errors, {s['bytes_skipped']:,} bytes skipped, "
-                  f"{s['unknown_msgid']} unknown ids" + (f", {s['host_span_s']:.1f} s" if "host_span_s" in s else ""))
+                  f"{s['unknown_msgid']} unknown ids" + unknown_ids_text(s.get("unknown_ids", {}))
+                  + (f", {s['bad_incompat']} with unknown incompatibility flags" if s.get("bad_incompat") else "")
+                  + (f", {s['host_span_s']:.1f} s" if "host_span_s" in s else ""), soft_wrap=True)
         for u in s["units"]:
             line = f"unit {u['sysid']}"
             if "firmware_version" in u:

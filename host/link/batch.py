@@ -137,6 +137,8 @@ class BatchResult:
     counters: Counters = field(default_factory=Counters)
     #: (start, stop) of every accepted frame, in order (signature-rejected frames excluded)
     spans: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), np.int64))
+    #: unknown message id -> candidates (those counted in ``counters.unknown_msgid``)
+    unknown_ids: dict = field(default_factory=dict)
 
 
 def decode_all(data, dialect: Dialect | None = None, key: bytes | None = None,
@@ -198,6 +200,8 @@ def decode_all(data, dialect: Dialect | None = None, key: bytes | None = None,
     outside = ~inside
     c.bad_incompat = int(np.sum(outside & (kind == 1)))
     c.unknown_msgid = int(np.sum(outside & (kind == 2)))
+    ids, counts = np.unique(msgid[outside & (kind == 2)], return_counts=True)
+    res.unknown_ids = {int(i): int(k) for i, k in zip(ids, counts)}
     c.bad_length = int(np.sum(outside & (kind == 3)))
     c.crc_errors = int(np.sum(outside & (kind == 5)))
     delivered = frames[deliver]

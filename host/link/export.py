@@ -202,8 +202,10 @@ def _export(df: DecodedFile, d, by_msg: dict, out_dir: Path, stage, progress) ->
             cols = []
             if has_host:
                 host = np.concatenate([p[2] for p in sel])
-                order = np.argsort(host, kind="stable")
-                arr, stream, host = arr[order], stream[order], host[order]
+                if len(sel) > 1:   # streams merged by host time; one stream keeps its arrival order (a
+                    # tlog's wall-clock stamps stepping back reordered its frames)
+                    order = np.argsort(host, kind="stable")
+                    arr, stream, host = arr[order], stream[order], host[order]
             if "time_boot_us" in arr.dtype.names and spec.name.startswith("KF_"):
                 cols.append(("t_s", arr["time_boot_us"] / 1e6, "%.6f"))
             pairs = sorted({(int(a), int(b)) for a, b in zip(stream, arr["_sysid"])}) if arr.size else []
@@ -237,7 +239,26 @@ _FRAMES = {   # the frames of the vectors and quaternions (kinefuse.xml), stated
                       "conj(q)); earth_frame: 1 ENU (x East, y North, z Up), 2 NED (x North, y East, z Down), "
                       "0 unknown; cov_*_rad2: covariance of the orientation error (small rotation vector in the "
                       "earth frame), nan where the unit sends none",
+    # the joint angles' frames and sequence were stated nowhere in their CSV
+    "KF_JOINT_ANGLE": "angle_1_rad, angle_2_rad, angle_3_rad: the distal segment frame relative to the proximal "
+                      "one, R_prox_dist = R_a(angle_1) R_b(angle_2) R_c(angle_3) for the sequence abc of column "
+                      "sequence (intrinsic: angle_1 about an axis of the proximal frame, angle_3 about one of the "
+                      "distal frame; 1 XYZ, 2 XZY, 3 YXZ, 4 YZX, 5 ZXY (ISB hip, knee, ankle: flexion, adduction, "
+                      "internal rotation), 6 ZYX, 7 YXY (ISB shoulder), 8 rotation vector (axis times angle) in "
+                      "the proximal frame, 0 unknown); joint_id: 1/2 hip, 3/4 knee, 5/6 ankle, 7/8 shoulder "
+                      "9/10 elbow, 11/12 wrist (left/right), 13 lumbar, 14 neck, 0 unknown",
+    # the standard messages a unit also sends (for ground stations): their frames were not stated
+    "ATTITUDE_QUATERNION": "q1, q2, q3, q4 = w, x, y, z: rotation sensor (body) -> NED earth frame (x North, "
+                           "y East, z Down; MAVLink's convention: the KF_ORIENTATION of the same unit in NED); "
+                           "rollspeed_radps, pitchspeed_radps, yawspeed_radps: about the sensor axes x, y, z",
+    "HIGHRES_IMU": "xacc_mps2.. (specific force), xgyro_radps.., xmag_gauss..: along the sensor axes x, y, z",
+    "KF_EFFORTS": "named columns carry their unit (N, Nm); effort_<i>_si, effort_std_<i>_si (models mixed or "
+                  "unknown): entry i in the SI unit (N or N m) the row's model_id gives it; entries at or beyond "
+                  "count are not estimates",
 }
+
+
+SEGMENTS_SHOWN = 10   # clock fits named in a CSV's unit line
 
 
 def _comments(df: DecodedFile, name: str, pairs, clock) -> list[str]:
@@ -254,11 +275,14 @@ def _comments(df: DecodedFile, name: str, pairs, clock) -> list[str]:
         if clock is not None and name.startswith("KF_"):
             segs = clock(sid, sysid)
             if segs:
+                shown = segs[:SEGMENTS_SHOWN]   # thousands (units mixed on one id) made one 200 kB line
                 line += "; clock fit: " + "; ".join(
                     f"host = {sg['offset_s']:.6f} s + {sg['slope']:.9f} x t_s ({sg['drift_ppm']:+.1f} ppm, "
                     f"{sg['points']} {sg['reference']} points"
                     + (f", first {sg['excluded_leading']} left out" if sg["excluded_leading"] else "") + ")"
-                    + (f" [{'; '.join(sg['warnings'])}]" if sg["warnings"] else "") for sg in segs)
+                    + (f" [{'; '.join(sg['warnings'])}]" if sg["warnings"] else "") for sg in shown)
+                if len(segs) > len(shown):
+                    line += f"; and {len(segs) - len(shown):,} more device-clock segments"
             else:
                 line += "; no clock fit (too few samples): host_fit_s is nan"   # it said "empty"
         out.append(line)

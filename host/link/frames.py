@@ -35,6 +35,7 @@ class DecodedStream:
     host_ns: dict = field(default_factory=dict)  # msgid -> int64 host monotonic ns (None: raw file)
     meta: list = field(default_factory=list)
     rx_bytes: int = 0
+    unknown_ids: dict = field(default_factory=dict)  # unknown message id -> candidates
 
 
 @dataclass
@@ -60,6 +61,13 @@ class DecodedFile:
         return {"format": self.kind, "streams": []}
 
 
+def unknown_ids_text(unknown_ids: dict, least: int = 3, most: int = 3) -> str:
+    """" (ids 52599 x50, ...)": the unknown message ids seen at least ``least`` times (a stray
+    0xFD makes a one-off random id; a message of a newer firmware repeats), most frequent first."""
+    top = sorted(((k, i) for i, k in unknown_ids.items() if k >= least), reverse=True)[:most]
+    return f" (ids {', '.join(f'{i} x{k:,}' for k, i in top)}: a newer dialect?)" if top else ""
+
+
 def is_recording(path) -> bool:
     try:
         with open(path, "rb") as f:
@@ -70,7 +78,8 @@ def is_recording(path) -> bool:
 
 def decode_stream(sd: StreamData, info: dict, msgids=None) -> DecodedStream:
     res = decode_all(sd.rx, msgids=msgids)
-    out = DecodedStream(sd.stream, info, res.counters, meta=sd.meta, rx_bytes=len(sd.rx))
+    out = DecodedStream(sd.stream, info, res.counters, meta=sd.meta, rx_bytes=len(sd.rx),
+                        unknown_ids=res.unknown_ids)
     for mid, arr in res.arrays.items():
         out.arrays[mid] = arr
         if sd.read_end.size:

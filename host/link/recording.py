@@ -148,13 +148,18 @@ class RecordingWriter:
             return
         t0 = reads[0][0]
         entries, data, end = [], [], 0
+        group = None   # dt of the first read of the entry being merged into
         for t, b in reads:
             end += len(b)
             dt = max(0, (t - t0) // 1000)
-            if entries and dt - entries[-1][1] < 1000:  # merge reads < 1 ms apart (later time)
+            # merge reads < 1 ms after the first read of the entry (later time); measured from
+            # the entry's latest read, reads every 0.9 ms chained into one entry: a whole
+            # chunk's frames got its last read's time (up to 0.25 s late)
+            if entries and dt - group < 1000:
                 entries[-1] = (end, dt)
             else:
                 entries.append((end, dt))
+                group = dt
             data.append(b)
         head = struct.pack("<I", len(entries)) + b"".join(READ_ENTRY.pack(e, min(d, 0xFFFFFFFF)) for e, d in entries)
         self.chunk(RX, stream, head + b"".join(data), t0)

@@ -57,7 +57,9 @@ def read_key_file(path) -> bytes:
         if not txt.isprintable():
             return raw
     try:
-        lines = [ln for ln in raw.decode("utf-8").splitlines() if ln.strip()]
+        # utf-8-sig: a file saved by Notepad starts with a BOM, which made its 64 hex digits a
+        # "passphrase" (the key its SHA-256, silently another key than the one written)
+        lines = [ln for ln in raw.decode("utf-8-sig").splitlines() if ln.strip()]
     except UnicodeDecodeError:
         raise KinefuseError(f"key file {p}: neither 32 raw bytes nor a text line") from None
     if len(lines) != 1:

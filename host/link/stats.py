@@ -295,6 +295,43 @@ def device_segments(t_us, counter=None) -> tuple[list[int], np.ndarray]:
     return starts, keep
 
 
+INTERLEAVE_MIN_RESETS = 5     # this many device-clock restarts, each one later than the last,
+INTERLEAVE_BACK_US = 100_000   # landing this far (median) behind the latest time: another clock
+
+
+def interleaved_clocks(t_us, counter=None) -> dict | None:
+    """Two units sending with one system id on one link: their frames interleave into one
+    series whose device clock "restarts" (:func:`device_segments`) at every step from the unit
+    ahead to the one behind, and each restart lands later on the clock than the one before (the
+    clock behind runs on).  A reboot restarts near the boot time instead.  Stats reported 0.15
+    Hz with 1999 resets and no warning; the kfr reader returned the two units' samples mixed.
+    Returns {"resets", "restarts_later"} when at least INTERLEAVE_MIN_RESETS restarts, 90 % of
+    them later than the previous one, together span more than a second and land (median) at
+    least INTERLEAVE_BACK_US behind the latest time sent (frames merely swapped on the way land
+    a sample behind); else None."""
+    starts, _ = device_segments(t_us, counter)
+    if len(starts) - 1 < INTERLEAVE_MIN_RESETS:
+        return None
+    dev = np.asarray(t_us, np.int64)
+    idx = np.array(starts[1:])
+    first = dev[idx]
+    later = float(np.mean(np.diff(first) > 0))
+    if later < 0.9 or first.max() - first.min() <= 1_000_000:
+        return None
+    # frames swapped on the way (UDP, a radio) step back a sample or two: not another clock
+    back = np.maximum.accumulate(dev)[idx - 1] - first
+    if np.median(back) < INTERLEAVE_BACK_US:
+        return None
+    return {"resets": len(starts) - 1, "restarts_later": later}
+
+
+def interleaved_text(sysid, name: str, info: dict,
+                     consequence: str = "rate, loss and clock figures of this id are meaningless") -> str:
+    return (f"unit {sysid}: the device clock of its {name} frames went back {info['resets']:,} times "
+            f"onto a clock that ran on (not a reboot's restart): two units with the same "
+            f"system id on this link (give each its own KF_UNIT_ID): their frames are mixed, {consequence}")
+
+
 def sample_loss(t_us, counter) -> dict:
     """:func:`counter_analysis` of a unit's frames, segment by segment (:func:`device_segments`):
     repeats left out (counted as ``duplicates``), ``resets`` = reboots."""
@@ -333,8 +370,10 @@ def _rate_change(status_rows, field: str) -> tuple[int | None, int]:
     unit's KF_UNIT_STATUS rows; statuses before the unit's last reboot (its clock went back) are
     not compared with those after."""
     t = status_rows["time_boot_us"].astype(np.int64)
-    back = np.flatnonzero(np.diff(t) < 0)
-    rows = status_rows[int(back[-1]) + 1:] if back.size else status_rows
+    # the last device-clock segment without repeats: a status delivered again after the rate
+    # change was taken for a reboot, so the change was dated at the next status after it
+    starts, keep = device_segments(t)
+    rows = status_rows[starts[-1]:][keep[starts[-1]:]]
     r = rows[field].astype(np.float64)
     changed = np.flatnonzero(r[1:] != r[:-1]) + 1
     if not changed.size:
@@ -352,7 +391,9 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
         st = ds.arrays[MSG_STATUS]
         st = st[st["_sysid"] == sysid]
         if st.size:
-            status, statuses = st[-1], st
+            # the latest status by the unit's clock (not a late repeat of an older one)
+            a, keep = device_segments(st["time_boot_us"].astype(np.int64))
+            status, statuses = st[a[-1]:][keep[a[-1]:]][-1], st
             from kinefuse.host.link.recorder import firmware_version_text   # as decode and record say it
             out["firmware_version"] = firmware_version_text(int(status["firmware_version"]))
             out["dialect_hash"] = f"0x{int(status['dialect_hash']):08X}"
@@ -388,6 +429,12 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
                 m["device_span_s"] = span
             if "sample_counter" in a.dtype.names:
                 m.update(sample_loss(a["time_boot_us"], a["sample_counter"]))
+            mixed = interleaved_clocks(a["time_boot_us"], counter)
+            if mixed is not None:
+                m["interleaved_clocks"] = mixed
+                if not any("same system id" in w for w in out.get("warnings", [])):   # once per unit
+                    out.setdefault("warnings", []).append(
+                        interleaved_text(sysid, spec.name if spec else str(mid), mixed))
         req = None
         if status is not None and mid in REQUESTED_FIELD:
             req = float(status[REQUESTED_FIELD[mid]]) or None
@@ -432,6 +479,63 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
     return out
 
 
+def crc_extra_mismatches(rx: bytes, check: int = 64, accepted=None) -> list[dict]:
+    """Messages whose frames fail their CRC with this dialect's CRC_EXTRA but check with one
+    other CRC_EXTRA: a unit built with another version of the message.  Its frames were only
+    "CRC errors" (all of them dropped, no reason given).  Up to ``check`` failing candidates
+    per message id are tried with all 256 CRC_EXTRA values; a mismatch needs at least 3 of
+    them (and a quarter) to agree on one (a random candidate matches some value with
+    probability 1/256).  ``accepted``: start offsets of the frames decoded (not checked again).
+    [{"message", "failed", "crc_extra", "crc_extra_found"}]."""
+    from kinefuse.host.link.batch import _crc_ok
+    from kinefuse.host.link.crc import x25
+    d = kinefuse_dialect()
+    arr = np.frombuffer(rx, np.uint8)
+    n = arr.size
+    if n < 12:
+        return []
+    pos = np.flatnonzero(arr[:n - 11] == 0xFD)
+    pos = pos[arr[pos + 2] <= 1]
+    if accepted is not None and len(accepted):
+        pos = pos[~np.isin(pos, accepted)]
+    msgid = (arr[pos + 7].astype(np.int64) | (arr[pos + 8].astype(np.int64) << 8)
+             | (arr[pos + 9].astype(np.int64) << 16))
+    out = []
+    for mid in np.unique(msgid[np.isin(msgid, np.fromiter(d.ids, np.int64))]):
+        spec = d.get(int(mid))
+        p = pos[msgid == mid]
+        plen = arr[p + 1].astype(np.int64)
+        stop = p + 12 + plen + np.where(arr[p + 2] == 1, 13, 0)
+        sel = (plen >= 1) & (plen <= spec.length) & (stop <= n)
+        p, plen = p[sel], plen[sel]
+        if not p.size:
+            continue
+        bad = ~_crc_ok(arr, p, plen, spec.crc_extra)
+        if not bad.any():
+            continue
+        found: dict = {}
+        tried = 0
+        for q, ln in zip(p[bad][:check], plen[bad][:check]):
+            q, ln = int(q), int(ln)
+            body, got = rx[q + 1:q + 10 + ln], rx[q + 10 + ln] | (rx[q + 11 + ln] << 8)
+            tried += 1
+            for e in range(256):
+                if x25(body, e) == got:
+                    found[e] = found.get(e, 0) + 1
+        if found:
+            e, k = max(found.items(), key=lambda kv: kv[1])
+            if k >= 3 and 4 * k >= tried:
+                out.append({"message": spec.name, "failed": int(bad.sum()), "crc_extra": spec.crc_extra,
+                            "crc_extra_found": e})
+    return out
+
+
+def crc_extra_text(m: dict) -> str:
+    return (f"{m['failed']:,} {m['message']} frame(s) fail their CRC with this kinefuse's CRC_EXTRA "
+            f"{m['crc_extra']} but check with {m['crc_extra_found']}: the unit was built with another version "
+            f"of this message (a dialect mismatch), so they are dropped; update the unit's firmware or kinefuse")
+
+
 def compute(df: DecodedFile) -> dict:
     start = df.start_monotonic_ns
     header = df.header
@@ -453,6 +557,7 @@ def compute(df: DecodedFile) -> dict:
     for sid, ds in sorted(df.streams.items()):
         s = {"id": sid, "connection": ds.info.get("connection"), "bytes": ds.rx_bytes, **ds.counters.as_dict()}
         s.pop("bytes_in", None)
+        s["unknown_ids"] = dict(sorted(ds.unknown_ids.items()))
         t_all = [h for h in ds.host_ns.values() if h is not None and h.size]
         if t_all:
             lo = min(int(h.min()) for h in t_all)
@@ -463,10 +568,29 @@ def compute(df: DecodedFile) -> dict:
         s["units"] = [u for u in units if any(k in KF_NAMES for k in u["messages"]) or "firmware_version" in u] \
             or units
         s["other_systems"] = [u["sysid"] for u in units if u not in s["units"]]
+        mm = stream_crc_extra_mismatches(df, sid)
+        if mm is not None:
+            s["crc_extra_mismatch"] = mm
+            result["warnings"].extend(f"stream {sid}: {crc_extra_text(m)}" for m in mm)
         for u in s["units"]:
             result["warnings"].extend(f"stream {sid} {w}" for w in u.get("warnings", []))
         result["streams"].append(s)
     return result
+
+
+def stream_crc_extra_mismatches(df: DecodedFile, sid: int) -> list | None:
+    """:func:`crc_extra_mismatches` of one stream of a decoded file; None without CRC errors."""
+    ds = df.streams[sid]
+    if not ds.counters.crc_errors:
+        return None
+    accepted = np.concatenate([a["_offset"] for a in ds.arrays.values()] or [np.zeros(0, np.int64)])
+    if df.recording is not None:
+        sd = df.recording.streams.get(sid)
+        return crc_extra_mismatches(sd.rx, accepted=accepted) if sd is not None else None
+    try:    # a raw capture or a tlog (one stream): its bytes are not kept, read them again
+        return crc_extra_mismatches(df.path.read_bytes(), accepted=accepted)
+    except OSError:
+        return None
 
 
 def damage_text(rec) -> str:

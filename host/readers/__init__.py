@@ -57,10 +57,13 @@ def detect_format(path: str | os.PathLike) -> str:
     except OSError as exc:
         raise ReaderError(path, f"cannot open ({exc.strerror})") from None
     try:
-        with open(path, encoding="utf-8-sig", errors="replace") as f:
-            head = [next(f, "") for _ in range(25)]
+        with open(path, "rb") as f:
+            raw = f.read(1 << 16)
     except OSError as exc:
         raise ReaderError(path, f"cannot open ({exc.strerror})") from None
+    # UTF-16 with its BOM (Excel's "Unicode Text"): read as the table reader reads it
+    enc = "utf-16" if raw[:2] in (b"\xff\xfe", b"\xfe\xff") else "utf-8-sig"
+    head = (raw.decode(enc, errors="replace").splitlines(True) + [""] * 25)[:25]
     from kinefuse.host.readers.table import sniff_sep
     sep = sniff_sep([l for l in head if l.strip()][:10] or [","])
     for line in head:

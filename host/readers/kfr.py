@@ -215,6 +215,11 @@ def read(path: str, *, unit=None, **_) -> Recording:
     name = f"unit {u['label']}"
 
     # --- device-clock segments, repeats, host time
+    from kinefuse.host.link.stats import interleaved_clocks, interleaved_text
+    mixed = interleaved_clocks(dev, cnt)
+    if mixed is not None:   # two units' samples mixed into one series: was read as one unit
+        raise ReaderError(path, interleaved_text(u["label"], "KF_RAW_SAMPLE", mixed,
+                                                 "they cannot be read as one unit"))
     starts = _segments(dev, cnt)
     jumps = clock_jumps(dev, cnt) if host is not None else ()
     if len(jumps):   # one fit across a clock step is meaningless: each side gets its own

@@ -157,6 +157,33 @@ def _read_native(path: str, tab: T.Table):
     raise ReaderError(path, "no x-axis (g), x-axis (deg/s) or x-axis (T) column", 1)
 
 
+def _pair_by_time(path, t, acc_g, gyr, ln, tg, warnings):
+    """Accelerometer and gyroscope samples paired by index, checked by time: a sample lost in
+    the middle of one file shifted every later pair by a sample (the gyroscope's motion placed
+    a period early or late, silently).  Where a pair is more than half a period apart, the
+    samples are paired by nearest time instead and those without a partner dropped (warned):
+    returns (t, acc, gyr, lines) then, else None."""
+    m = min(len(t), len(tg))
+    if m < 2:
+        return None
+    dt = float(np.median(np.diff(t)))
+    if not dt > 0 or np.all(np.abs(tg[:m] - t[:m]) <= 0.5 * dt):
+        return None     # index pairs hold (the longer file is cut at its end)
+    j = np.clip(np.searchsorted(tg, t), 1, len(tg) - 1)
+    j = np.where(np.abs(tg[j - 1] - t) <= np.abs(tg[j] - t), j - 1, j)
+    ok = np.abs(tg[j] - t) <= 0.5 * dt
+    idx = np.flatnonzero(ok)
+    ok[idx[1:][j[idx][1:] == j[idx][:-1]]] = False      # each gyroscope sample once
+    acc_only, gyr_only = int((~ok).sum()), len(tg) - int(ok.sum())
+    warnings.append(f"{path}: accelerometer and gyroscope samples paired by time, not by index (samples "
+                    f"lost inside a file): {acc_only} accelerometer and {gyr_only} gyroscope sample(s) "
+                    f"without a partner dropped; first near elapsed {float(t[int(np.argmax(~ok))]):.3f} s"
+                    if acc_only else
+                    f"{path}: accelerometer and gyroscope samples paired by time, not by index (samples "
+                    f"lost inside a file): {gyr_only} gyroscope sample(s) without a partner dropped")
+    return t[ok], acc_g[ok], gyr[j[ok]], ln[ok]
+
+
 def read(path: str, *, gyro_range_dps: float | None = None, **_) -> Recording:
     tab = T.read(path, header_pred=sniff)
     low = [h.strip().lower() for h in tab.header]
@@ -180,6 +207,9 @@ def read(path: str, *, gyro_range_dps: float | None = None, **_) -> Recording:
                                     f"(found: {', '.join(streams) or 'none'})")
         t, acc_g, ln, pa, a_start = streams["Accelerometer"]
         t2, gyr, _, pg, g_start = streams["Gyroscope"]
+        # the gyroscope's times on the accelerometer's elapsed (s), to check the pairing below
+        tg = t2 + ((g_start - a_start) / 1e3 if a_start is not None and g_start is not None
+                   else (t[0] - t2[0] if len(t) and len(t2) else 0.0))
         # Each file's elapsed (s) starts at its own first sample: the streams were paired by
         # index and the magnetometer held on as if all had started together, however far apart
         # their epoc (ms) said they started.  Aligned on epoc: a later-starting gyroscope drops
@@ -191,12 +221,16 @@ def read(path: str, *, gyro_range_dps: float | None = None, **_) -> Recording:
                 if k > 0:
                     t, acc_g, ln = t[k:], acc_g[k:], ln[k:]
                 else:
-                    gyr = gyr[-k:]
+                    gyr, tg = gyr[-k:], tg[-k:]
                 warnings.append(f"{path}: the gyroscope file starts {abs(g_start - a_start):.0f} ms "
                                 f"{'after' if k > 0 else 'before'} the accelerometer file (epoc (ms)): "
                                 f"the first {abs(k)} {'accelerometer' if k > 0 else 'gyroscope'} sample(s) "
                                 f"dropped to pair them")
                 t2 = t2[:len(gyr)]
+        paired = _pair_by_time(path, t, acc_g, gyr, ln, tg, warnings)
+        if paired is not None:
+            t, acc_g, gyr, ln = paired
+            t2 = t
         n = min(len(t), len(t2))
         if len(t) != len(t2):
             warnings.append(f"{path}: accelerometer has {len(t)} and gyroscope {len(t2)} samples; "

@@ -56,7 +56,11 @@ class Table:
 
     def _locate_bad(self, cells, j, c, names):
         nm = names[c] if names else self.header[j]
+        head = self.header[j].strip().lower() if j < len(self.header) else None
         for cell, ln in zip(cells, self.lines):
+            if head and cell.lower() == head:   # two exports joined into one file
+                raise ReaderError(self.path, "the header line repeats here (files joined into one?): "
+                                             "give each recording as its own file", int(ln))
             if cell == "":
                 raise ReaderError(self.path, f"column {nm!r} is empty", int(ln))
             try:
@@ -67,11 +71,16 @@ class Table:
 
 
 def sniff_sep(sample_lines: list[str]) -> str:
-    """The delimiter (',', ';' or tab) present the most times on every non-empty line."""
+    """The delimiter: ';' or tab when one is on every non-empty line (the one present more
+    often), else ','."""
     lines = [l for l in sample_lines if l.strip()]
     counts = {s: min((l.count(s) for l in lines), default=0) for s in (",", ";", "\t")}
-    best = max(counts, key=counts.get)
-    return best if counts[best] > 0 else ","
+    # ';' or a tab on every line is the separator: with a decimal comma in every cell the
+    # commas outnumber it by one, and "," was taken (a ';' kinefuse CSV read as one column)
+    alt = max((";", "\t"), key=counts.get)
+    if counts[alt] > 0:
+        return alt
+    return ","
 
 
 def read(path: str, *, header_pred=None, max_preamble: int = 20, has_header: bool = True,
@@ -82,12 +91,7 @@ def read(path: str, *, header_pred=None, max_preamble: int = 20, has_header: boo
     if os.path.isdir(path):
         raise ReaderError(path, "is a directory; give one recording file")
     try:
-        try:
-            with open(path, encoding="utf-8-sig", newline="") as f:
-                text = f.read()
-        except UnicodeDecodeError:
-            with open(path, encoding="latin-1", newline="") as f:
-                text = f.read()
+        text = read_text(path)
     except OSError as exc:
         raise ReaderError(path, f"cannot open ({exc.strerror or exc})") from None
     all_lines = text.splitlines()
@@ -128,6 +132,25 @@ def read(path: str, *, header_pred=None, max_preamble: int = 20, has_header: boo
     if not rows:
         raise ReaderError(path, "no data rows")
     decimal = "."
-    if sep == ";" and any("," in c for c in rows[0]):
+    # a decimal comma (Excel in a comma-decimal locale) goes with ';' or a tab: judged over
+    # the first rows (a first row of whole numbers read "0,5" below it as not a number) and
+    # for tab-separated files too (refused as "'-0,0015' is not a number")
+    if sep != "," and any("," in c for row in rows[:50] for c in row):
         decimal = ","
     return Table(path, header, rows, lines, sep, preamble, decimal)
+
+
+def read_text(path: str) -> str:
+    """The file's text: UTF-16 with its BOM (Excel's "Unicode Text" export; was an unknown
+    format), UTF-8 with or without BOM, else Latin-1."""
+    with open(path, "rb") as f:
+        raw = f.read()
+    if raw[:2] in (b"\xff\xfe", b"\xfe\xff"):
+        try:
+            return raw.decode("utf-16")
+        except UnicodeDecodeError:
+            pass
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        return raw.decode("latin-1")

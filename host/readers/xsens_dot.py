@@ -81,6 +81,16 @@ def read(path: str, **_) -> Recording:
     st = st.astype(np.int64)
     d = np.diff(st)
     wraps = d < -(2**31)
+    # a wrap continues the clock (the step across it is a usual one); a fall by more than half
+    # the range that lands far from that is the sensor restarting its clock: unwrapped, it
+    # was a silent jump of up to 71 minutes forward ("a gap")
+    usual = float(np.median(d[d > 0])) if np.any(d > 0) else 0.0
+    restart = wraps & ((d + 2**32) > max(100 * usual, 60_000_000))   # a minute: a long gap may span a wrap
+    if restart.any():
+        k = int(np.argmax(restart)) + 1
+        raise ReaderError(path, f"SampleTimeFine goes backwards ({st[k - 1]} -> {st[k]} us): not a wrap of the "
+                                f"32-bit counter (the sensor restarted its clock?); give each part as its own file",
+                          int(lines[k]))
     if wraps.any():
         st = st + np.concatenate([[0], np.cumsum(wraps)]) * (2**32)
         warnings.append(f"{path}: SampleTimeFine wrapped around {int(wraps.sum())} time(s) (unwrapped)")

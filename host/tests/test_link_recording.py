@@ -239,3 +239,18 @@ def test_tlog_frames_and_times_match_pymavlink(tmp_path):
             break
         ref.append((m.sample_counter, round(m._timestamp * 1e6)))
     assert ref == [(int(c), int(h // 1000)) for c, h in zip(arr["sample_counter"], host)]
+
+
+def test_reads_every_half_millisecond_keep_their_times(tmp_path):
+    """Reads 0.5 ms apart (a USB CDC unit at 1 kHz): merging compared each read with the
+    entry's latest read, so the whole chunk chained into one entry and every frame in it got
+    the last read's time (here 49.5 ms late for the first)."""
+    head = make_header([{"id": 0}])
+    reads = [(10**9 + k * 500_000, bytes([k])) for k in range(100)]
+    with RecordingWriter(tmp_path / "h.kfr", head) as w:
+        w.rx(0, reads)
+    s = load(tmp_path / "h.kfr").streams[0]
+    assert s.rx == bytes(range(100))
+    got = s.host_time_ns(np.arange(1, 101))          # time of the read holding byte k
+    true = np.array([t for t, _ in reads])
+    assert np.all(got >= true) and np.max(got - true) < 1_000_000

@@ -146,3 +146,24 @@ def test_plain_line_states_requested_rate_off_without_unit():
     assert "(requested off)" in mon.lines()[0], mon.lines()
     u.requested_hz = 250.0
     assert "(requested 250 Hz)" in mon.lines()[0], mon.lines()
+
+
+def test_a_late_replay_is_not_loss_or_a_reset():
+    """Frames 50-52 delivered again after 60 (a flaky link): live counted a counter reset and,
+    from 52 back to 61, 8 samples lost (stats already took them for repeats)."""
+    from types import SimpleNamespace
+    from kinefuse.host.commands.live_cmd import UnitView
+    order = list(range(100))
+    order[61:61] = [50, 51, 52]
+    u = UnitView(0, 1, "fake:")
+    for k, c in enumerate(order):
+        u.raw(SimpleNamespace(time_boot_us=5000 * c, sample_counter=c))
+        if k % 10 == 9:
+            u.settle_counters()
+    u.settle_counters(final=True)
+    assert u.lost == 0 and u.resets == 0 and u.repeats == 3
+    assert u.rate_hz == pytest.approx(200.0)
+    # a reboot (device time back to a time not sent) still restarts the rate window
+    u.raw(SimpleNamespace(time_boot_us=400_000, sample_counter=0))
+    u.settle_counters(final=True)
+    assert u.resets == 1 and len(u.window) == 1
