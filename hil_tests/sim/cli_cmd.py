@@ -78,9 +78,12 @@ def _load_scenario(arg: str):
     p = Path(arg)
     if p.suffix == ".json" or p.exists():
         try:
-            text = p.read_text()
+            text = p.read_text(encoding="utf-8")
         except OSError as exc:
             raise KinefuseError(f"cannot read scenario file {arg}: {exc.strerror}") from None
+        except UnicodeDecodeError as exc:       # (was an internal error)
+            raise KinefuseError(f"scenario file {arg}: not UTF-8 text (byte {exc.start}); "
+                                f"save the JSON as UTF-8") from None
         return Scenario.from_json(text)
     raise KinefuseError(f"unknown scenario {arg!r}: not a library name (see `kinefuse sim list`) nor a file")
 
@@ -160,7 +163,9 @@ def _summary(r) -> dict:
     an = np.linalg.norm(r.acc, axis=1)
     mn = np.linalg.norm(r.mag, axis=1)
     has_mag = bool(np.any(np.isfinite(mn)))
-    n_nominal = int(r.index.max()) + 1 if len(r) else 0
+    from .timing import sample_count
+    # (the last delivered index + 1 missed every sample dropped after it)
+    n_nominal = sample_count(r.meta["duration_s"], r.meta["rate_hz"])
     return {"samples": len(r), "duration_s": float(r.t[-1] - r.t[0]) if len(r) else 0.0,
             # (a sensor without magnetometer was listed with one at the acc/gyro rate)
             "rate_hz": r.meta["rate_hz"], "mag_rate_hz": r.meta["mag_rate_hz"] if has_mag else None,

@@ -49,6 +49,13 @@ def _window_keys(d, where, required=True):
     return t0, t1
 
 
+def _ramp(d, where):
+    r = float(d.get("ramp_s", 0.0))
+    if not (np.isfinite(r) and r >= 0):         # (a negative or NaN ramp ran as no ramp)
+        raise SpecError(f"{where}.ramp_s: must be >= 0 s, got {d.get('ramp_s')!r}")
+    return r
+
+
 @dataclass
 class Disturbances:
     """All disturbances of a scenario, parsed.  Methods return additive terms or masks."""
@@ -68,10 +75,10 @@ class Disturbances:
             kind = d["type"]
             if kind == "field_scale":
                 take(d, w, ["type", "t_start_s", "t_end_s", "factor"], ["ramp_s"])
-                me.append(("scale", *_window_keys(d, w), float(d.get("ramp_s", 0.0)), float(d["factor"])))
+                me.append(("scale", *_window_keys(d, w), _ramp(d, w), float(d["factor"])))
             elif kind == "uniform_field":
                 take(d, w, ["type", "t_start_s", "t_end_s", "field_uT"], ["ramp_s"])
-                me.append(("uniform", *_window_keys(d, w), float(d.get("ramp_s", 0.0)), vec3(d["field_uT"], w)))
+                me.append(("uniform", *_window_keys(d, w), _ramp(d, w), vec3(d["field_uT"], w)))
             elif kind == "stationary_magnet":
                 take(d, w, ["type", "position_m", "moment_Am2"], ["t_start_s", "t_end_s"])
                 me.append(("dipole", *_window_keys(d, w, False), 0.0,
@@ -85,6 +92,8 @@ class Disturbances:
             elif kind == "taps":
                 take(d, w, ["type", "times_s"], ["acc_peak_ms2", "gyr_peak_dps", "duration_s", "directions"])
                 times = np.atleast_1d(np.asarray(d["times_s"], dtype=float))
+                if times.ndim != 1 or not np.all(np.isfinite(times)):   # (a NaN time: no tap)
+                    raise SpecError(f"{w}.times_s: must be finite times in s, got {d['times_s']!r}")
                 if "directions" in d:
                     dirs = np.array([unit3(x, f"{w}.directions") for x in d["directions"]])
                     if len(dirs) != len(times):
@@ -99,7 +108,7 @@ class Disturbances:
                             positive(d.get("duration_s", 0.04), f"{w}.duration_s")))
             elif kind == "vibration":
                 take(d, w, ["type", "t_start_s", "t_end_s"], ["freq_hz", "acc_amp_ms2", "gyr_amp_dps", "ramp_s"])
-                ine.append(("vibration", *_window_keys(d, w), float(d.get("ramp_s", 0.0)),
+                ine.append(("vibration", *_window_keys(d, w), _ramp(d, w),
                             positive(d.get("freq_hz", 40.0), f"{w}.freq_hz"),
                             vec3(d.get("acc_amp_ms2", [3.0, 3.0, 2.0]), w),
                             np.radians(vec3(d.get("gyr_amp_dps", [1.5, 0.7, 0.8]), w)),

@@ -39,6 +39,8 @@ class Earth:
 
     @classmethod
     def from_dict(cls, d: dict | None) -> "Earth":
+        if d is not None and not isinstance(d, dict):   # ([] ran the default earth)
+            raise SpecError(f"earth: expected an object, got {type(d).__name__}")
         d = dict(d or {})
         take(d, "earth", [], ["g", "field_uT", "dip_deg", "declination_deg"])
         try:

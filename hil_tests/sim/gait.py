@@ -72,12 +72,18 @@ def gait_rig(spec: dict, rng) -> Rig:
     stride = positive(spec.get("stride_m", 1.3), "motion.stride_m")
     before = float(spec.get("rest_before_s", 2.0))
     after = float(spec.get("rest_after_s", 2.0))
+    for k, v in (("rest_before_s", before), ("rest_after_s", after)):
+        if not (np.isfinite(v) and v >= 0):     # (-1 started the walk before t = 0, mid-stride)
+            raise SpecError(f"motion.{k}: must be >= 0 s, got {spec[k]!r}")
     side = spec.get("side", "right")
     if side not in ("right", "left"):
         raise SpecError(f"motion.side: expected 'right' or 'left', got {side!r}")
     lat = -1.0 if side == "right" else 1.0      # lateral (outward) direction along segment y
     T = 120.0 / cadence                          # stride (cycle) time, s
     speed = stride / T                           # m/s
+    for k in ("heading_deg", "hip_height_m", "pelvis_vertical_m", "pelvis_lateral_m"):
+        if k in spec and not np.isfinite(float(spec[k])):    # (NaN heading: an internal error)
+            raise SpecError(f"motion.{k}: must be finite, got {spec[k]!r}")
     yaw = np.radians(float(spec.get("heading_deg", 0.0)))
     fwd = np.array([np.cos(yaw), np.sin(yaw), 0.0])
     left = np.array([-np.sin(yaw), np.cos(yaw), 0.0])

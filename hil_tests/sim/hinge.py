@@ -53,7 +53,13 @@ def joint_profile(spec: dict, where: str = "motion.joint") -> Profile:
                 raise SpecError(f"{w}: cycles must start at between_deg[0] "
                                 f"({np.degrees(a):g}°), the joint is at {np.degrees(prof.end_value):g}°")
             pause = float(st.get("pause_s", 0.0))
-            for _ in range(int(st["cycles"])):
+            if not (np.isfinite(pause) and pause >= 0):        # (a negative pause ran as none)
+                raise SpecError(f"{w}.pause_s: must be >= 0 s, got {st.get('pause_s')!r}")
+            n = st["cycles"]
+            # (2.5 cycles ran as 2, and 0 or -3 as none: a joint that never moved)
+            if isinstance(n, bool) or not float(n).is_integer() or float(n) < 1:
+                raise SpecError(f"{w}.cycles: must be a whole number >= 1, got {n!r}")
+            for _ in range(int(n)):
                 _move(prof, b, st, w)
                 if pause > 0:
                     prof.hold(pause)

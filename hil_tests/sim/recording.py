@@ -23,6 +23,7 @@ meta           dict    scenario, sensor, seed, preset, rate_hz, mag_rate_hz, uni
 """
 from __future__ import annotations
 
+import io
 import json
 from dataclasses import dataclass, field
 
@@ -109,7 +110,14 @@ class Recording:
             import scipy.io
             d = self.to_broad()
             d["info"] = json.dumps(self.meta)
-            scipy.io.savemat(p, d, do_compression=True)
+            buf = io.BytesIO()
+            scipy.io.savemat(buf, d, do_compression=True)
+            data = bytearray(buf.getvalue())
+            # the 116-byte descriptive text held the time of writing: a fixed text keeps
+            # "same seed, same bytes" (the text is free-form; it starts as the format asks)
+            data[:116] = b"MATLAB 5.0 MAT-file, written by kinefuse sim".ljust(116, b"\0")
+            with open(p, "wb") as f:
+                f.write(data)
         elif p.endswith(".npz"):
             arrays = {k: getattr(self, k) for k in _ARRAYS}
             arrays.update({f"truth__{k}": v for k, v in self.truth.items()})

@@ -174,8 +174,15 @@ def _band(spec, key, where, default):
     return lo, hi
 
 
+def _non_negative(spec, key, where, default):
+    v = float(spec.get(key, default))
+    if not (np.isfinite(v) and v >= 0):     # (-90 ran as 90 with the motion's signs flipped)
+        raise SpecError(f"{where}.{key}: must be >= 0, got {spec.get(key)!r}")
+    return v
+
+
 def _random_rotation_signal(spec, q0, rng, where, dur):
-    rms = np.radians(float(spec.get("rms_rate_dps", 90.0)))
+    rms = np.radians(_non_negative(spec, "rms_rate_dps", where, 90.0))
     band = _band(spec, "band_hz", where, (0.05, 0.5))
     n = int(spec.get("n_sines", 6))
     ramp = float(spec.get("ramp_s", 1.0))
@@ -211,7 +218,7 @@ def _random_motion(spec, q0, p0, rng, where):
     dur = positive(spec["duration"], f"{where}.duration")
     rng = np.random.default_rng(spec["seed"]) if "seed" in spec else rng
     ori = _random_rotation_signal(spec, q0, rng, where, dur)
-    rms = float(spec.get("translation_rms_m", 0.1))
+    rms = _non_negative(spec, "translation_rms_m", where, 0.1)
     lo, hi = _band(spec, "translation_band_hz", where, (0.1, 1.0))
     win = window(dur, float(spec.get("ramp_s", 1.0)))
     terms = []

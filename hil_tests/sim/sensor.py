@@ -136,6 +136,8 @@ class ChannelModel:
                     raise SpecError(f"{w}: expected a finite 3×3 matrix")
                 setattr(c, k, m)
             elif k == "bits":
+                if isinstance(v, bool) or not float(v).is_integer():   # (12.5 ran as 12)
+                    raise SpecError(f"{w}: must be a whole number of bits, got {v!r}")
                 c.bits = int(v)
                 if not 2 <= c.bits <= 32:
                     raise SpecError(f"{w}: must be in 2..32")

@@ -9,7 +9,8 @@ whose nominal time falls in a ``gaps_s`` interval) and duplicated (probability `
 the same packet, values and stamp, delivered twice).  The first sample is never dropped.
 
 ``dt`` of a recording comes from the emitted stamps: dt[0] = 1/rate, dt[i] = t[i] − t[i−1]
-(0 for a duplicate, a multiple of the period after drops).
+(0 for a duplicate, a multiple of the period after drops).  A magnetometer at the acc/gyro rate
+is sampled at the same instants; at a rate of its own it has jittered instants of its own.
 """
 from __future__ import annotations
 
@@ -32,6 +33,8 @@ class Timing:
 
     @classmethod
     def from_dict(cls, d: dict | None) -> "Timing":
+        if d is not None and not isinstance(d, dict):   # ([] ran without timing errors)
+            raise SpecError(f"timing: expected an object, got {type(d).__name__}")
         d = dict(d or {})
         take(d, "timing", [], list(cls.__dataclass_fields__))
         try:

@@ -60,6 +60,24 @@ def test_every_library_scenario_runs(name):
                                                             "n_sines": "abc"}]}}, "invalid value"),
     ({"name": "x", "motion": {"kind": "hinge", "joint": {"steps": [{"move_to_deg": 10, "rate_dps": 10,
                                                                     "blend_s": 0}]}}}, "blend"),
+    # a negative rest before the walk started the gait before t = 0 (mid-stride, not from standing)
+    ({"name": "x", "motion": {"kind": "gait", "duration_s": 5, "rest_before_s": -1}}, "rest_before_s: must be >= 0"),
+    ({"name": "x", "motion": {"kind": "gait", "duration_s": 5, "rest_after_s": -1}}, "rest_after_s: must be >= 0"),
+    # a NaN heading was an internal error (ValueError from the quaternion) at simulation time
+    ({"name": "x", "motion": {"kind": "gait", "duration_s": 5, "heading_deg": float("nan")}}, "heading_deg: must be finite"),
+    ({"name": "x", "motion": {"kind": "gait", "duration_s": 5, "hip_height_m": float("inf")}}, "hip_height_m: must be finite"),
+    # a negative design RMS ran as its magnitude with the signs of the motion flipped
+    ({"name": "x", "motion": {"kind": "body", "segments": [{"type": "random_rotation", "duration": 5,
+                                                            "rms_rate_dps": -90}]}}, "rms_rate_dps: must be >= 0"),
+    ({"name": "x", "motion": {"kind": "body", "segments": [{"type": "random_motion", "duration": 5,
+                                                            "translation_rms_m": -0.1}]}}, "translation_rms_m: must be >= 0"),
+    # 2.5 cycles ran as 2, 0 or -3 as none; a negative pause as no pause
+    ({"name": "x", "motion": {"kind": "hinge", "joint": {"steps": [{"cycles": 2.5, "between_deg": [0, 20],
+                                                                    "rate_dps": 10}]}}}, "cycles: must be a whole number"),
+    ({"name": "x", "motion": {"kind": "hinge", "joint": {"steps": [{"cycles": 0, "between_deg": [0, 20],
+                                                                    "rate_dps": 10}]}}}, "cycles: must be a whole number"),
+    ({"name": "x", "motion": {"kind": "hinge", "joint": {"steps": [{"cycles": 1, "between_deg": [0, 20],
+                                                                    "rate_dps": 10, "pause_s": -1}]}}}, "pause_s: must be >= 0"),
 ])
 def test_bad_specs_give_one_line_errors(bad, msg):
     with pytest.raises(KinefuseError) as exc:
@@ -85,6 +103,17 @@ _REST1 = {"name": "x", "motion": {"kind": "body", "segments": [{"type": "rest", 
     ({"timing": {"clock_drift_ppm": -1e6}}, "clock_drift_ppm: must be > -1000000"),  # a stopped clock
     ({"earth": {"dip_deg": float("nan")}}, "earth.dip_deg: must be finite"),          # NaN field
     ({"earth": {"field_uT": float("inf")}}, "earth.field_uT: must be finite"),
+    ({"earth": []}, "earth: expected an object"),                          # ran the default earth
+    ({"earth": [["g", 3.7]]}, "earth: expected an object"),                 # read as {"g": 3.7}
+    ({"timing": []}, "timing: expected an object"),
+    ({"motion": {"kind": "hinge", "joint": {"steps": [{"hold_s": 1}]}},
+      "sensor_overrides": {"distal": [["rate_hz", 50]]}}, "sensor_overrides.distal: expected an object"),                         # ran without timing errors
+    ({"sensor": {"gyr": {"bits": 12.5}}}, "bits: must be a whole number"),  # ran as 12 bits
+    ({"disturbances": [{"type": "taps", "times_s": [0.2, float("nan")]}]}, "times_s: must be finite"),  # no tap
+    ({"disturbances": [{"type": "vibration", "t_start_s": 0, "t_end_s": 1, "ramp_s": -0.5}]},
+     "ramp_s: must be >= 0"),                                              # ran without a ramp
+    ({"disturbances": [{"type": "field_scale", "t_start_s": 0, "t_end_s": 1, "factor": 2,
+                        "ramp_s": float("nan")}]}, "ramp_s: must be >= 0"),
 ])
 def test_bad_sensor_and_seed_values_give_one_line_errors(change, msg):
     with pytest.raises(KinefuseError) as exc:
@@ -128,6 +157,19 @@ def test_mat_file_loads_as_broad_trial(tmp_path):
     np.testing.assert_array_equal(trial.quat_ref, rec.q_true)
     np.testing.assert_array_equal(trial.movement, rec.movement)
     assert trial.rate_hz == 100.0
+
+
+def test_same_seed_gives_the_same_mat_bytes(tmp_path, monkeypatch):
+    """The .mat header carried the time of writing: the same seed gave different bytes."""
+    import scipy.io
+    import time
+    rec = sim.simulate("rest", seed=3, duration_s=1.0)
+    monkeypatch.setattr(time, "asctime", lambda *a: "Mon Jan  1 00:00:00 2024")
+    rec.save(str(tmp_path / "a.mat"))
+    monkeypatch.setattr(time, "asctime", lambda *a: "Tue Jan  2 11:11:11 2024")
+    rec.save(str(tmp_path / "b.mat"))
+    assert (tmp_path / "a.mat").read_bytes() == (tmp_path / "b.mat").read_bytes()
+    np.testing.assert_array_equal(scipy.io.loadmat(str(tmp_path / "a.mat"))["imu_gyr"], rec.gyr)
 
 
 def test_npz_round_trip(tmp_path):
@@ -277,6 +319,26 @@ def test_cli_refuses_a_mag_rate_for_a_sensor_without_magnetometer(tmp_path, caps
     assert not (tmp_path / "r.npz").exists()
 
 
+def test_cli_summary_counts_drops_at_the_end(tmp_path, capsys):
+    """Samples dropped after the last delivered one were not counted (nominal count taken as
+    the last delivered index + 1): a 1 s run with a gap over its second half said 0 drops."""
+    f = tmp_path / "s.json"
+    f.write_text(json.dumps({**_REST1, "timing": {"gaps_s": [[0.5, 2.0]]}}))
+    code, out = _cli(["sim", "run", str(f), "--json"], capsys)
+    s = json.loads(out.out)["sensors"]["imu"]
+    assert code == 0 and s["samples"] == 50
+    assert s["dropped"] == 51 and s["duplicated"] == 0       # nominal samples 50..100 of 0..100
+
+
+def test_cli_refuses_a_scenario_file_that_is_not_text(tmp_path, capsys):
+    """A scenario file in another encoding (or a binary file) was an internal error."""
+    f = tmp_path / "latin1.json"
+    f.write_bytes('{"name": "r\xe9sum\xe9"}'.encode("latin-1"))
+    with pytest.raises(KinefuseError, match="not UTF-8 text") as exc:
+        _cli(["sim", "run", str(f)], capsys)
+    assert "\n" not in str(exc.value)
+
+
 @pytest.mark.parametrize("disturbances,stream", [
     ([{"type": "field_scale", "t_start_s": 0, "t_end_s": 1, "factor": float("nan")}], "mag"),
     ([{"type": "taps", "times_s": [0.5], "acc_peak_ms2": float("nan")}], "acc"),
@@ -286,6 +348,18 @@ def test_nan_in_a_disturbance_is_refused_not_simulated(disturbances, stream):
     with pytest.raises(KinefuseError) as exc:
         sim.simulate({**_REST1, "disturbances": disturbances})
     assert f"non-finite {stream}" in str(exc.value) and "\n" not in str(exc.value)
+
+
+def test_an_overflowing_motion_is_one_error_without_numpy_warnings():
+    """An absurd value (1e308 m at 1e10 Hz) printed a dozen numpy RuntimeWarnings with source
+    lines on stderr before the one-line error."""
+    import warnings
+    spec = {"name": "x", "motion": {"kind": "body", "segments": [
+        {"type": "translate", "direction": [1, 0, 0], "amplitude_m": 1e308, "freq_hz": 1e10, "duration": 1}]}}
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(KinefuseError, match="non-finite acc"):
+            sim.simulate(spec)
 
 
 def test_disturbances_must_be_a_list():
