@@ -36,7 +36,7 @@ def register(subparsers) -> None:
     rn = sub.add_parser("run", help="simulate a scenario (name or JSON file)")
     rn.add_argument("scenario", help="library name or path to a scenario .json")
     rn.add_argument("--seed", type=argtypes.seed, default=None, help="random seed (default: the scenario's)")
-    rn.add_argument("--preset", default=None, help="sensor preset: xsens_dot, matrix, metamotionr, ideal")
+    rn.add_argument("--preset", default=None, help="sensor preset: xsens_dot, matrix, metamotionr, ideal (its noise, ranges and resolution; the scenario keeps its rates and error terms: bias, drift, scale, misalignment, iron)")
     rn.add_argument("--rate", type=float, default=None, help="acc/gyro output rate, Hz")
     rn.add_argument("--mag-rate", type=float, default=None, help="magnetometer rate, Hz")
     rn.add_argument("--duration", type=float, default=None, help="duration, s (default: the motion's)")
@@ -88,6 +88,26 @@ def _load_scenario(arg: str):
     raise KinefuseError(f"unknown scenario {arg!r}: not a library name (see `kinefuse sim list`) nor a file")
 
 
+# what a sensor is (noise, full scale, resolution) comes from --preset; what the scenario does
+# to it (bias, drift, scale, misalignment, iron, no magnetometer) is the scenario's point: kept
+_SENSOR_PROPERTIES = ("noise_", "range_", "lsb_", "bits")
+
+
+def _with_preset(scenario_sensor: dict, preset: str) -> dict:
+    """The scenario's sensor section under another preset: the preset's noise, ranges and
+    resolution, the scenario's rates and error terms (``bias_1dps --preset xsens_dot`` lost its
+    1 °/s bias when the preset replaced the whole section)."""
+    sensor = {"preset": preset}
+    sensor.update({k: v for k, v in scenario_sensor.items() if k in ("rate_hz", "mag_rate_hz")})
+    for ch in ("gyr", "acc", "mag"):
+        over = scenario_sensor.get(ch)
+        if isinstance(over, dict):
+            kept = {k: v for k, v in over.items() if not k.startswith(_SENSOR_PROPERTIES)}
+            if kept:
+                sensor[ch] = kept
+    return sensor
+
+
 def _run(args) -> int:
     from .scenario import run
     from kinefuse.host.bench.common import given
@@ -98,9 +118,7 @@ def _run(args) -> int:
     sc = _load_scenario(args.scenario)
     sensor = dict(sc.sensor)
     if args.preset is not None:
-        sensor = {"preset": args.preset}   # a new preset replaces the scenario's overrides
-        keep = {k: v for k, v in sc.sensor.items() if k in ("rate_hz", "mag_rate_hz")}
-        sensor.update(keep)
+        sensor = _with_preset(sc.sensor, args.preset)
     if args.rate is not None:
         sensor["rate_hz"] = args.rate
     if args.mag_rate is not None:

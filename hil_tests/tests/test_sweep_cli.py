@@ -263,3 +263,17 @@ def test_sim_run_lists_no_magnetometer_rate_without_magnetometer(capsys, preset,
     s = json.loads(capsys.readouterr().out)["sensors"]["imu"]
     assert s["rate_hz"] == 100.0 and s["mag_rate_hz"] == mag_rate
     assert (s["mag_norm_min"] is None) == (mag_rate is None)
+
+
+def test_sim_run_preset_keeps_the_scenarios_error_terms(tmp_path):
+    """`sim run bias_1dps --preset xsens_dot` lost the scenario's 1 °/s gyro bias: the preset
+    replaced the whole sensor section.  The preset gives the noise, the scenario its bias."""
+    from kinefuse.hil_tests.sim.recording import Recording
+    out = tmp_path / "b.npz"
+    assert main(["sim", "run", "bias_1dps", "--duration", "5", "--preset", "xsens_dot",
+                 "--out", str(out)]) == 0
+    import numpy as np
+    r = Recording.load(str(out))
+    bias_dps = np.degrees(np.mean(r.gyr - r.truth["gyr_true"], axis=0))
+    np.testing.assert_allclose(bias_dps, [1.0, 1.0, 1.0], atol=0.05)   # at rest: the bias
+    assert r.meta["preset"] == "xsens_dot"
