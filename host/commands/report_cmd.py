@@ -247,6 +247,16 @@ def _check_out(args, kind: str) -> None:
             raise KinefuseError(f"cannot write {out / name}: a folder of that name is in the way")
 
 
+def _same_file(a, b) -> bool:
+    """One file under two names (or the same name); a missing one is reported by its reader."""
+    if a == b:
+        return True
+    try:
+        return os.path.samefile(a, b)
+    except OSError:
+        return False
+
+
 def _check_distinct(pairs, units) -> None:
     """Each segment has its own sensor: one recording (one unit of it) given for both segments
     was reported as 'flexion varies by only 0.0°', or calibrated both sensors with one's data."""
@@ -254,13 +264,7 @@ def _check_distinct(pairs, units) -> None:
         if paths is None:
             continue
         a, b = paths
-        same = a == b
-        if not same:
-            try:
-                same = os.path.samefile(a, b)
-            except OSError:
-                same = False     # a missing file is reported by its reader
-        if same and units[0] == units[1]:
+        if _same_file(a, b) and units[0] == units[1]:
             names = " and ".join(option) if isinstance(option, tuple) else option
             which = "" if units[0] is None else f" (unit {units[0]})"
             raise KinefuseError(f"{names}: {a}{which} given for both segments; each segment has its own "
@@ -277,13 +281,7 @@ def _load_unit_cals(paths, segments):
     if paths is None:
         return None, []
     a, b = paths
-    same = a == b
-    if not same:
-        try:
-            same = os.path.samefile(a, b)
-        except OSError:
-            same = False     # a missing file is reported by unitfile.load
-    if same:
+    if _same_file(a, b):
         raise KinefuseError(f"--unit-cal: {a} given for both segments ({segments[0]} and "
                             f"{segments[1]}); each sensor has its own calibration file")
     units = (unitfile.load(a), unitfile.load(b))
