@@ -53,7 +53,8 @@ def summarize(df) -> dict:
         host = [h for h in ds.host_ns.values() if h is not None and h.size]
         if host:
             s["host_span_s"] = (max(int(h.max()) for h in host) - min(int(h.min()) for h in host)) / 1e9
-        from kinefuse.host.link.stats import stream_crc_extra_mismatches
+        from kinefuse.host.link.stats import statustexts, stream_crc_extra_mismatches
+        s["statustexts"] = statustexts(ds, df.start_monotonic_ns)   # what the units said (STATUSTEXT)
         mm = stream_crc_extra_mismatches(df, sid)
         if mm is not None:
             s["crc_extra_mismatch"] = mm
@@ -151,7 +152,10 @@ def run(args) -> int:
         print_table(t, con)
         for e in s["events"]:
             con.print(f"  {e.get('type')}: {e.get('text') or e.get('event')} {e.get('error') or ''}".rstrip())
-        from kinefuse.host.link.stats import crc_extra_text
+        from kinefuse.host.link.stats import crc_extra_text, statustext_line
+        for e in s["statustexts"]:   # the unit's text is not rich markup
+            con.print("  " + statustext_line(e), style="yellow" if e["severity"] <= 4 else None,
+                      markup=False, soft_wrap=True)
         for m in s.get("crc_extra_mismatch") or ():
             con.print(f"[yellow]warning:[/] {crc_extra_text(m)}", soft_wrap=True)
     if args.show:
@@ -163,18 +167,22 @@ def run(args) -> int:
 
 
 def _first(df, n: int) -> dict:
+    from kinefuse.host.link.export import bit_names, bitmask_fields
     from kinefuse.host.link.spec import kinefuse_dialect
     d = kinefuse_dialect()
     out = {}
     for sid, ds in sorted(df.streams.items()):
         for mid, arr in sorted(ds.arrays.items()):
             rows = []
+            masks = bitmask_fields(d.get(mid).name)
             for r in arr[:n]:
                 row = {"stream": sid}
                 for name in arr.dtype.names:
                     v = r[name]
                     row[name] = v.tolist() if isinstance(v, np.ndarray) else (
                         v.decode("utf-8", "replace").rstrip("\0") if isinstance(v, bytes) else v.item())
+                    if name in masks:   # the status bits named (e.g. VALID|NUMERIC_RESET)
+                        row[name + "_bits"] = bit_names(masks[name], row[name])
                 rows.append(row)
             out.setdefault(d.get(mid).name, []).extend(rows)
     return out

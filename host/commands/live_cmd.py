@@ -29,11 +29,12 @@ import numpy as np
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.signing import add_key_args, key_from_args
 
-MSG_RAW, MSG_ORI, MSG_STATUS = 52500, 52501, 52504
+MSG_RAW, MSG_ORI, MSG_STATUS, MSG_STATUSTEXT = 52500, 52501, 52504, 253
 RATE_WINDOW_US = 2_000_000
 EARTH_FRAMES = {0: "unknown frame", 1: "ENU", 2: "NED"}
+# KF_UNIT_STATUS_FLAGS; "mag": MAG_PRESENT (a magnetometer reading arrived since boot)
 STATUS_FLAGS = ((1, "streaming"), (2, "mag"), (4, "SENSOR FAULT"), (8, "HIL"), (16, "LOW BATTERY"),
-                (32, "calibrated"), (64, "TX OVERFLOW"))
+                (32, "calibrated"), (64, "TX OVERFLOW"), (128, "STORAGE ERROR"))
 
 
 @dataclass
@@ -162,9 +163,19 @@ class LiveMonitor:
         self.unit = unit
         self.units: dict = {}
         self.started = time.monotonic()
+        self.texts: list[str] = []      # the units' STATUSTEXTs, as lines
+        self.on_text = None             # on_text(line) as each arrives (run prints it)
 
     def feed(self, sid: int, frames) -> None:
         for _, f in frames:
+            if f.msgid == MSG_STATUSTEXT and f.sysid != 255 and (self.unit is None or f.sysid == self.unit):
+                # e.g. "parameter storage error: settings may be lost": was never shown
+                from kinefuse.host.link.stats import statustext_text
+                line = f"unit {f.sysid} ({self.sessions[sid].conn.url}) says {statustext_text(f.msg.severity, f.msg.text)}"
+                self.texts.append(line)
+                if self.on_text is not None:
+                    self.on_text(line)
+                continue
             if f.msgid not in (MSG_RAW, MSG_ORI, MSG_STATUS) or (self.unit is not None and f.sysid != self.unit):
                 continue
             u = self.units.get((sid, f.sysid))
@@ -323,9 +334,11 @@ def run(args) -> int:
             from rich.console import Console
             from rich.live import Live
             with Live(mon.table(), console=Console(), refresh_per_second=4, transient=False) as live:
+                mon.on_text = lambda line: live.console.print(line, style="yellow", markup=False, soft_wrap=True)
                 interrupted = _loop(mon, sessions, args.seconds, 0.25, lambda: live.update(mon.table()), stop)
                 live.update(mon.table())
         else:
+            mon.on_text = lambda line: print(line, flush=True)
             def emit():
                 print("\n".join(mon.lines()), flush=True)
             interrupted = _loop(mon, sessions, args.seconds, args.interval, emit, stop)

@@ -151,6 +151,9 @@ def run(args) -> int:
             for name, value in sets:
                 try:
                     result["set"][name] = client.set(name, value)
+                    if name in client.granted:
+                        result.setdefault("granted", {})[name] = {"asked": client.granted[name][0],
+                                                                   "applied": client.granted[name][1]}
                 except ParamError as exc:
                     if exc.code == PERMISSION_DENIED:
                         hint = ("the key given is not the unit's" if key is not None
@@ -174,7 +177,12 @@ def run(args) -> int:
     con = console()
     for key in ("set", "get", "params"):
         for name, value in result.get(key, {}).items():
-            con.print(f"{name} = {value}" + ("  (written)" if key == "set" else "")
+            g = result.get("granted", {}).get(name) if key == "set" else None
+            note = "  (written)" if key == "set" else ""
+            if g is not None:   # applied with the sensor's rate: not a refusal
+                note = (f"  (written: {g['asked']} asked, the unit's sensor delivers {g['applied']} Hz instead, "
+                        f"now its {name})")
+            con.print(f"{name} = {value}" + note
                       + (_describe_text(info.get(name)) if info is not None else ""), markup=False,
                       soft_wrap=True)
     return 0

@@ -67,6 +67,14 @@ def run(args) -> int:
     if threading.current_thread() is threading.main_thread():
         prev = signal.signal(signal.SIGTERM, lambda *_: rec.stop())
     shown_warnings = len(rec.warnings)
+    shown_texts = 0
+
+    def unit_texts(printer, summary):
+        """The units' STATUSTEXTs (a storage error...) as they come; not rich markup."""
+        nonlocal shown_texts
+        for text in summary["unit_texts"][shown_texts:]:
+            printer.print(f"unit says: {text}", style="yellow", markup=False, soft_wrap=True)
+        shown_texts = len(summary["unit_texts"])
     try:
         from rich.live import Live
         with Live(_table(rec.summary(), args.duration), console=con, refresh_per_second=4,
@@ -77,6 +85,7 @@ def run(args) -> int:
                 for w in summary["warnings"][shown_warnings:]:
                     live.console.print(f"[yellow]warning:[/] {w}")
                 shown_warnings = len(summary["warnings"])
+                unit_texts(live.console, summary)
             failed = None
             try:
                 summary = rec.run(args.duration, on_tick=tick)
@@ -89,6 +98,7 @@ def run(args) -> int:
             live.update(_table(summary, args.duration))
             for w in summary["warnings"][shown_warnings:]:
                 live.console.print(f"[yellow]warning:[/] {w}")
+            unit_texts(live.console, summary)
     finally:
         if prev is not None:
             signal.signal(signal.SIGTERM, prev)

@@ -83,7 +83,14 @@ def run(args) -> int:
                           f"({r['count']} replies); one-way estimate {lat['one_way_estimate_ms']:.2f} ms")
             rep = u.get("unit_reported")
             if rep:
-                con.print("  unit reports: " + ", ".join(f"{k} {v}" for k, v in rep.items() if v is not None))
+                # an extension counter an older firmware does not send: n/a, not a claimed 0
+                con.print("  unit reports: " + ", ".join(
+                    f"{k} {'n/a' if v is None else v}" for k, v in rep.items()
+                    if v is not None or k in stats.STATUS_EXTENSIONS), soft_wrap=True)
+        for e in s.get("statustexts", ()):
+            # the unit's text is not rich markup; WARNING or worse in yellow
+            con.print("  " + stats.statustext_line(e), style="yellow" if e["severity"] <= 4 else None,
+                      soft_wrap=True, markup=False)
     if result["warnings"]:
         con.print()
     for w in result["warnings"]:

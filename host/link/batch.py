@@ -29,7 +29,10 @@ from kinefuse.host.link.decoder import Counters
 from kinefuse.host.link.spec import Dialect, MessageSpec, kinefuse_dialect
 
 # header columns start with "_": MAVLink field names never do (PING and MISSION_* have a "seq")
-HEADER_FIELDS = [("_offset", "<i8"), ("_seq", "u1"), ("_sysid", "u1"), ("_compid", "u1"), ("_signed", "?")]
+# _len: the payload length as received (tells a status of an older firmware, without the
+# extension fields that then decode as 0, from one that sent them)
+HEADER_FIELDS = [("_offset", "<i8"), ("_seq", "u1"), ("_sysid", "u1"), ("_compid", "u1"), ("_signed", "?"),
+                 ("_len", "u1")]
 
 
 def _windows(arr: np.ndarray, width: int) -> np.ndarray:
@@ -38,7 +41,7 @@ def _windows(arr: np.ndarray, width: int) -> np.ndarray:
 
 
 def batch_dtype(spec: MessageSpec) -> np.dtype:
-    """Header columns (_offset, _seq, _sysid, _compid, _signed) + the payload fields (wire order)."""
+    """Header columns (_offset, _seq, _sysid, _compid, _signed, _len) + the payload fields (wire order)."""
     return np.dtype(HEADER_FIELDS + [(name, spec.dtype.fields[name][0]) for name in spec.fields])
 
 
@@ -67,7 +70,8 @@ def _records(arr, spec: MessageSpec, pos, plen, signed) -> np.ndarray:
     payload = np.zeros((pos.size, spec.length), dtype=np.uint8)
     for length in np.unique(plen):
         idx = np.flatnonzero(plen == length)
-        payload[idx, :length] = _windows(arr, int(length))[pos[idx] + 10]  # zero-pads truncated payloads
+        k = min(int(length), spec.length)   # zero-pads truncated payloads, truncates longer ones (MAVLink 2)
+        payload[idx, :k] = _windows(arr, k)[pos[idx] + 10]
     fields = payload.view(spec.dtype).reshape(-1)
     out = np.empty(pos.size, dtype=batch_dtype(spec))
     out["_offset"] = pos
@@ -75,6 +79,7 @@ def _records(arr, spec: MessageSpec, pos, plen, signed) -> np.ndarray:
     out["_sysid"] = arr[pos + 5]
     out["_compid"] = arr[pos + 6]
     out["_signed"] = signed
+    out["_len"] = plen
     for name in spec.fields:
         out[name] = fields[name]
     return out
@@ -114,7 +119,7 @@ def decode_batch(data, message, dialect: Dialect | None = None, key: bytes | Non
     plen = arr[pos + 1].astype(np.int64)
     signed = arr[pos + 2] == 1
     stop = pos + 12 + plen + np.where(signed, 13, 0)
-    sel = (plen >= 1) & (plen <= spec.length) & (stop <= n)
+    sel = (plen >= 1) & (stop <= n)   # longer payloads: a newer firmware's extensions, truncated
     pos, plen, signed, stop = pos[sel], plen[sel], signed[sel], stop[sel]
     info["candidates"] = int(pos.size)
     good = _crc_ok(arr, pos, plen, spec.crc_extra)
@@ -161,15 +166,13 @@ def decode_all(data, dialect: Dialect | None = None, key: bytes | None = None,
     plen = arr[pos + 1].astype(np.int64)
     stop = pos + 12 + plen + np.where(inc == 1, 13, 0)
 
-    # classify every candidate: 0 ok, 1 bad incompat, 2 unknown id, 3 bad length, 4 incomplete, 5 crc
+    # classify every candidate: 0 ok, 1 bad incompat, 2 unknown id, 3 empty payload, 4 incomplete, 5 crc
+    # (a payload longer than the message's is accepted and truncated, as in the streaming decoder)
     kind = np.full(pos.size, 5, dtype=np.int8)
     kind[(inc & 0xFE) != 0] = 1
     known = np.isin(msgid, np.fromiter(dialect.ids, np.int64)) & (kind == 5)
     kind[(kind == 5) & ~known] = 2
-    maxlen = np.zeros(pos.size, np.int64)
-    for mid in np.unique(msgid[known]):
-        maxlen[known & (msgid == mid)] = dialect.get(int(mid)).length
-    kind[known & ((plen == 0) | (plen > maxlen))] = 3
+    kind[known & (plen == 0)] = 3
     kind[(kind == 5) & (stop > n)] = 4
     check = np.flatnonzero(kind == 5)
     for mid in np.unique(msgid[check]):

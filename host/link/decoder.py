@@ -9,12 +9,14 @@
 
 Rules (see /work/shared/notes/mavlink.md for why):
 - a candidate is a 0xFD found with ``bytes.find``; when it fails (unknown incompat flag, unknown
-  message id, impossible length, bad CRC) the search resumes ONE byte later, never after the
+  message id, empty payload, bad CRC) the search resumes ONE byte later, never after the
   claimed length (pymavlink's way, which loses the good frames a stray 0xFD+length covers);
 - after a good frame the search continues after it;
 - the CRC uses the dialect's CRC_EXTRA (binascii.crc_hqx on bit-reversed bytes: C speed);
 - signed frames (incompat flag 0x01, 13-byte signature) are accepted; with ``key`` their
   SHA-256 signature is verified, and ``accept_unsigned=False`` drops unsigned frames;
+- a payload longer than the message's (a newer firmware's extension fields) is accepted and
+  truncated to the known fields, as MAVLink 2 says; a shorter one is zero-padded;
 - memory is bounded: at most one incomplete frame (<= 280 bytes) is kept between calls;
 - any chunking of the byte stream yields the same frames.
 """
@@ -45,7 +47,7 @@ class Counters:
     bytes_skipped: int = 0       # bytes not part of an accepted frame
     unknown_msgid: int = 0       # candidates whose message id is not in the dialect
     bad_incompat: int = 0        # candidates with incompat flags other than 0x01
-    bad_length: int = 0          # candidates longer than the message (or empty)
+    bad_length: int = 0          # candidates with an empty payload (longer ones are truncated, MAVLink 2)
     signature_failures: int = 0  # signed frames whose signature did not verify (with a key)
     unsigned_rejected: int = 0   # unsigned frames dropped because accept_unsigned=False
     bytes_in: int = 0
@@ -167,7 +169,7 @@ class StreamDecoder:
                     continue
                 if only is not None and msgid not in only:
                     continue
-            values = unpack_from(buf, i + 10) if plen == full else unpack(buf[i + 10:i + 10 + plen] + bytes(full - plen))
+            values = unpack_from(buf, i + 10) if plen >= full else unpack(buf[i + 10:i + 10 + plen] + bytes(full - plen))
             append(new(Frame, (msgid, sysid, compid, seq, new(record, values) if conv is None else conv(values),
                                inc == 1)))
         c = self.counters
@@ -228,7 +230,10 @@ class StreamDecoder:
                     i += 1
                     continue
             extra, full, unpack_from, unpack, record, conv = entry
-            if plen > full or plen == 0:
+            # a longer payload is a newer firmware's extension fields: MAVLink 2 (pymavlink, the C
+            # library) keeps the known fields (CRC over the payload as received); dropping it lost
+            # every frame of such a message
+            if plen == 0:
                 bad_len += 1
                 skipped += 1
                 i += 1
@@ -263,7 +268,7 @@ class StreamDecoder:
                 ok += 1
                 i = stop
                 continue
-            if plen == full:
+            if plen >= full:   # longer: the known fields, the newer extensions ignored
                 values = unpack_from(buf, i + 10)
             else:
                 values = unpack(buf[i + 10:i + 10 + plen] + bytes(full - plen))

@@ -261,6 +261,33 @@ _FRAMES = {   # the frames of the vectors and quaternions (kinefuse.xml), stated
 SEGMENTS_SHOWN = 10   # clock fits named in a CSV's unit line
 
 
+def bitmask_fields(name: str) -> dict:
+    """{field: {bit value: short name}} of a message's bitmask fields, from the dialect (so a
+    bit added to kinefuse.xml, e.g. KF_JOINT_ANGLE_STATUS_NUMERIC_RESET, is named too)."""
+    from kinefuse.host.link.dialect import module
+    mod = module()
+    cls = next((c for c in mod.mavlink_map.values() if c.msgname == name), None)
+    if cls is None:
+        return {}
+    out = {}
+    for field, display in getattr(cls, "fielddisplays_by_name", {}).items():
+        enum = cls.fieldenums_by_name.get(field)
+        if display != "bitmask" or enum not in mod.enums:
+            continue
+        out[field] = {int(v): e.name[len(enum) + 1:] if e.name.startswith(enum + "_") else e.name
+                      for v, e in sorted(mod.enums[enum].items()) if not e.name.endswith("_ENUM_END")}
+    return out
+
+
+def bit_names(bits: dict, value: int) -> str:
+    """"VALID|NUMERIC_RESET" of a bitmask value (unknown bits as numbers); "-" for none."""
+    value = int(value)
+    words = [n for b, n in bits.items() if value & b]
+    rest = value & ~sum(bits)
+    words += [str(1 << k) for k in range(rest.bit_length()) if rest >> k & 1]
+    return "|".join(words) or "-"
+
+
 def _comments(df: DecodedFile, name: str, pairs, clock) -> list[str]:
     """The ``#`` lines of a CSV: recording, unit(s), time columns and clock fits."""
     start = df.header.get("start_utc")      # none for a raw capture or a tlog (was "started None")
@@ -288,6 +315,8 @@ def _comments(df: DecodedFile, name: str, pairs, clock) -> list[str]:
         out.append(line)
     if name in _FRAMES:
         out.append(_FRAMES[name])
+    for field, bits in bitmask_fields(name).items():   # what the bits of status/flags columns mean
+        out.append(f"{field}: bitmask: " + ", ".join(f"{b} {n}" for b, n in bits.items()))
     if clock is not None and name.startswith("KF_"):
         out.append("t_s: unit clock, s since boot; host_time_s: host receive time, s since the recording "
                    "started; host_unix_s: the same as UNIX time; host_fit_s: t_s on the host clock "

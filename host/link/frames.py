@@ -2,7 +2,7 @@
 
     streams = decode_file("walk.kfr")
     s = streams[0]
-    raw = s.arrays[52500]          # structured array: _offset, _seq, _sysid, _compid, _signed, fields...
+    raw = s.arrays[52500]          # structured array: _offset, _seq, _sysid, _compid, _signed, _len, fields...
     t = s.host_ns[52500]           # host monotonic ns of each frame (read that completed it)
 
 Decoding uses :func:`kinefuse.host.link.batch.decode_all`, which yields exactly the frames of the

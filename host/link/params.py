@@ -28,6 +28,9 @@ UNIT_COMPONENT = 200
 
 
 PERMISSION_DENIED = 3
+# a unit whose sensor grants another rate than KF_RATE_HZ asks makes the granted rate KF_RATE_HZ
+# and answers it (firmware/app/README.md, porting): applied, not refused
+GRANTED_PARAMS = ("KF_RATE_HZ",)
 
 
 class ParamError(KinefuseError):
@@ -88,6 +91,8 @@ class ParamClient:
         self.sys, self.comp = target_system, target_component
         self.timeout, self.retries = timeout, retries
         self.types: dict[str, int] = {}
+        #: name -> (value asked, value the unit applied instead) of GRANTED_PARAMS writes
+        self.granted: dict[str, tuple] = {}
 
     def _from_unit(self, f) -> bool:
         return f.sysid == self.sys and (self.comp == 0 or f.compid == self.comp)
@@ -143,7 +148,11 @@ class ParamClient:
         raise ParamError(f"no answer for parameter {name} from system {self.sys}")
 
     def set(self, name: str, value, ptype: int | None = None):
-        """Write a parameter; returns the value the unit echoes.  Raises ParamError if rejected."""
+        """Write a parameter; returns the value the unit echoes.  Raises ParamError if rejected.
+
+        A GRANTED_PARAMS write answered with another value was applied with the value the
+        hardware gives (KF_RATE_HZ: the sensor's granted rate): that value is returned and
+        ``granted[name]`` says so (it was reported as "rejected: the unit kept 500")."""
         if len(name.encode()) > 16:
             raise ParamError(f"parameter name {name!r} is longer than 16 characters")
         if ptype is None:
@@ -153,6 +162,7 @@ class ParamClient:
                 ptype = self.types[name]
         wire = encode_value(value, ptype)
         want = decode_value(wire, ptype)
+        self.granted.pop(name, None)
         kept = None
         for _ in range(self.retries):
             self.s.send("PARAM_SET", target_system=self.sys, target_component=self.comp,
@@ -174,6 +184,9 @@ class ParamClient:
             while self.s.wait_for(lambda f: f.msgid == 22 and self._from_unit(f)
                                   and f.msg.param_id == name, timeout=min(self.timeout, 0.3)):
                 pass
+        if kept is not None and name in GRANTED_PARAMS:
+            self.granted[name] = (want, kept)
+            return kept
         if kept is not None:
             raise ParamError(f"{name} = {value!r} rejected: the unit kept {kept!r}")
         raise ParamError(f"no answer to PARAM_SET {name} from system {self.sys}")

@@ -19,7 +19,7 @@ from kinefuse.host.link.dialect import DIALECT_HASH
 from kinefuse.host.link.recording import RecordingWriter, make_header
 from kinefuse.host.link.session import Session
 
-MSG_RAW, MSG_ORI, MSG_STATUS = 52500, 52501, 52504
+MSG_RAW, MSG_ORI, MSG_STATUS, MSG_STATUSTEXT = 52500, 52501, 52504, 253
 CMD_STREAM, CMD_SET_INTERVAL = 52500, 511
 
 
@@ -43,6 +43,13 @@ class StreamState:
     warned_garbage: bool = False
     warnings: list = field(default_factory=list)
     acks: list = field(default_factory=list)      # (sysid, command, result) of COMMAND_ACKs seen
+    recent: bytearray = field(default_factory=bytearray)   # the last RECENT_BYTES..2x received
+    crc_checked_at: int = 0                       # CRC errors when last checked for a dialect mismatch
+    warned_dialect: set = field(default_factory=set)       # messages named as CRC_EXTRA mismatches
+
+
+RECENT_BYTES = 1 << 16   # kept to tell CRC_EXTRA mismatches (another dialect) from a damaged link
+DIALECT_CHECK_CRC = 16    # CRC errors (then each doubling) that trigger that check
 
 
 class Recorder:
@@ -69,6 +76,7 @@ class Recorder:
         self.ack_timeout = ack_timeout
         self.chunk_interval_ns = int(chunk_interval * 1e9)
         self.warnings: list[str] = []
+        self.unit_texts: list[str] = []   # the units' STATUSTEXTs, as lines (also in the file's bytes)
         self._stop = threading.Event()
         conns = []
         try:
@@ -110,6 +118,9 @@ class Recorder:
                     st.first_pending_ns = t_ns
                 st.pending.append((t_ns, data))
                 st.pending_bytes += len(data)
+                st.recent += data
+                if len(st.recent) > 2 * RECENT_BYTES:
+                    del st.recent[:-RECENT_BYTES]
             else:
                 self.writer.tx(st.id, data, t_ns)
         return tap
@@ -127,6 +138,9 @@ class Recorder:
             unit = st.units.setdefault(f.sysid, {"sysid": f.sysid, "first_t_ns": t_ns})
             if f.msgid == 77:
                 st.acks.append((f.sysid, int(f.msg.command), int(f.msg.result)))
+            if f.msgid == MSG_STATUSTEXT:   # e.g. "parameter storage error": the user must see it
+                from kinefuse.host.link.stats import statustext_text
+                self.unit_texts.append(f"unit {f.sysid} on {st.url}: {statustext_text(f.msg.severity, f.msg.text)}")
             if f.msgid == MSG_STATUS:
                 m = f.msg
                 fw = firmware_version_text(m.firmware_version)
@@ -140,15 +154,32 @@ class Recorder:
                         self._warn(st, f"unit {f.sysid} on {st.url} was built with dialect hash "
                                        f"0x{m.dialect_hash:08X}, host has 0x{DIALECT_HASH():08X}: update one of them")
         c = st.session.decoder.counters
+        if c.crc_errors >= max(DIALECT_CHECK_CRC, 2 * st.crc_checked_at):
+            # frames that check with another CRC_EXTRA: a unit of another dialect version, not
+            # a damaged link (the warnings below said "wrong baud rate?" for those too)
+            st.crc_checked_at = c.crc_errors
+            self._dialect_mismatch(st)
         if not st.warned_baud and (c.bytes_in >= 4096 or (final and c.bytes_in)) and c.frames_ok == 0:
             st.warned_baud = True
-            self._warn(st, f"{st.url}: {c.bytes_in} bytes but no valid MAVLink 2 frame: wrong baud rate "
-                           f"(--baud) or not a kinefuse unit?")
+            if not self._dialect_mismatch(st):
+                self._warn(st, f"{st.url}: {c.bytes_in} bytes but no valid MAVLink 2 frame: wrong baud rate "
+                               f"(--baud) or not a kinefuse unit?")
         if not st.warned_garbage and c.bytes_in >= 65536 and c.frames_ok \
                 and c.bytes_skipped > 0.5 * c.bytes_in:
             st.warned_garbage = True
-            self._warn(st, f"{st.url}: {c.bytes_skipped} of {c.bytes_in} bytes are not MAVLink 2 frames "
-                           f"({c.crc_errors} CRC errors): a damaged link or a wrong baud rate?")
+            if not self._dialect_mismatch(st):
+                self._warn(st, f"{st.url}: {c.bytes_skipped} of {c.bytes_in} bytes are not MAVLink 2 frames "
+                               f"({c.crc_errors} CRC errors): a damaged link or a wrong baud rate?")
+
+    def _dialect_mismatch(self, st: StreamState) -> bool:
+        """Warn (once per message) of CRC_EXTRA mismatches in the recent bytes; True if any."""
+        from kinefuse.host.link.stats import crc_extra_mismatches, crc_extra_text
+        mm = crc_extra_mismatches(bytes(st.recent[-RECENT_BYTES:]))
+        for m in mm:
+            if m["message"] not in st.warned_dialect:
+                st.warned_dialect.add(m["message"])
+                self._warn(st, f"{st.url}: {crc_extra_text(m)}")
+        return bool(mm) or bool(st.warned_dialect)
 
     def _warn(self, st: StreamState, text: str) -> None:
         st.warnings.append(text)
@@ -311,4 +342,5 @@ class Recorder:
                 "units": [dict(u) for u in st.units.values()], "closed": st.closed, "error": st.error,
             })
         return {"file": str(self.writer.path), "elapsed_s": round(elapsed, 3), "file_bytes": self.writer.bytes_written,
-                "streams": streams, "warnings": list(self.warnings), "finished": getattr(self, "_closed", False)}
+                "streams": streams, "warnings": list(self.warnings), "unit_texts": list(self.unit_texts),
+                "finished": getattr(self, "_closed", False)}

@@ -1,7 +1,7 @@
 /* MAVLink 2 frame scanner for the host decoder (kinefuse.host.link.decoder), loaded with cffi.
  *
  * Finds every frame that passes its CRC, with the rules of the pure-Python decoder: a failed
- * candidate (unknown incompat flag, unknown id, impossible length, bad CRC) resumes the search
+ * candidate (unknown incompat flag, unknown id, empty payload, bad CRC) resumes the search
  * ONE byte later; a good frame continues the search after it.  Payload unpacking and signature
  * checks stay in Python.  C99, no allocation, no globals. */
 #include <stdint.h>
@@ -10,7 +10,7 @@
 #define KF_MAGIC 0xFDu
 #define KF_EMPTY 0xFFFFFFFFu
 
-/* counters[]: 0 CRC errors, 1 unknown ids, 2 bad incompat flags, 3 bad lengths, 4 bytes skipped */
+/* counters[]: 0 CRC errors, 1 unknown ids, 2 bad incompat flags, 3 empty payloads, 4 bytes skipped */
 enum { C_CRC = 0, C_UNKNOWN = 1, C_INCOMPAT = 2, C_LENGTH = 3, C_SKIPPED = 4 };
 
 static uint16_t crc_byte(uint16_t crc, uint8_t b)
@@ -21,7 +21,8 @@ static uint16_t crc_byte(uint16_t crc, uint8_t b)
 }
 
 /* keys/vals: open-addressing table (size mask + 1, a power of two) of message ids;
-   vals = CRC_EXTRA | payload length << 8.  starts must hold n / 13 + 1 entries (the most
+   vals = CRC_EXTRA | payload length << 8 (the length is not needed: any non-empty payload
+   is accepted, see below).  starts must hold n / 13 + 1 entries (the most
    frames n bytes can contain).  *keep = first byte not decided (an incomplete candidate when
    final == 0), else n.  Returns the number of frames written to starts. */
 int32_t kf_scan(const uint8_t *buf, int32_t n, int32_t final,
@@ -54,7 +55,7 @@ int32_t kf_scan(const uint8_t *buf, int32_t n, int32_t final,
             const uint8_t inc = buf[i + 2];
             uint32_t msgid, h;
             int32_t end, stop, k;
-            uint16_t crc, extra, full;
+            uint16_t crc, extra;
             if (inc & 0xFEu) {
                 counters[C_INCOMPAT]++;
                 counters[C_SKIPPED]++;
@@ -73,8 +74,9 @@ int32_t kf_scan(const uint8_t *buf, int32_t n, int32_t final,
                 continue;
             }
             extra = (uint16_t)(vals[h] & 0xFFu);
-            full = (uint16_t)(vals[h] >> 8);
-            if (plen == 0u || plen > full) {
+            /* a longer payload (a newer firmware's extension fields) is accepted: MAVLink 2
+               truncates it to the known fields, the CRC covers it as received */
+            if (plen == 0u) {
                 counters[C_LENGTH]++;
                 counters[C_SKIPPED]++;
                 i++;

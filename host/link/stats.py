@@ -24,6 +24,53 @@ from kinefuse.host.link.frames import DecodedFile, DecodedStream
 from kinefuse.host.link.spec import kinefuse_dialect
 
 MSG_RAW, MSG_ORI, MSG_STATUS, MSG_TIMESYNC = 52500, 52501, 52504, 111
+MSG_STATUSTEXT = 253
+SEVERITY_NAMES = {0: "EMERGENCY", 1: "ALERT", 2: "CRITICAL", 3: "ERROR", 4: "WARNING", 5: "NOTICE", 6: "INFO",
+                  7: "DEBUG"}
+# KF_UNIT_STATUS extension fields (MAVLink 2): an older firmware's shorter frames decode them as 0
+STATUS_EXTENSIONS = ("numeric_resets", "hil_invalid", "rejected_samples2")
+
+
+def severity_name(severity: int) -> str:
+    return SEVERITY_NAMES.get(int(severity), f"severity {int(severity)}")
+
+
+def statustext_text(severity: int, text) -> str:
+    """"ERROR: parameter storage error: ..." of a STATUSTEXT (text as str or NUL-padded bytes)."""
+    if isinstance(text, bytes):
+        text = text.decode("utf-8", "replace")
+    return f"{severity_name(severity)}: {text.rstrip(chr(0)).strip()}"
+
+
+def statustexts(ds: DecodedStream, start_ns: int | None = None) -> list[dict]:
+    """The STATUSTEXTs of a decoded stream, the same (unit, severity, text) once with its count:
+    [{"sysid", "severity", "severity_name", "text", "count", "first_s", "last_s"}] in order of
+    first appearance; first_s/last_s: host seconds from ``start_ns`` (None without host times)."""
+    arr = ds.arrays.get(MSG_STATUSTEXT)
+    if arr is None or not arr.size:
+        return []
+    host = ds.host_ns.get(MSG_STATUSTEXT)
+    out: dict = {}
+    for k, r in enumerate(arr):
+        text = bytes(r["text"]).decode("utf-8", "replace").rstrip("\0").strip()
+        key = (int(r["_sysid"]), int(r["severity"]), text)
+        t = None if host is None or start_ns is None else (int(host[k]) - start_ns) / 1e9
+        e = out.get(key)
+        if e is None:
+            out[key] = {"sysid": key[0], "severity": key[1], "severity_name": severity_name(key[1]), "text": text,
+                        "count": 1, "first_s": t, "last_s": t}
+        else:
+            e["count"] += 1
+            e["last_s"] = t
+    return list(out.values())
+
+
+def statustext_line(e: dict) -> str:
+    """One line of a :func:`statustexts` entry."""
+    when = "" if e["first_s"] is None else (
+        f" at {e['first_s']:.1f} s" if e["count"] == 1 else f", {e['first_s']:.1f} s .. {e['last_s']:.1f} s")
+    times = "" if e["count"] == 1 else f" ({e['count']} times{when})"
+    return f"unit {e['sysid']} said {e['severity_name']}: {e['text']}" + (times or when)
 KF_MESSAGES = (52500, 52501, 52502, 52503, 52504)
 REQUESTED_FIELD = {MSG_RAW: "raw_rate_requested", MSG_ORI: "orientation_rate_requested"}
 
@@ -401,6 +448,13 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
             out["unit_reported"] = {k: int(status[k]) for k in
                                     ("samples", "samples_dropped", "frames_dropped", "rejected_samples",
                                      "crc_errors", "unknown_messages", "param_rejects")}
+            # the extension counters: known when the unit speaks this dialect or any of its
+            # statuses carried them (an older firmware's 83-byte frames decode them as 0; a newer
+            # one's may be as short when they are 0: MAVLink 2 drops trailing zeros)
+            for k in STATUS_EXTENSIONS:
+                known = out["dialect_match"] or ("_len" in st.dtype.names and
+                                                 int(st["_len"].max()) > d.get(MSG_STATUS).dtype.fields[k][1])
+                out["unit_reported"][k] = int(status[k]) if known else None
             out["unit_reported"]["battery_voltage_V"] = (None if int(status["battery_voltage"]) == 0xFFFF
                                                          else int(status["battery_voltage"]) / 1000)
     requested_header = header_stream.get("requested_rates_hz", {}) if header_stream else {}
@@ -506,7 +560,7 @@ def crc_extra_mismatches(rx: bytes, check: int = 64, accepted=None) -> list[dict
         p = pos[msgid == mid]
         plen = arr[p + 1].astype(np.int64)
         stop = p + 12 + plen + np.where(arr[p + 2] == 1, 13, 0)
-        sel = (plen >= 1) & (plen <= spec.length) & (stop <= n)
+        sel = (plen >= 1) & (stop <= n)   # longer payloads are decoded (truncated) too
         p, plen = p[sel], plen[sel]
         if not p.size:
             continue
@@ -568,6 +622,7 @@ def compute(df: DecodedFile) -> dict:
         s["units"] = [u for u in units if any(k in KF_NAMES for k in u["messages"]) or "firmware_version" in u] \
             or units
         s["other_systems"] = [u["sysid"] for u in units if u not in s["units"]]
+        s["statustexts"] = statustexts(ds, start)
         mm = stream_crc_extra_mismatches(df, sid)
         if mm is not None:
             s["crc_extra_mismatch"] = mm

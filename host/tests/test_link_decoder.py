@@ -362,3 +362,41 @@ def test_any_bytes_any_chunking_same_result(data, cuts, native):
     assert [(f.msgid, f.seq, f.msg) for f in got] == [(f.msgid, f.seq, f.msg) for f in whole]
     assert dec.counters == c_whole
     assert decode_all(data).counters == c_whole
+
+
+@pytest.mark.parametrize("native", [False, True])
+def test_longer_payload_of_a_newer_firmware_is_truncated_not_dropped(native):
+    """MAVLink 2: a payload longer than the message's (extension fields this dialect does not
+    know yet) keeps its known fields; the CRC is over the payload as received.  It was dropped
+    as bad_length, so a newer unit's every status frame was lost."""
+    if native and native_scanner.load() is None:
+        pytest.skip("no C compiler / cffi for the scanner")
+    spec = D["KF_RAW_SAMPLE"]
+    full = _sample(7)
+    payload = full[10:-2]
+    payload = payload + bytes(spec.length - len(payload))          # all known fields
+    longer = payload + b"\x11\x22\x33\x44\x55"                    # + 5 bytes of unknown extensions
+    frame = frame_from_payload(spec, longer, 4, 200, 9)
+    assert frame[1] == spec.length + 5
+    data = _sample(6) + frame + _sample(8)
+    got, c = decode_bytes(data, native=native)
+    assert [f.msg.sample_counter for f in got] == [6, 7, 8]
+    ref = decode_bytes(full, native=False)[0][0].msg
+    assert got[1].msg == ref and got[1].seq == 9
+    assert c.bad_length == 0 and c.crc_errors == 0 and c.bytes_skipped == 0
+    # chunked, batch decoders: the same frames and counters
+    dec = StreamDecoder(native=native)
+    chunked = [f for k in range(0, len(data), 7) for f in dec.feed(data[k:k + 7])] + dec.flush()
+    assert [f.msg for f in chunked] == [f.msg for f in got] and dec.counters == c
+    res = decode_all(data)
+    assert res.counters == c
+    arr = res.arrays[spec.msgid]
+    assert list(arr["sample_counter"]) == [6, 7, 8] and arr["_len"][1] == spec.length + 5
+    one, info = decode_batch(data, "KF_RAW_SAMPLE")
+    assert list(one["sample_counter"]) == [6, 7, 8] and info["crc_errors"] == 0
+    # a damaged longer frame still fails its CRC
+    bad = bytearray(frame)
+    bad[-4] ^= 0xFF
+    got, c = decode_bytes(bytes(bad), native=native)
+    assert got == [] and c.crc_errors == 1
+

@@ -145,3 +145,58 @@ def test_rate_after_a_requested_rate_change(tmp_path):
     assert m["requested_hz"] == 400.0 and m["requested_changes"] == 1 and m["rate_from_device_s"] == 10.0
     assert m["rate_hz"] == pytest.approx(400.0, rel=1e-9) and m["rate_ratio"] == pytest.approx(1.0, rel=1e-9)
     assert m["count"] == 1000 + 4000
+
+
+def _status_recording(path, statuses, texts=()):
+    """A recording of unit 5: 1 Hz KF_UNIT_STATUS (``statuses``: field dicts) and STATUSTEXTs
+    ``texts`` [(second, severity, text)], host time = 2 ms after device time."""
+    head = make_header([{"id": 0, "connection": "synthetic"}])
+    t0 = head["start_monotonic_ns"]
+    enc = Encoder(sysid=5, compid=200)
+    reads = []
+    for k, fields in enumerate(statuses):
+        dev_us = 1_000_000 * (k + 1)
+        frame = enc.encode("KF_UNIT_STATUS", time_boot_us=dev_us, firmware_version=1 << 24, **fields)
+        frame += b"".join(enc.encode("STATUSTEXT", severity=sev, text=text, id=0, chunk_seq=0)
+                          for s, sev, text in texts if s == k)
+        reads.append((t0 + 1000 * dev_us + 2_000_000, frame))
+    with RecordingWriter(path, head) as w:
+        w.rx(0, reads)
+    return path
+
+
+def test_status_extension_counters_and_older_firmware(tmp_path):
+    """numeric_resets, hil_invalid, rejected_samples2 are reported; an older firmware (83-byte
+    statuses, another dialect) has none: None ("n/a"), not a claimed 0."""
+    from kinefuse.host.link.dialect import DIALECT_HASH
+    new = _status_recording(tmp_path / "new.kfr", [
+        {"dialect_hash": 0, "numeric_resets": 0},
+        {"dialect_hash": 0, "numeric_resets": 2, "hil_invalid": 1, "rejected_samples2": 7}])
+    rep = stats.compute(decode_file(new))["streams"][0]["units"][0]["unit_reported"]
+    assert (rep["numeric_resets"], rep["hil_invalid"], rep["rejected_samples2"]) == (2, 1, 7)
+    old = _status_recording(tmp_path / "old.kfr", [{"dialect_hash": 0, "samples": 9}] * 3)
+    rep = stats.compute(decode_file(old))["streams"][0]["units"][0]["unit_reported"]
+    assert rep["samples"] == 9
+    assert rep["numeric_resets"] is None and rep["hil_invalid"] is None and rep["rejected_samples2"] is None
+    # the same dialect: the unit knows the fields, zeros (trailing zeros truncated) are real zeros
+    same = _status_recording(tmp_path / "same.kfr", [{"dialect_hash": DIALECT_HASH()}] * 2)
+    rep = stats.compute(decode_file(same))["streams"][0]["units"][0]["unit_reported"]
+    assert rep["numeric_resets"] == 0 and rep["rejected_samples2"] == 0
+
+
+def test_stats_lists_the_units_statustexts(tmp_path, run):
+    path = _status_recording(tmp_path / "t.kfr", [{"dialect_hash": 0}] * 5, texts=[
+        (0, 3, "parameter storage error: settings may be lost"),
+        (1, 4, "stored parameter out of range: default used"),
+        (3, 3, "parameter storage error: settings may be lost")])
+    (s,) = stats.compute(decode_file(path))["streams"]
+    err, warn = s["statustexts"]
+    assert err["severity_name"] == "ERROR" and err["count"] == 2 and err["sysid"] == 5
+    assert err["text"] == "parameter storage error: settings may be lost"
+    assert err["first_s"] == pytest.approx(1.002, abs=1e-6) and err["last_s"] == pytest.approx(4.002, abs=1e-6)
+    assert warn["severity_name"] == "WARNING" and warn["count"] == 1
+    code, out, _ = run("stats", str(path))
+    assert code == 0
+    assert "unit 5 said ERROR: parameter storage error: settings may be lost (2 times, 1.0 s .. 4.0 s)" in out, out
+    assert "unit 5 said WARNING: stored parameter out of range: default used at 2.0 s" in out
+    assert "numeric_resets n/a" in out
