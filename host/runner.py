@@ -97,6 +97,11 @@ def run_filter(name: str, impl: str, trial, params: dict[str, float] | None = No
     est = estimators.get(name)
     if est.inputs.name != "imu":
         raise KinefuseError(f"filter {name!r} takes {est.inputs.name} inputs, not IMU samples")
+    if "q" not in [v.name for v in est.outputs]:
+        # (an internal KeyError after the whole run)
+        raise KinefuseError(f"filter {name!r} has no 'q' output (its outputs: "
+                            f"{', '.join(v.name for v in est.outputs)}); an IMU filter for run, "
+                            f"replay and bench must output the orientation quaternion q")
     prm = check_params(name, params, preset)
     out = cg_runner.run(name, impl, imu_inputs(trial), prm)
     q = np.asarray(out["q"], dtype=np.float64)

@@ -153,9 +153,10 @@ def _run_angle(name: str, args, prm) -> int:
         raise KinefuseError(f"{path}: the filter rejected every one of the {n_rows} samples "
                             f"(angle beyond ±3.2 rad = ±183° or time step not in (0, 0.2] s{hint}); "
                             f"nothing was filtered")
-    cols = ("t s, angle_deg deg, rate_deg_s deg/s" + (", omega_rad_s rad/s (oscillator "
-            "frequency)" if "omega" in out else "") + (", rejected (cumulative count)"
-                                                        if args.status else ""))
+    # the columns the file has (a filter without a rate output has no rate_deg_s column)
+    cols = ("t s, angle_deg deg" + (", rate_deg_s deg/s" if "rate" in out else "")
+            + (", omega_rad_s rad/s (oscillator frequency)" if "omega" in out else "")
+            + (", rejected (cumulative count)" if args.status else ""))
     n = _write_angle_csv(args.out, series.t, out,
                          f"kinefuse run --filter {name} --impl {args.impl}; {cols}; filtered "
                          f"joint angle; time base {series.time_base}; input {path} "

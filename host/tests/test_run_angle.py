@@ -297,3 +297,40 @@ def test_bench_cost_profile_accounts_for_every_instruction(bench, fmt, target):
         soft = [f for f in fns if f["name"].startswith("__aeabi_f")]
         assert soft and all(f["calls_per_update"] >= 1 for f in soft), fns
         assert any(g["where"] == f"in {soft[0]['name']} (out of line)" for g in lines), lines
+
+
+def test_the_comment_line_names_only_the_columns_written(run, tmp_path, monkeypatch):
+    """A smoother without a rate output (a contributor's low-pass) got 'rate_deg_s deg/s' in the
+    comment line of a file without that column."""
+    real = angle_series.run
+
+    def angle_only(*a, **k):
+        out = real(*a, **k)
+        return {k2: v for k2, v in out.items() if k2 != "rate"}
+    monkeypatch.setattr(angle_series, "run", angle_only)
+    src = tmp_path / "a.csv"
+    src.write_text("t,angle_deg\n" + "\n".join(f"{i * 0.02:.2f},{i * 0.5:.3f}" for i in range(20)) + "\n")
+    out = tmp_path / "o.csv"
+    code, _, err = run("run", "--filter", "angle-kf", "--input", src, "--out", out)
+    assert code == 0, err
+    comment, header, _ = _csv(out)
+    assert header == ["t", "angle_deg"]
+    assert "rate_deg_s" not in comment and "angle_deg deg" in comment
+
+
+def test_an_imu_filter_without_q_is_one_line(monkeypatch, tmp_path):
+    """run_filter on an IMU estimator without a q output was an internal KeyError after the run."""
+    import dataclasses
+
+    from kinefuse.codegen import estimators
+    from kinefuse.host import runner
+    from kinefuse.host.errors import KinefuseError
+    real = estimators.get("madgwick")
+
+    class NoQ(real.__class__):
+        outputs = tuple(v for v in real.outputs if v.name != "q")
+    monkeypatch.setattr(estimators, "get", lambda name: NoQ() if name == "madgwick" else real)
+    trial = dataclasses.make_dataclass("T", ["gyr", "acc", "mag", "dt", "rate_hz"])(
+        np.zeros((3, 3)), np.zeros((3, 3)), np.zeros((3, 3)), 0.01, 100.0)
+    with pytest.raises(KinefuseError, match="no 'q' output"):
+        runner.run_filter("madgwick", "ref", trial)
