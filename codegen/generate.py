@@ -32,7 +32,7 @@ def source_file(name: str) -> str:
     return f"codegen/estimators/{mod}.py"
 
 
-def render_all(names: list[str] | None = None) -> dict[str, str]:
+def render_all(names: list[str] | None = None, ops_dir: Path | None = None) -> dict[str, str]:
     """Relative path (under firmware/generated) -> file text, for every estimator and system."""
     files: dict[str, str] = {
         "__init__.py": '"""Generated filters (C sources and their Python models)."""\n',
@@ -66,10 +66,32 @@ def render_all(names: list[str] | None = None) -> dict[str, str]:
             rows.append((name, system, lo.op_summary()))
     if names is None:   # the table covers every registered filter
         files["OPS.md"] = _ops_table(rows)
+    elif ops_dir is not None:   # --filter: the others' rows of the existing table stay
+        files["OPS.md"] = _ops_table(rows, keep=_ops_rows(Path(ops_dir) / "OPS.md"))
     return files
 
 
-def _ops_table(rows) -> str:
+def _ops_rows(path: Path) -> dict[tuple[str, str], str]:
+    """(filter, system) -> operations of an existing OPS.md ({} when there is none)."""
+    if not path.is_file():
+        return {}
+    rows = {}
+    for line in path.read_text(encoding="utf-8").splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) == 3 and cells[0] in estimators.ESTIMATORS:
+            rows[(cells[0], cells[1])] = cells[2]
+    return rows
+
+
+def _ops_table(rows, keep: dict | None = None) -> str:
+    """The table of ``rows`` (filter, system, ops); with ``keep`` (``codegen --filter``) the
+    other registered filters' rows of the existing table stay, in registry order (a partial
+    regeneration left OPS.md stale, so ``--check`` then failed)."""
+    if keep is not None:
+        new = {(n, s): o for n, s, o in rows}
+        merged = {**keep, **new}
+        rows = [(n, s, merged[(n, s)]) for n in estimators.ESTIMATORS
+                for s in getattr(estimators.get(n), "systems", SYSTEMS) if (n, s) in merged]
     lines = ["# Generated filters: operations per update", "",
              "Produced by `kinefuse codegen` (do not edit).  Counts are graph operations after",
              "constant folding, common-subexpression elimination and dead-code removal.", "",
@@ -80,7 +102,7 @@ def _ops_table(rows) -> str:
 
 def write(out_dir: Path = GENERATED_DIR, names: list[str] | None = None) -> list[str]:
     """Write every generated file; remove stale generated C/model files.  Returns paths written."""
-    files = render_all(names)
+    files = render_all(names, ops_dir=out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     (out_dir / "models").mkdir(exist_ok=True)
     written = []

@@ -50,3 +50,25 @@ def test_check_says_what_is_wrong_with_each_file_and_codegen_repairs_it(tmp_path
                                             rel).read_bytes(), rel
     assert not (gen / "oldfilter_f32.c").exists()
     assert cli.main(["codegen", "--check"]) == 0
+
+
+def test_codegen_filter_keeps_the_operations_table_current(tmp_path, monkeypatch, capsys):
+    """`kinefuse codegen --filter NAME` left OPS.md as it was, so a changed filter's row was
+    stale and the next `--check` failed; it now updates that filter's rows, the others stay."""
+    gen = tmp_path / "generated"
+    shutil.copytree(generate.GENERATED_DIR, gen, ignore=shutil.ignore_patterns("__pycache__"))
+    monkeypatch.setattr(generate, "GENERATED_DIR", gen)
+    ops = gen / "OPS.md"
+    original = ops.read_text()
+    lines = original.splitlines(keepends=True)
+    i = next(k for k, ln in enumerate(lines) if ln.startswith("| mahony | f32 |"))
+    j = next(k for k, ln in enumerate(lines) if ln.startswith("| madgwick | q |"))
+    lines[i] = "| mahony | f32 | 1 ops (stale) |\n"        # as if mahony's reference changed
+    lines[j] = "| madgwick | q | 2 ops (stale) |\n"        # another filter's stale row stays
+    ops.write_text("".join(lines))
+    assert cli.main(["codegen", "--filter", "mahony"]) == 0
+    capsys.readouterr()
+    now = ops.read_text().splitlines(keepends=True)
+    assert now[i] == original.splitlines(keepends=True)[i]    # regenerated
+    assert now[j] == "| madgwick | q | 2 ops (stale) |\n"     # not named: kept as it was
+    assert len(now) == len(lines)

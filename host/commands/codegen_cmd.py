@@ -21,7 +21,7 @@ def run(args) -> int:
     try:
         out_dir = generate.GENERATED_DIR
         if args.check:
-            stale = (generate.differences(out_dir, generate.render_all(args.filter))
+            stale = (generate.differences(out_dir, generate.render_all(args.filter, ops_dir=out_dir))
                      if args.filter else generate.check(out_dir))
             if stale:
                 print(f"kinefuse codegen --check: {len(stale)} generated file(s) in {out_dir} "
