@@ -12,6 +12,7 @@ import importlib.util
 import os
 import re
 import shlex
+import shutil
 import subprocess
 import sys
 import sysconfig
@@ -80,7 +81,10 @@ def build(module_stem: str, headers: list[Path], sources: list[Path], extra_cdef
     for inc in include_dirs:
         for h in sorted(Path(inc).glob("*.h")):
             blob.update(h.name.encode() + b"\0" + h.read_bytes())
-    blob.update(repr((flags, extra_cdef, extra_source, include_dirs, sys.version)).encode())
+        blob.update(b"\1")     # one folder's headers end here
+    # the folders' contents, not their paths: the same code generated into another temporary
+    # folder loads the module built before instead of compiling (and caching) another copy
+    blob.update(repr((flags, extra_cdef, extra_source, len(include_dirs), sys.version)).encode())
     # a compiler upgrade must rebuild, not load a module the old compiler made
     blob.update(compiler_identity().encode())
     name = f"_kf_{re.sub(r'[^a-zA-Z0-9_]', '_', module_stem)}_{blob.hexdigest()[:16]}"
@@ -99,9 +103,12 @@ def build(module_stem: str, headers: list[Path], sources: list[Path], extra_cdef
                                sources=[str(s) for s in sources], include_dirs=include_dirs,
                                extra_compile_args=flags)
                 tmp = d / f"build_{name}_{os.getpid()}"
-                path = ffi.compile(tmpdir=str(tmp), verbose=False)
-                final = d / Path(path).name
-                os.replace(path, final)
+                try:
+                    path = ffi.compile(tmpdir=str(tmp), verbose=False)
+                    final = d / Path(path).name
+                    os.replace(path, final)
+                finally:
+                    shutil.rmtree(tmp, ignore_errors=True)   # objects and C: only the .so is kept
                 existing = final
     return _load(name, existing)
 

@@ -49,3 +49,25 @@ def test_header_without_its_input_record_is_a_clear_error(tmp_path):
     with pytest.raises(ValueError, match=r"madgwick_f32\.h does not include its input record "
                                          r"header .*run `kinefuse codegen`"):
         cbuild.build_filter("madgwick", "f32", gen_dir=tmp_path)
+
+
+def test_the_same_code_in_another_folder_is_not_compiled_again(tmp_path, monkeypatch):
+    """Every temporary folder (each test's generated code) compiled anew and left another .so in
+    the cache, and every build left its build_<name>_<pid> folder behind."""
+    monkeypatch.setenv("KINEFUSE_CACHE", str(tmp_path / "cache"))
+    mods = []
+    for k in range(2):
+        src = tmp_path / f"gen{k}"
+        src.mkdir()
+        (src / "kf_u.h").write_text("int kf_u_two(void);\n")
+        (src / "kf_u.c").write_text('#include "kf_u.h"\nint kf_u_two(void) { return 2; }\n')
+        _ffi, lib = cbuild.build("kf_u", [src / "kf_u.h"], [src / "kf_u.c"], include_dirs=[src])
+        assert lib.kf_u_two() == 2
+        mods.append(sorted(p.name for p in cbuild.cache_dir().glob("*.so")))
+    assert mods[0] == mods[1] and len(mods[0]) == 1
+    assert not list(cbuild.cache_dir().glob("build_*"))
+    # a different header content in the include folder still rebuilds
+    src = tmp_path / "gen0"
+    (src / "kf_extra.h").write_text("#define KF_EXTRA 1\n")
+    cbuild.build("kf_u", [src / "kf_u.h"], [src / "kf_u.c"], include_dirs=[src])
+    assert len(list(cbuild.cache_dir().glob("*.so"))) == 2
