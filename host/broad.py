@@ -139,6 +139,12 @@ def find_trials(path: str | os.PathLike) -> list[Path]:
                    if p.is_file() and p.suffix.lower() in TRIAL_SUFFIXES)
     if not files:
         raise KinefuseError(f"{path}: no trial files (.mat or .npz) in this directory")
+    stems = [p.stem for p in files]
+    twice = [p for k, p in enumerate(files) if p.stem in stems[:k]]
+    if twice:   # (one trial's scores replaced the other's: fewer trials scored, without a word)
+        first = files[stems.index(twice[0].stem)]
+        raise KinefuseError(f"{path}: {first.name} and {twice[0].name} are the same trial "
+                            f"{twice[0].stem}; keep one of them in the folder")
     return files
 
 

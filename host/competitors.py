@@ -55,6 +55,25 @@ class Competitor:
     nine_d: bool = True            # False: heading is not referenced to north (score inclination only)
 
 
+def mag_readings(trial, hold: bool = False) -> np.ndarray:
+    """The magnetometer as the competitors get it: zero on the samples that carry no new reading
+    (a simulator trial's ``mag_valid``), where VQF, Fusion and ahrs all skip their magnetometer
+    step - as our filters do.  (They got the held last reading again, or the zeros of a sensor
+    without a magnetometer, as a new reading on every sample.)  ``hold``: for ahrs' EKF, which
+    refuses a zero field and has no step without it, the last reading (the first before it)."""
+    mag = np.asarray(trial.mag, dtype=np.float64)
+    valid = getattr(trial, "mag_valid", None)
+    if valid is None:
+        return mag
+    valid = np.asarray(valid, dtype=bool)
+    if not hold:
+        return np.where(valid[:, None], mag, 0.0)
+    if not valid.any():
+        raise KinefuseError(f"{trial.name} has no magnetometer reading, which ahrs' EKF needs")
+    last = np.maximum.accumulate(np.where(valid, np.arange(len(valid)), -1))
+    return mag[np.where(last < 0, int(np.argmax(valid)), last)]
+
+
 def _check_params(comp_name: str, allowed: dict, params: dict | None) -> dict:
     params = dict(params or {})
     unknown = sorted(set(params) - set(allowed))
@@ -85,7 +104,8 @@ def _run_vqf(trial, params, status, *, variant="9d"):
     import vqf
 
     p = _vqf_kwargs(_check_params("vqf", _VQF_PARAMS, params))
-    gyr, acc, mag = (np.ascontiguousarray(a, dtype=np.float64) for a in (trial.gyr, trial.acc, trial.mag))
+    gyr, acc, mag = (np.ascontiguousarray(a, dtype=np.float64)
+                     for a in (trial.gyr, trial.acc, mag_readings(trial)))
     out = vqf.VQF(trial.dt, **p).updateBatch(gyr, acc, mag)
     q = out["quat6D"] if variant == "6d" else out["quat9D"]
     st = {"rest": np.asarray(out["restDetected"], dtype=bool)}
@@ -101,7 +121,8 @@ def _run_basicvqf(trial, params, status):
     import vqf
 
     p = _check_params("vqf-basic", _BASICVQF_PARAMS, params)
-    gyr, acc, mag = (np.ascontiguousarray(a, dtype=np.float64) for a in (trial.gyr, trial.acc, trial.mag))
+    gyr, acc, mag = (np.ascontiguousarray(a, dtype=np.float64)
+                     for a in (trial.gyr, trial.acc, mag_readings(trial)))
     out = vqf.BasicVQF(trial.dt, **{k: float(v) for k, v in p.items()}).updateBatch(gyr, acc, mag)
     return CompetitorResult(np.asarray(out["quat9D"], dtype=np.float64))
 
@@ -110,7 +131,8 @@ def _run_offline_vqf(trial, params, status):
     import vqf
 
     p = _vqf_kwargs(_check_params("vqf-offline", _VQF_PARAMS, params))
-    gyr, acc, mag = (np.ascontiguousarray(a, dtype=np.float64) for a in (trial.gyr, trial.acc, trial.mag))
+    gyr, acc, mag = (np.ascontiguousarray(a, dtype=np.float64)
+                     for a in (trial.gyr, trial.acc, mag_readings(trial)))
     out = vqf.offlineVQF(gyr, acc, mag, trial.dt, p)
     st = {"rest": np.asarray(out["restDetected"], dtype=bool),
           "mag_disturbed": np.asarray(out["magDistDetected"], dtype=bool)} if status else {}
@@ -147,7 +169,7 @@ def _run_fusion(trial, params, status, *, name="imufusion", defaults=FUSION_READ
         offset.set_settings(imufusion.BiasSettings(sample_rate=float(trial.rate_hz)))
     gyr = np.ascontiguousarray(np.degrees(trial.gyr))          # °/s
     acc = np.ascontiguousarray(trial.acc / STANDARD_GRAVITY)   # g
-    mag = np.ascontiguousarray(trial.mag)                      # µT (Fusion: arbitrary units)
+    mag = np.ascontiguousarray(mag_readings(trial))            # µT (Fusion: arbitrary units)
     n = trial.n
     q = np.empty((n, 4))
     acc_rej = np.zeros(n, dtype=bool) if status else None
@@ -172,7 +194,7 @@ def _run_ahrs_madgwick(trial, params, status):
 
     p = _check_params("ahrs-madgwick", {"gain": 0.041}, params)
     # Madgwick's MARG update references gravity (0,0,1) and the field (bx,0,bz): earth = NWU
-    Q = Madgwick(gyr=trial.gyr, acc=trial.acc, mag=trial.mag, frequency=trial.rate_hz,
+    Q = Madgwick(gyr=trial.gyr, acc=trial.acc, mag=mag_readings(trial), frequency=trial.rate_hz,
                  gain=float(p["gain"])).Q
     return CompetitorResult(quat_mul(Q_NWU_TO_ENU, Q))
 
@@ -182,7 +204,7 @@ def _run_ahrs_mahony(trial, params, status):
 
     p = _check_params("ahrs-mahony", {"k_P": 1.0, "k_I": 0.3}, params)
     # Mahony's MARG update references the field as (0, by, bz): earth = ENU already
-    Q = Mahony(gyr=trial.gyr, acc=trial.acc, mag=trial.mag, frequency=trial.rate_hz,
+    Q = Mahony(gyr=trial.gyr, acc=trial.acc, mag=mag_readings(trial), frequency=trial.rate_hz,
                k_P=float(p["k_P"]), k_I=float(p["k_I"])).Q
     return CompetitorResult(np.asarray(Q, dtype=np.float64))
 
@@ -197,8 +219,9 @@ def _run_ahrs_ekf(trial, params, status):
     # -acc makes the measurement model and its ecompass initialisation consistent; the output
     # is sensor -> NED.  (In ENU mode -acc fixes the model but starts the filter upside down.)
     # Its magnetic reference is ahrs' default: WMM at Munich on today's date (with declination).
-    Q = EKF(gyr=trial.gyr, acc=-trial.acc, mag=trial.mag, frequency=trial.rate_hz, frame="NED",
-            var_gyr=float(p["var_gyr"]), var_acc=float(p["var_acc"]), var_mag=float(p["var_mag"])).Q
+    Q = EKF(gyr=trial.gyr, acc=-trial.acc, mag=mag_readings(trial, hold=True),
+            frequency=trial.rate_hz, frame="NED", var_gyr=float(p["var_gyr"]),
+            var_acc=float(p["var_acc"]), var_mag=float(p["var_mag"])).Q
     return CompetitorResult(quat_mul(Q_NED_TO_ENU, np.asarray(Q, dtype=np.float64)))
 
 
@@ -206,7 +229,7 @@ def _run_ahrs_aqua(trial, params, status):
     from ahrs.filters import AQUA
 
     p = _check_params("ahrs-aqua", {"alpha": 0.01, "beta": 0.01, "adaptive": 0.0}, params)
-    Q = AQUA(gyr=trial.gyr, acc=trial.acc, mag=trial.mag, frequency=trial.rate_hz,
+    Q = AQUA(gyr=trial.gyr, acc=trial.acc, mag=mag_readings(trial), frequency=trial.rate_hz,
              alpha=float(p["alpha"]), beta=float(p["beta"]), adaptive=bool(p["adaptive"])).Q
     # AQUA's quaternion is the inverse rotation (earth -> sensor) of an NWU earth frame
     return CompetitorResult(quat_mul(Q_NWU_TO_ENU, quat_conj(np.asarray(Q, dtype=np.float64))))
@@ -288,6 +311,10 @@ def run_competitor(name: str, trial, params: dict[str, float] | None = None,
                    status: bool = True) -> CompetitorResult:
     """Run competitor ``name`` on ``trial``; quaternions w,x,y,z sensor -> ENU, one per sample."""
     comp = require(name)
+    if getattr(trial, "steps", None) is not None:
+        # (ran at the nominal rate while our filters integrated the trial's own time steps)
+        raise KinefuseError(f"{name} runs at one constant sample rate; {trial.name} has sample "
+                            f"times of its own (jitter, drops or gaps), which it cannot take")
     res = comp.run(trial, params, status)
     q = np.asarray(res.q, dtype=np.float64)
     if q.shape != (trial.n, 4):

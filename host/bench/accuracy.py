@@ -44,6 +44,18 @@ class Spec:
         return dict(self.params) or None
 
 
+def heading_free(spec: Spec) -> bool:
+    """True when ``spec`` ignores the magnetometer (a 6D competitor, or a kinefuse filter run
+    with ``mode=6d``): its heading is not referenced to north, so only its inclination means
+    anything against BROAD's north-aligned reference."""
+    if spec.kind == "competitor":
+        return not competitors.get(spec.name).nine_d
+    check = getattr(load_runner(), "check_params", None)
+    if check is None:
+        return False
+    return check(spec.name, dict(spec.params)).get("mode", 1.0) < 0.5
+
+
 def load_runner():
     """The lead's ``kinefuse.host.runner`` module, or raise KinefuseError saying why not."""
     try:
@@ -358,9 +370,29 @@ def _num(x: float) -> float | None:
 
 
 def _block(results: Results, label: str) -> dict:
+    # (the group means, which the tables and the README's per-group figures give, were missing)
     return {"trials": {t: {k: _num(results.scores[label][t][k]) for k in metrics.KINDS}
                        for t in results.trial_names},
+            "groups": {g: {k: _num(v) for k, v in sc.items()}
+                       for g, sc in results.group_means(label).items()},
             "mean": {k: _num(v) for k, v in results.mean(label).items()}}
+
+
+def _spec_block(results: Results, spec: Spec) -> dict:
+    """:func:`_block` plus what was run: parameters, a competitor's settings, 6D."""
+    out = _block(results, spec.label)
+    check = getattr(load_runner(), "check_params", None) if spec.kind == "kinefuse" else None
+    if check is not None:       # every parameter the filter ran with, defaults included
+        out["params"] = check(spec.name, dict(spec.params))
+    elif spec.params:
+        out["params"] = dict(spec.params)
+    if spec.kind == "competitor":
+        comp = competitors.get(spec.name)
+        out["settings"] = comp.description
+        out["params"] = {**comp.params, **dict(spec.params)}
+    if heading_free(spec):
+        out["heading_referenced"] = False   # 6D: only the inclination is meaningful
+    return out
 
 
 def to_json(results: Results, filter_arg: str, impl: str, main: list[Spec],
@@ -368,11 +400,11 @@ def to_json(results: Results, filter_arg: str, impl: str, main: list[Spec],
     """The ``--json`` object (NaN scores become null)."""
     if filter_arg == "all":
         out = {"filter": "all", "impl": impl,
-               "filters": {s.name: _block(results, s.label) for s in main}}
+               "filters": {s.name: _spec_block(results, s) for s in main}}
     else:
-        out = {"filter": main[0].name, "impl": impl, **_block(results, main[0].label)}
+        out = {"filter": main[0].name, "impl": impl, **_spec_block(results, main[0])}
     if compare:
-        out["compare"] = {s.name: _block(results, s.label) for s in compare}
+        out["compare"] = {s.name: _spec_block(results, s) for s in compare}
     out["units"] = ("deg: RMSE of the total, heading and inclination error over each trial's "
                     "movement phases; mean = over trials")
     return out
@@ -423,11 +455,17 @@ def print_tables(results: Results, console=None) -> None:
     summary.add_row(f"[bold]all trials ({len(results.trial_names)})[/bold]",
                     *[f"[bold]{_cell(results.mean(lab))}[/bold]" for lab in labels])
     print_table(summary, console)
-    not_north = [s.name for s in results.specs
-                 if s.kind == "competitor" and not competitors.get(s.name).nine_d]
+    # (kinefuse filters run with mode=6d were scored for heading without a word)
+    not_north = [s.label for s in results.specs if heading_free(s)]
     if not_north:
         console.print(f"note: {', '.join(not_north)} estimate heading without a magnetometer; "
                       f"only their inclination is meaningful.")
+    comps = [s for s in results.specs if s.kind == "competitor"]
+    for s in comps:     # the settings the competitors ran with, next to their scores
+        set_ = ", ".join(f"{k}={v:g}" for k, v in {**competitors.get(s.name).params,
+                                                   **dict(s.params)}.items())
+        console.print(f"{s.name}: {competitors.get(s.name).description} ({set_}); same "
+                      f"samples and rate as ours")
 
 
 # ------------------------------------------------------------------------------------------------
@@ -491,12 +529,14 @@ def run(args) -> int:
                 compare.append(spec)
     files, where = resolve_data(args.data)
     print(f"data: {where}", file=sys.stderr)
-    if all(Path(f).suffix == ".npz" for f in files) and not args.data:
-        print("note: excerpt scores are not comparable with published full-trial BROAD figures",
-              file=sys.stderr)
     results = evaluate(files, main + compare, jobs=args.jobs)
     print(f"scored {len(results.trial_names)} trial(s) x {len(main + compare)} estimator(s) "
           f"in {results.seconds:.1f} s", file=sys.stderr)
+    # (said only for the default data: --data naming the excerpt got the cut trials' scores
+    # without a word; a trial .npz is always an excerpt)
+    if any(Path(f).suffix.lower() == ".npz" for f in files):
+        print("note: excerpt scores are not comparable with published full-trial BROAD figures",
+              file=sys.stderr)
     if args.json:
         print(json.dumps(to_json(results, filter_arg, args.impl, main, compare), allow_nan=False))
     else:

@@ -43,7 +43,9 @@ def register_bench(bench_subparsers) -> None:
                    help="comma-separated filters (default: every IMU filter and joint-angle smoother)")
     p.add_argument("--formats", default="f32,q", help="comma-separated number formats (default f32,q)")
     p.add_argument("--targets", default="m4f,m0", help="comma-separated targets (default m4f,m0)")
-    p.add_argument("--k", type=int, default=1000, help="counted updates (default 1000, at most 1000)")
+    p.add_argument("--k", type=int, default=1000,
+                   help="counted updates of our filters (default 1000, at most 1000; Fusion and "
+                        "VQF always count 1000, each row gives its k)")
     p.add_argument("--no-competitors", action="store_true", help="skip Fusion and VQF")
     p.add_argument("--no-mix", action="store_true", help="skip the instruction-mix cycle estimate")
     p.add_argument("--profile", action="store_true",
@@ -103,7 +105,7 @@ def measure_competitor(case: str, target: str, mix: bool) -> dict:
 
     r = measure_case(case, target)
     c = CASES[case]
-    row = {"impl": "fusion" if c.package == "imufusion" else "vqf", "filter": case, "format": "f32",
+    row = {"impl": competitor_impl(case), "filter": case, "format": "f32",
            "target": target, "description": c.description, "k": K, "warmup": WARMUP}
     if r.cost is None:
         row.update({"error": r.error, "instructions_per_update": None, "flash_bytes": None,
@@ -119,6 +121,11 @@ def measure_competitor(case: str, target: str, mix: bool) -> dict:
     return row
 
 
+def competitor_impl(case: str) -> str:
+    """The ``impl`` of a competitor case's rows: fusion or vqf (the --json schema's names)."""
+    return "fusion" if case.startswith("fusion") else "vqf"
+
+
 def _job(kind: str, a: str, b: str, c: str, k: int, mix: bool, profile: bool = False,
          top: int = 12) -> dict:
     try:
@@ -126,7 +133,9 @@ def _job(kind: str, a: str, b: str, c: str, k: int, mix: bool, profile: bool = F
             return measure_ours(a, b, c, k, mix, profile, top)
         return measure_competitor(a, c, mix)
     except KinefuseError as exc:
-        return {"impl": "kinefuse" if kind == "ours" else kind, "filter": a, "format": b, "target": c,
+        # (a failed competitor row said impl "competitor", outside the schema's kinefuse|fusion|vqf)
+        return {"impl": "kinefuse" if kind == "ours" else competitor_impl(a), "filter": a,
+                "format": b, "target": c,
                 "error": str(exc), "instructions_per_update": None, "flash_bytes": None,
                 "ram_bytes": None}
 
@@ -141,8 +150,8 @@ def run(args: argparse.Namespace) -> int:
     from kinefuse.host.bench.common import name_list
     costable = loops.imu_filters() + angle_filter_names()
     # (an empty --filters meant every filter: the longest run of all instead of an error)
-    name_list("--filters", args.filters, costable, "madgwick,flagship")
-    filters = [f.strip() for f in args.filters.split(",")] if args.filters is not None else costable
+    # (an empty name, "madgwick,", was an unknown filter '')
+    filters = name_list("--filters", args.filters, costable, "madgwick,flagship")
     unknown = [f for f in filters if f not in costable]
     if unknown:
         raise KinefuseError(f"unknown IMU filter or joint-angle smoother {unknown[0]!r} "
@@ -166,14 +175,15 @@ def run(args: argparse.Namespace) -> int:
     reason = qemu_unavailable()        # after the options: their errors need no QEMU
     if reason:
         raise KinefuseError(reason)
-    jobs = [("ours", f, s, t) for f in filters for s in formats if s in loops.systems(f)
-            for t in targets if t in TARGETS[s]]
-    if not args.no_competitors and "f32" in formats:
-        jobs += [("competitor", c, "f32", t) for c in COMPETITOR_CASES for t in targets]
-
-    from kinefuse.host.bench.common import progress
+    jobs, notes = plan_jobs(filters, formats, targets, not args.no_competitors, args.k)
+    from kinefuse.host.bench.common import eprint, progress
+    for note in notes:        # (rows left out without a word looked like a complete table)
+        eprint(f"note: {note}")
+    if not jobs:
+        raise KinefuseError("nothing to measure with these --filters, --formats and --targets")
     rows = []
-    with progress(not args.json) as bar, ProcessPoolExecutor(max(1, args.jobs)) as pool:
+    # the bar is on stderr, so --json keeps it (a full run takes many minutes)
+    with progress() as bar, ProcessPoolExecutor(max(1, args.jobs)) as pool:
         task = bar.add_task("cost on M4F/M0", total=len(jobs))
         futs = [pool.submit(_job, kind, a, b, c, args.k, not args.no_mix, args.profile, top)
                 for kind, a, b, c in jobs]
@@ -184,7 +194,11 @@ def run(args: argparse.Namespace) -> int:
               "cycle_model": "estimate: Cortex-M4 table (FP add/mul 1, load/store 2, VDIV/VSQRT 14, "
                              "VFMA 3, taken branch 3) over the executed instruction mix; not measured",
               "motion": "competitors.motion(): 100 Hz synthetic rotation with magnetometer, 400 "
-                        "warm-up updates, then K counted"}
+                        "warm-up updates, then K counted",
+              # (the nested size records' flash/ram carried no unit)
+              "units": "instructions_per_update: executed instructions per update (mean of k); "
+                       "flash_bytes, ram_bytes, own_*_bytes and every flash/ram in size and "
+                       "size_by_origin: bytes; est_us_at_64mhz: microseconds"}
     if args.json:
         print(json.dumps(result))
     else:
@@ -192,6 +206,28 @@ def run(args: argparse.Namespace) -> int:
         if args.profile:
             print_profiles(rows)
     return 0 if all(not r.get("error") for r in rows) else 1
+
+
+def plan_jobs(filters: list[str], formats: list[str], targets: list[str], competitors: bool,
+              k: int = 1000) -> tuple[list[tuple[str, str, str, str]], list[str]]:
+    """The measurements to make, and a note for each kind of row the options leave out."""
+    from kinefuse.hil_tests.harness import loops
+    jobs, notes = [], []
+    for f in filters:
+        have = loops.systems(f)
+        missing = [s for s in formats if s not in have]
+        if missing:
+            notes.append(f"{f} is not generated in {', '.join(missing)}: no such row")
+        jobs += [("ours", f, s, t) for s in formats if s in have for t in targets if t in TARGETS[s]]
+    if competitors and "f32" in formats:
+        jobs += [("competitor", c, "f32", t) for c in COMPETITOR_CASES for t in targets]
+        if k != 1000:
+            notes.append(f"--k {k} counts our updates; Fusion and VQF rows count 1000 (see each "
+                         f"row's k)")
+    elif competitors:
+        notes.append("Fusion and VQF are measured in float32 only: no competitor rows without "
+                     "f32 in --formats (--no-competitors to leave them out)")
+    return jobs, notes
 
 
 def print_table(rows: list[dict]) -> None:

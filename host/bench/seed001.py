@@ -275,7 +275,7 @@ def run(args) -> int:
            "filters": {LABELS.get(n, n): {"name": n, "params": params[n][1]} for n in names},
            "units": {}}
     t0 = time.perf_counter()
-    with progress(not args.json) as bar:
+    with progress() as bar:      # on stderr: --json keeps it
         task = bar.add_task("seed001: simulate and filter", total=len(UNITS) * (len(names) + 1))
         for k, unit in enumerate(UNITS):
             rec = simulate(unit, args.seed + k, args.hold_s)
@@ -319,9 +319,15 @@ def run_ahrs_fkf(trial) -> np.ndarray:
     the 12 trials, against 179° read as North-East-Down and 89° unrotated).  Its quaternions
     are not normalised (its measurement quaternion has norm 1/4); the metric normalises them."""
     from ahrs.filters import FKF
-    from kinefuse.host.competitors import Q_NWU_TO_ENU
+    from kinefuse.host.competitors import Q_NWU_TO_ENU, mag_readings
     from kinefuse.host.metrics import quat_mul as qm
-    Q = FKF(gyr=trial.gyr, acc=trial.acc, mag=trial.mag, frequency=trial.rate_hz).Q
+    if getattr(trial, "steps", None) is not None:   # (as the other competitors: one rate only)
+        raise KinefuseError(f"ahrs-fkf runs at one constant sample rate; {trial.name} has sample "
+                            f"times of its own (jitter, drops or gaps), which it cannot take")
+    # a simulator trial's samples without a new magnetometer reading get the last one (FKF has
+    # no step without it; it took whatever the file held there, blank rows included)
+    Q = FKF(gyr=trial.gyr, acc=trial.acc, mag=mag_readings(trial, hold=True),
+            frequency=trial.rate_hz).Q
     return qm(Q_NWU_TO_ENU, np.asarray(Q, float))
 
 
@@ -358,7 +364,7 @@ def run_broad(args) -> int:
     jobs = [(n, "ours") for n in names] + [(AHRS_PEERS[n], "ahrs") for n in names if AHRS_PEERS[n]]
     scores: dict[str, dict[str, dict]] = {}
     t0 = time.perf_counter()
-    with progress(not args.json) as bar:
+    with progress() as bar:      # on stderr: --json keeps it
         task = bar.add_task("seed001 --broad", total=len(files) * len(jobs))
         for f in files:
             trial = broad.load_trial(f)
@@ -373,7 +379,8 @@ def run_broad(args) -> int:
            "pairs": {n: AHRS_PEERS[n] for n in names},
            "seconds": round(time.perf_counter() - t0, 1)}
     if args.json:
-        print(json.dumps(out))
+        # a NaN score (no movement phase in a trial, or a NaN estimate) printed NaN: not JSON
+        print(json.dumps(_nan_to_null(out), allow_nan=False))
         return 0
     print(f"BROAD, {len(files)} trials from {where}: mean RMSE (deg) total / heading / inclination;"
           f" kinefuse filters with their defaults ({args.impl})")
@@ -393,6 +400,17 @@ def run_broad(args) -> int:
 
 def _fmt(v):
     return f"{v:6.2f}"
+
+
+def _nan_to_null(v):
+    """``v`` with every non-finite float replaced by None (null in JSON)."""
+    if isinstance(v, dict):
+        return {k: _nan_to_null(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [_nan_to_null(x) for x in v]
+    if isinstance(v, float) and not np.isfinite(v):
+        return None
+    return v
 
 
 def _print(out: dict):

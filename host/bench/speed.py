@@ -26,7 +26,7 @@ void kf_fusion_run(const float *gyr_dps, const float *acc_g, const float *mag_ut
     const FusionAhrsSettings settings = {
         .sampleRate = rate_hz, .convention = FusionConventionNwu, .gain = 0.5f,
         .gyroscopeRange = 2000.0f, .accelerationRejection = 10.0f,
-        .magneticRejection = 10.0f, .rejectionTimeout = 5 * (int)rate_hz,
+        .magneticRejection = 10.0f, .rejectionTimeout = 5.0f,   /* s in Fusion 1.3 (5*rate was 1425 s at 285 Hz) */
     };
     int i;
     FusionAhrsInitialise(&ahrs);
@@ -349,7 +349,12 @@ def run(args) -> int:
     sps["ref"] = m / _best(lambda: cg.run(name, "ref", small, prm), 1)
     order = ("f32_c", "q_c", "f32_model", "q_model", "ref", "imufusion", "vqf")
     sps = {k: sps[k] for k in order if k in sps}
-    result = {"filter": name, "samples_per_s": sps}
+    # (the JSON did not say which data, how many samples, nor that a competitor is missing)
+    result = {"filter": name, "data": what, "samples": n, "model_samples": m,
+              "repeat": args.repeat, "samples_per_s": sps}
+    missing = [k for k, v in sps.items() if v is None]
+    if missing:
+        result["not_measured"] = missing
     if args.instructions:
         eprint("  counting instructions under valgrind (a few seconds)...")
         result["instructions_per_sample"] = instructions_per_sample(name, inputs, prm, trial)

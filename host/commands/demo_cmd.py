@@ -123,9 +123,12 @@ def run(args) -> int:
         table.add_row(*row)
     print_table(table, console)
     console.print("trials: " + "; ".join(_short(t) for t in res.trial_names))
+    for spec in res.specs:      # (the competitors' scores came without the settings they ran with)
+        if spec.kind == "competitor":
+            console.print(f"{spec.name}: {competitors.get(spec.name).description}")
 
     payload = {"data": "bundled BROAD excerpt", "trials": res.trial_names,
-               "estimators": {s.label: accuracy._block(res, s.label) for s in res.specs},
+               "estimators": {s.label: accuracy._spec_block(res, s) for s in res.specs},
                "not_available": res.failures, "skipped": res.skipped,
                "units": "deg: RMSE of the total, heading and inclination error over each "
                         "trial's movement phases; mean = over trials"}

@@ -76,7 +76,10 @@ def test_json_exact_shape_and_known_errors(kf):
     assert code == 0, err
     assert len(out.strip().splitlines()) == 1
     d = json.loads(out)
-    assert set(d) == {"filter", "impl", "trials", "mean", "units"} and d["units"].startswith("deg: RMSE")
+    assert set(d) == {"filter", "impl", "trials", "groups", "mean", "units"} and d["units"].startswith("deg: RMSE")
+    # the group means (one excerpt trial per group here), as the tables give them
+    assert set(d["groups"]) == {"rotation", "translation", "tapping", "attached_magnet"}
+    assert d["groups"]["tapping"] == d["trials"]["24_disturbed_tapping_A"]
     assert (d["filter"], d["impl"]) == ("tilted", "ref")
     assert list(d["trials"]) == NAMES
     for s in list(d["trials"].values()) + [d["mean"]]:
@@ -113,7 +116,11 @@ def test_compare_side_by_side_in_parallel(kf):
                         "--compare", ",".join(["tilted"] + comps), "--json", "--jobs", "2")
     assert code == 0, err
     d = json.loads(out)
-    assert set(d) == {"filter", "impl", "trials", "mean", "compare", "units"}
+    assert set(d) == {"filter", "impl", "trials", "groups", "mean", "compare", "units"}
+    # each competitor's settings are stated with its scores
+    for c in comps:
+        assert d["compare"][c]["settings"] == competitors.get(c).description
+        assert d["compare"][c]["params"] == competitors.get(c).params
     # acos near 1 resolves ~1e-6°: the published formula's floor, far below any real error
     assert d["mean"] == pytest.approx({"total": 0.0, "heading": 0.0, "inclination": 0.0}, abs=1e-5)
     assert set(d["compare"]) == {"tilted", *comps}
@@ -211,3 +218,42 @@ def test_runner_missing(monkeypatch, kf):
         code, out, err = kf("bench", "accuracy", "--data", str(broad.bundled_trials()[0]),
                             "--filter", "vqf", "--json", "--jobs", "1")
         assert code == 0 and json.loads(out)["filter"] == "vqf"
+
+
+def test_6d_kinefuse_filter_heading_is_flagged(kf, monkeypatch):
+    # a kinefuse filter run with mode=6d had its heading scored against north without a word
+    # (only 6D competitors got the note)
+    six = types.SimpleNamespace(**vars(FAKE), check_params=lambda name, p: {
+        "mode": 0.0 if p.get("mode") in ("6d", 0.0) else 1.0, **{k: v for k, v in p.items() if k != "mode"}})
+    monkeypatch.setattr(accuracy, "load_runner", lambda: six)
+    one = str(broad.bundled_trials()[0])
+    code, out, err = kf("bench", "accuracy", "--data", one, "--filter", "perfect", "--param", "mode=6d",
+                        "--jobs", "1")
+    assert code == 0, err
+    assert "perfect (ref) estimate heading without a magnetometer" in " ".join(out.split())
+    code, out, err = kf("bench", "accuracy", "--data", one, "--filter", "perfect", "--param", "mode=6d",
+                        "--jobs", "1", "--json")
+    assert code == 0, err
+    assert json.loads(out)["heading_referenced"] is False
+    assert json.loads(out)["params"] == {"mode": 0.0}      # what it ran with, resolved
+    code, out, err = kf("bench", "accuracy", "--data", one, "--filter", "perfect", "--jobs", "1")
+    assert code == 0 and "without a magnetometer" not in out
+
+
+def test_excerpt_named_with_data_is_flagged(kf):
+    # the "not comparable with full-trial figures" note came for the default data only
+    code, out, err = kf("bench", "accuracy", "--data", EXCERPT, "--filter", "perfect", "--jobs", "1",
+                        "--json")
+    assert code == 0, err
+    assert "excerpt scores are not comparable" in err
+
+
+def test_a_trial_twice_in_the_folder_is_refused(kf, tmp_path):
+    # 01.mat and 01.npz: the second's scores replaced the first's, one trial fewer, no word
+    import shutil
+    src = broad.bundled_trials()[0]
+    shutil.copy(src, tmp_path / src.name)
+    (tmp_path / f"{src.stem}.mat").write_bytes(b"")
+    code, out, err = kf("bench", "accuracy", "--data", str(tmp_path), "--filter", "perfect", "--jobs", "1")
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert "the same trial" in err and src.stem in err

@@ -29,6 +29,10 @@ def test_demo_writes_table_json_and_plot(kf, two_filters, tmp_path):
     assert "not available: tilted (q)" in err.replace("\n", " ")
     for c in ("vqf", "imufusion"):
         assert (c in d["estimators"]) == competitors.available(c)
+        if competitors.available(c):      # the settings each competitor ran with are stated
+            desc = competitors.get(c).description
+            assert d["estimators"][c]["settings"] == desc
+            assert f"{c}: {desc}" in " ".join(out.split())
     pngs = list((tmp_path / "d").glob("*.png"))
     assert [p.name for p in pngs] == ["32_disturbed_attached_magnet_1cm_perfect_f32.png"]
     assert pngs[0].read_bytes()[:8] == PNG_MAGIC and str(pngs[0]) in out.replace("\n", "")
