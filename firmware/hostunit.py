@@ -15,7 +15,8 @@
 
 :func:`unit_model` computes, with the generated Python models, exactly what the unit computes
 for HIL input: the HIL_SENSOR float32 fields -> counts (``KF_HIL_MODE`` 0: as
-``kinefuse.host.link.hil.raw_counts``, then the generated calibration map ``calib_apply``) or
+``kinefuse.host.link.hil.raw_counts``, then the generated calibration map ``calib_apply``; the
+gyro fields KF_RAW_SAMPLE echoes are ``raw_gyro_counts``, with ``gyro_shift``) or
 direct float32 values (mode 1: gyr, acc as sent, mag ``float32(gauss) * 100f``), the time step
 from ``time_usec`` differences (the first sample: the nominal period ``round(1e6 / KF_RATE_HZ)``),
 then the filter; the q build reports ``float32(raw) * 2^-frac`` in KF_ORIENTATION and, with
@@ -250,6 +251,7 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
     status = np.zeros(n, np.int64)
     raw = np.zeros((n, 9), np.int64)
     flags = np.zeros(n, np.int64)
+    shifts = np.zeros(n, np.int64)
     qr = np.zeros((n, 4), np.int64)
     first_counter = None
     got_raw = got_ori = 0
@@ -292,6 +294,7 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
                     continue
                 if f.msgid == MSG_RAW:
                     raw[i] = [m.acc_x, m.acc_y, m.acc_z, m.gyro_x, m.gyro_y, m.gyro_z, m.mag_x, m.mag_y, m.mag_z]
+                    shifts[i] = getattr(m, "gyro_shift", 0)   # extension field: 0 when absent
                     flags[i] = m.flags
                     counters[i] = m.sample_counter
                     t_echo[i] = m.time_boot_us
@@ -305,7 +308,8 @@ def hil_run(session, time_us, acc, gyr, mag_uT, mag_updated=None, window: int = 
                     seen_ori[i] = True
                     last_ori = (i, m.sample_counter)
     out = {"q": q, "cov": cov, "counter": counters, "time_us": t_echo, "status": status,
-           "acc": raw[:, 0:3], "gyr": raw[:, 3:6], "mag": raw[:, 6:9], "flags": flags}
+           "acc": raw[:, 0:3], "gyr": raw[:, 3:6], "mag": raw[:, 6:9], "flags": flags,
+           "gyro_shift": shifts}
     if q_raw:
         out["q_raw"] = qr
     return out
@@ -333,18 +337,22 @@ def unit_model(name: str, system: str, time_us, acc, gyr, mag_uT, mag_updated=No
     models: ``q`` (N, 4) float32 as in KF_ORIENTATION, ``q_raw`` (q build: the raw Q values),
     ``counts`` (N, 9) as echoed in KF_RAW_SAMPLE, ``rejected``."""
     from kinefuse.codegen.runner import runner
-    from kinefuse.host.link.hil import UT_PER_GAUSS, raw_counts
+    from kinefuse.host.link.hil import UT_PER_GAUSS, raw_counts, raw_gyro_counts
     n = len(time_us)
     acc32, gyr32 = _f32(acc).reshape(n, 3), _f32(gyr).reshape(n, 3)
     gauss32 = _f32(np.asarray(mag_uT, np.float64).reshape(n, 3) / UT_PER_GAUSS)
     upd = np.ones(n, bool) if mag_updated is None else np.asarray(mag_updated, bool)
     a, g, m, _, _ = raw_counts(acc32.astype(np.float64), gyr32.astype(np.float64),
                                gauss32.astype(np.float64) * UT_PER_GAUSS)
-    counts = np.concatenate([a, g, m], axis=1).astype(np.int64)
+    # KF_RAW_SAMPLE's gyro fields: units of 2^gyro_shift mrad/s; the calibration map (int16
+    # input) takes g, the 1 mrad/s counts saturated
+    g_sent, shift, _ = raw_gyro_counts(gyr32.astype(np.float64))
+    counts = np.concatenate([a, g_sent, m], axis=1).astype(np.int64)
     if mode == 0:
         out = counts_model(name, system, time_us, a, g, m, upd, rate_hz=rate_hz, params=params,
                            calib=calib, mag_enable=mag_enable)
         out["counts"] = counts
+        out["gyro_shift"] = shift.astype(np.int64)
         return out
     dt_us = time_steps_us(time_us, rate_hz)
     fi = runner(name, f"{system}-model")
@@ -357,6 +365,7 @@ def unit_model(name: str, system: str, time_us, acc, gyr, mag_uT, mag_updated=No
     out = _filter_model(name, system, inputs, n, params)
     out["inputs"] = inputs
     out["counts"] = counts
+    out["gyro_shift"] = shift.astype(np.int64)
     return out
 
 
@@ -543,14 +552,19 @@ def calibrated_f32(time_us, acc, gyr, mag_uT, *, rate_hz: int = 1000, mode: int 
     and the clipping ``flags`` (N,) the unit derives (KF_RAW_SAMPLE_FLAGS ACC/GYRO/MAG_CLIPPED)."""
     from kinefuse.codegen import estimators
     from kinefuse.codegen.runner import runner
-    from kinefuse.host.link.hil import UT_PER_GAUSS, raw_counts
+    from kinefuse.host.link.hil import UT_PER_GAUSS, raw_counts, raw_sample_counts
     n = len(time_us)
     acc32, gyr32 = _f32(acc).reshape(n, 3), _f32(gyr).reshape(n, 3)
     gauss32 = _f32(np.asarray(mag_uT, np.float64).reshape(n, 3) / UT_PER_GAUSS)
+    # mode 0: the flags of the filter input, the gyro clipped where the 1 mrad/s counts of the
+    # calibration map's int16 input saturate (KF_RAW_SAMPLE may still carry it with gyro_shift)
     a, g, m, _, flags = raw_counts(acc32.astype(np.float64), gyr32.astype(np.float64),
                                    gauss32.astype(np.float64) * UT_PER_GAUSS)
     dt_us = time_steps_us(time_us, rate_hz)
     if mode == 1:
+        # direct float32 input: GYRO_CLIPPED only beyond the largest gyro_shift (as sent)
+        flags = raw_sample_counts(acc32.astype(np.float64), gyr32.astype(np.float64),
+                                  gauss32.astype(np.float64) * UT_PER_GAUSS)[4]
         dt32 = (dt_us.astype(np.float32) * np.float32(1e-6)).astype(np.float32)
         return {"gyr": gyr32, "acc": acc32, "dt": dt32, "flags": flags}
     ci = runner("calib_apply", "f32-model")

@@ -61,6 +61,7 @@ static void take_sensor_sample(kf_app *app, const kf_raw_sample *r, int sensor)
     }
     memcpy(s.acc, r->acc, sizeof s.acc);
     memcpy(s.gyr, r->gyr, sizeof s.gyr);
+    memcpy(s.gyr_cal, r->gyr, sizeof s.gyr_cal);   /* the sensor's own counts: gyro_shift 0 */
     memcpy(s.mag, r->mag, sizeof s.mag);
     s.mag_valid = (uint8_t)(r->mag_valid != 0u);
     s.flags = clip_flags(r);

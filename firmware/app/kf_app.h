@@ -27,12 +27,15 @@
 typedef struct {
     uint64_t time_us;      /* device clock, us since boot */
     int16_t acc[3];        /* counts (KF_RAW_SAMPLE units unless the calibration scale says otherwise) */
-    int16_t gyr[3];
+    int16_t gyr[3];        /* KF_RAW_SAMPLE gyro fields: units of 2^gyro_shift counts */
+    int16_t gyr_cal[3];    /* the calibration map's gyro input: 1-count units, saturated (= gyr
+                            * when gyro_shift is 0) */
     int16_t mag[3];
     int16_t temperature;   /* cdegC */
     uint8_t mag_valid;
     uint8_t flags;         /* KF_RAW_SAMPLE_FLAGS_* known at input (clipped, simulated, temperature) */
     uint8_t direct;        /* 1: use f_* below instead of counts + calibration (HIL direct mode) */
+    uint8_t gyro_shift;    /* KF_RAW_SAMPLE.gyro_shift: 0 (sensor samples), 0..3 (HIL) */
     float f_gyr[3];        /* rad/s */
     float f_acc[3];        /* m/s^2 */
     float f_mag[3];        /* uT */

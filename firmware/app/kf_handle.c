@@ -308,6 +308,39 @@ static int16_t to_counts(double x, double scale, uint8_t *clip)
     return (int16_t)r;
 }
 
+#define KF_GYRO_SHIFT_MAX 3u
+
+/* gyro rad/s -> KF_RAW_SAMPLE gyro fields as kinefuse.host.link.hil.raw_gyro_counts: the
+ * smallest shift 0..3 for which all three nearbyint((x / 1e-3) * 2^-shift) (float64 division,
+ * exact power-of-two scaling, round half to even) are within +-32767; beyond 2^3 * 32.767 rad/s
+ * shift 3 saturated and *clip set.  gyr_cal: the shift-0 counts (to_counts) for the calibration
+ * map, whose input is int16 counts. */
+static uint8_t gyro_counts(const float g[3], int16_t gyr[3], int16_t gyr_cal[3], uint8_t *clip)
+{
+    static const double pow2_neg[KF_GYRO_SHIFT_MAX + 1u] = {1.0, 0.5, 0.25, 0.125};   /* exact */
+    double r0[3];
+    uint8_t shift = 0u, c0 = 0u;
+    for (int i = 0; i < 3; i++) {
+        r0[i] = (double)g[i] / KF_SCALE_GYR;
+        gyr_cal[i] = to_counts((double)g[i], KF_SCALE_GYR, &c0);
+    }
+    for (; shift < KF_GYRO_SHIFT_MAX; shift++) {
+        int fits = 1;
+        for (int i = 0; i < 3; i++) {
+            double r = nearbyint(r0[i] * pow2_neg[shift]);
+            fits &= (r <= 32767.0 && r >= -32767.0);
+        }
+        if (fits) {
+            break;
+        }
+    }
+    for (int i = 0; i < 3; i++) {
+        /* to_counts of the scaled quotient: the same rounding and saturation */
+        gyr[i] = to_counts(r0[i] * pow2_neg[shift], 1.0, clip);
+    }
+    return shift;
+}
+
 static void handle_hil(kf_app *app, const mavlink_message_t *msg)
 {
     mavlink_hil_sensor_t m;
@@ -335,12 +368,12 @@ static void handle_hil(kf_app *app, const mavlink_message_t *msg)
     s.time_us = m.time_usec;
     for (int i = 0; i < 3; i++) {
         s.acc[i] = to_counts((double)a[i], KF_SCALE_ACC, &ca);
-        s.gyr[i] = to_counts((double)g[i], KF_SCALE_GYR, &cg);
         s.mag[i] = to_counts((double)b[i] * KF_UT_PER_GAUSS, KF_SCALE_MAG, &cm);
         s.f_acc[i] = a[i];
         s.f_gyr[i] = g[i];
         s.f_mag[i] = b[i] * 100.0f;     /* gauss -> uT, one float32 rounding */
     }
+    s.gyro_shift = gyro_counts(g, s.gyr, s.gyr_cal, &cg);
     s.temperature = to_counts((double)m.temperature, KF_SCALE_TEMP, &ct);
     s.mag_valid = (uint8_t)((m.fields_updated & 0x1C0u) != 0u);
     s.flags = (uint8_t)(KF_RAW_SAMPLE_FLAGS_SIMULATED | (ca ? KF_RAW_SAMPLE_FLAGS_ACC_CLIPPED : 0u)

@@ -70,9 +70,18 @@ static void filter_input(const kf_app *app, kf_calib_state *calib, const kf_samp
         float dt = (float)dt_us * 1e-6f;   /* the same single rounding as calib_apply's dt */
         kf_gen_imu_from_f32(s->f_gyr, s->f_acc, s->f_mag, dt, in);
     } else {
-        kf_gen_calib_apply(calib, s->acc, s->gyr, s->mag, dt_us, in);
+        kf_gen_calib_apply(calib, s->acc, s->gyr_cal, s->mag, dt_us, in);   /* int16 counts */
     }
     in->mag_valid = (uint8_t)(s->mag_valid != 0u && app->values[KF_P_MAG_ENABLE].u != 0u);
+}
+
+/* the sample's clipping flags as they apply to the filter input: in HIL mode 0 a gyro_shift
+ * above 0 means the calibration map's int16 gyro input (1 mrad/s counts) saturated, so the leg
+ * EKF must not use that gyro (as before the shift existed); HIL direct mode takes the float32
+ * values themselves and the sensor path always has shift 0 */
+static uint8_t input_flags(const kf_sample *s)
+{
+    return (uint8_t)(s->flags | ((s->gyro_shift != 0u && !s->direct) ? KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED : 0u));
 }
 
 static void output_quat(const kf_app *app, float q[4])
@@ -91,7 +100,7 @@ static void send_raw(kf_app *app, const kf_sample *s, uint32_t counter, uint8_t 
     mavlink_msg_kf_raw_sample_pack_status(
         kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg, s->time_us, counter,
         s->acc[0], s->acc[1], s->acc[2], s->gyr[0], s->gyr[1], s->gyr[2], s->mag[0], s->mag[1],
-        s->mag[2], s->temperature, kf_sysid(app), flags);
+        s->mag[2], s->temperature, kf_sysid(app), flags, s->gyro_shift);
     if (kf_send(app, &msg)) {
         app->rates.raw++;
     }
@@ -249,7 +258,7 @@ void kf_app_sample2(kf_app *app, const kf_sample *s)
     uint32_t dt_us = time_step_us(app, s->time_us, &app->t_prev2, &app->have_prev2);
     filter_input(app, &app->calib2, s, dt_us, &in);   /* sensor 1's own map */
     if (app->leg_on) {
-        kf_leg_sample2(app, &in, s->flags);
+        kf_leg_sample2(app, &in, input_flags(s));
     }
     if (app->filter < 0) {
         return;
@@ -297,8 +306,8 @@ void kf_app_sample(kf_app *app, const kf_sample *s)
     app->last_in = in;
     app->mag_seen |= in.mag_valid;
     app->mag_present |= mag_valid;            /* a reading arrived, whether KF_MAG_ENABLE uses it or not */
-    if ((s->flags & (KF_RAW_SAMPLE_FLAGS_ACC_CLIPPED | KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED
-                     | KF_RAW_SAMPLE_FLAGS_MAG_CLIPPED)) != 0u) {
+    if ((input_flags(s) & (KF_RAW_SAMPLE_FLAGS_ACC_CLIPPED | KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED
+                           | KF_RAW_SAMPLE_FLAGS_MAG_CLIPPED)) != 0u) {
         app->clipped = 1u;
     }
     if (app->filter >= 0) {
@@ -314,7 +323,7 @@ void kf_app_sample(kf_app *app, const kf_sample *s)
         }
     }
     if (app->leg_on) {
-        kf_leg_step(app, &in, s->flags);
+        kf_leg_step(app, &in, input_flags(s));
     }
 
     if (app->streaming || hil) {

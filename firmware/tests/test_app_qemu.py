@@ -90,6 +90,31 @@ def test_hil_orientation_equals_the_model(board):
     assert np.array_equal(got["q"].view(np.uint32), ref["q"].view(np.uint32))
 
 
+def test_hil_gyro_above_1877_dps_uses_gyro_shift_as_the_model(board):
+    """KF_RAW_SAMPLE.gyro_shift on the target (its double arithmetic, nearbyint): rates through
+    every shift and beyond, counts + shift + GYRO_CLIPPED equal to the host model."""
+    from kinefuse.firmware.hostunit import hil_run, unit_model
+    from kinefuse.host.link.params import ParamClient
+    target, fw, q, s = board
+    n = 24
+    t = 3_000_000 + np.arange(n, dtype=np.int64) * 10_000
+    acc = np.tile([0.3, -0.2, 9.7], (n, 1))
+    dps = np.array([100, 1877, 1878, 2500, -2500, 3754, 3755, 7509, 7510, 15019, 15020, 20000] * 2, float)
+    gyr = np.column_stack([np.radians(dps), 0.1 + 0 * dps, np.where(np.arange(n) % 2, -0.2, np.radians(1900.0))])
+    mag = np.tile([10.0, 18.0, -40.0], (n, 1))
+    upd = np.ones(n, bool)
+    pc = ParamClient(s, 1, timeout=3.0)
+    pc.set("KF_RATE_HZ", 100)
+    pc.set("KF_FILTER", 3)
+    got = hil_run(s, t, acc, gyr, mag, upd, window=4, timeout=30)
+    ref = unit_model("madgwick", SYSTEM[target], t, acc, gyr, mag, upd, rate_hz=100)
+    assert set(np.unique(got["gyro_shift"]).tolist()) == {0, 1, 2, 3}
+    assert np.array_equal(got["gyro_shift"], ref["gyro_shift"])
+    assert np.array_equal(np.concatenate([got["acc"], got["gyr"], got["mag"]], 1), ref["counts"])
+    assert np.array_equal((got["flags"] & 2) != 0, np.abs(dps) >= 15020)   # clipped only beyond shift 3
+    assert np.array_equal(got["q"].view(np.uint32), ref["q"].view(np.uint32))
+
+
 def test_survives_garbage_on_the_uart(board):
     target, fw, q, s = board
     rng = np.random.default_rng(11)

@@ -221,7 +221,8 @@ def compared_outputs(system: str, unit_out: dict, from_model: bool) -> dict:
     """The outputs compared bit for bit (unit answers or unit model, same names)."""
     counts = unit_out["counts"] if from_model else \
         np.concatenate([unit_out["acc"], unit_out["gyr"], unit_out["mag"]], axis=1)
-    out = {"q": unit_out["q"], "cov": unit_out["cov"], "counts": counts}
+    # KF_RAW_SAMPLE's gyro fields are in units of 2^gyro_shift mrad/s: the shift is compared too
+    out = {"q": unit_out["q"], "cov": unit_out["cov"], "counts": counts, "gyro_shift": unit_out["gyro_shift"]}
     if system == "q":
         out["q_raw"] = unit_out["q_raw"]
     return out

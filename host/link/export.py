@@ -38,6 +38,7 @@ import numpy as np
 
 from kinefuse.host.errors import KinefuseError
 from kinefuse.host.link.dialect import RAW_SCALE
+from kinefuse.host.link.hil import gyro_radps
 from kinefuse.host.link.frames import DecodedFile
 from kinefuse.host.link.spec import MessageSpec, kinefuse_dialect
 from kinefuse.host.outputs import staged
@@ -70,9 +71,11 @@ def _columns(spec: MessageSpec, arr: np.ndarray) -> list[tuple[str, np.ndarray, 
     if name == "KF_RAW_SAMPLE":
         cols.append(("time_boot_us", arr["time_boot_us"], "%d"))
         cols.append(("sample_counter", arr["sample_counter"], "%d"))
+        gyr = gyro_radps(arr)   # x 2^gyro_shift per sample (the extension field; 0 when absent)
         for sensor, prefix, unit in (("acc", "acc", "mps2"), ("gyro", "gyr", "radps"), ("mag", "mag", "uT")):
-            for ax in "xyz":
-                cols.append((f"{prefix}_{ax}_{unit}", arr[f"{sensor}_{ax}"] * RAW_SCALE[sensor], "%.6g"))
+            for k, ax in enumerate("xyz"):
+                v = gyr[:, k] if sensor == "gyro" else arr[f"{sensor}_{ax}"] * RAW_SCALE[sensor]
+                cols.append((f"{prefix}_{ax}_{unit}", v, "%.6g"))
         # the field holds a measurement only with KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID (32): was
         # exported as a temperature (0.00 degC) without it; nan there, as the kfr reader does
         valid = (arr["flags"].astype(np.int64) & 32) != 0

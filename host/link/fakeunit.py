@@ -299,7 +299,7 @@ class FakeUnit:
 
     def _hil_sample(self, m) -> list:
         """HIL mode: answer a HIL_SENSOR with the KF_RAW_SAMPLE the sensors would have given."""
-        from kinefuse.host.link.hil import UT_PER_GAUSS, UPDATED_MAG, UPDATED_TEMPERATURE, raw_counts
+        from kinefuse.host.link.hil import UT_PER_GAUSS, UPDATED_MAG, UPDATED_TEMPERATURE, raw_sample_counts
         values = (m.xacc, m.yacc, m.zacc, m.xgyro, m.ygyro, m.zgyro, m.xmag, m.ymag, m.zmag)
         if getattr(m, "id", 0) != 0 or any(math.isnan(v) for v in values):
             # as the firmware (one-sensor unit): not processed, no answer, counted in
@@ -312,15 +312,17 @@ class FakeUnit:
         temperature, updated = m.temperature, m.fields_updated
         if math.isnan(temperature):       # as the firmware: no measurement, not flagged valid
             temperature, updated = 0.0, updated & ~UPDATED_TEMPERATURE
-        a, g, mg, t, clip = raw_counts([m.xacc, m.yacc, m.zacc], [m.xgyro, m.ygyro, m.zgyro],
-                                       [m.xmag * UT_PER_GAUSS, m.ymag * UT_PER_GAUSS, m.zmag * UT_PER_GAUSS],
-                                       temperature)
+        # as the firmware: the gyro with the smallest KF_RAW_SAMPLE.gyro_shift that fits int16
+        a, g, mg, t, clip, shift = raw_sample_counts(
+            [m.xacc, m.yacc, m.zacc], [m.xgyro, m.ygyro, m.zgyro],
+            [m.xmag * UT_PER_GAUSS, m.ymag * UT_PER_GAUSS, m.zmag * UT_PER_GAUSS], temperature)
         flags = int(clip) | 16 | 64 | (8 if updated & UPDATED_MAG else 0) \
             | (32 if updated & UPDATED_TEMPERATURE else 0)
         frame = self.enc.encode(MSG_RAW, time_boot_us=m.time_usec, sample_counter=self.sample_counter,
                                 acc_x=int(a[0]), acc_y=int(a[1]), acc_z=int(a[2]), gyro_x=int(g[0]), gyro_y=int(g[1]),
                                 gyro_z=int(g[2]), mag_x=int(mg[0]), mag_y=int(mg[1]), mag_z=int(mg[2]),
-                                temperature=int(t), unit_id=self.params["KF_UNIT_ID"], flags=flags)
+                                temperature=int(t), unit_id=self.params["KF_UNIT_ID"], flags=flags,
+                                gyro_shift=int(shift))
         self.sample_counter = (self.sample_counter + 1) & 0xFFFFFFFF
         self.samples_taken = (self.samples_taken + 1) & 0xFFFFFFFF
         self.sent_samples += 1

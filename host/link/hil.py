@@ -42,8 +42,42 @@ def hil_sensor_frames(time_us, acc_mps2, gyro_radps, mag_uT=None, temperature_de
     return encode_batch("HIL_SENSOR", v, sysid=sysid, compid=compid, seq0=seq0, n=n)
 
 
+#: the largest KF_RAW_SAMPLE.gyro_shift a unit sends (kinefuse.xml): gyro range 2^3 * 32.767 rad/s
+GYRO_SHIFT_MAX = 3
+
+
+def raw_gyro_counts(gyro_radps):
+    """Gyro rad/s (..., 3) -> (KF_RAW_SAMPLE gyro_x/y/z, gyro_shift, clipped) as the unit forms
+    them: per sample the smallest shift 0..3 for which all three ``round((x / 1e-3) * 2^-shift)``
+    (float64 division, exact power-of-two scaling, round half to even) are within +-32767;
+    beyond 2^3 * 32.767 rad/s shift 3, saturated to int16 and ``clipped``."""
+    r0 = np.asarray(gyro_radps, np.float64) / RAW_SCALE["gyro"]
+    shift = np.full(r0.shape[:-1], GYRO_SHIFT_MAX, np.uint8)
+    for k in range(GYRO_SHIFT_MAX - 1, -1, -1):
+        fits = np.all(np.abs(np.round(np.ldexp(r0, -k))) <= 32767, axis=-1)
+        shift = np.where(fits, np.uint8(k), shift).astype(np.uint8)
+    r = np.round(np.ldexp(r0, -shift[..., None].astype(np.int64)))
+    return (np.clip(r, -32768, 32767).astype(np.int16), shift,
+            np.any(np.abs(r) > 32767, axis=-1))
+
+
+def gyro_radps(arr) -> np.ndarray:
+    """(N, 3) rad/s of decoded KF_RAW_SAMPLE rows (a structured array or mapping with gyro_x/y/z
+    and, from firmware that sends it, gyro_shift): gyro_raw * 2^gyro_shift * 1e-3.  Rows
+    without the extension field (older firmware, older recordings) have shift 0."""
+    g = np.column_stack([np.asarray(arr[f"gyro_{x}"]) for x in "xyz"]).astype(np.float64)
+    names = getattr(getattr(arr, "dtype", None), "names", None)
+    has = ("gyro_shift" in names) if names is not None else ("gyro_shift" in arr)
+    if has:
+        g = np.ldexp(g, np.asarray(arr["gyro_shift"]).astype(np.int64).reshape(-1, 1))
+    return g * RAW_SCALE["gyro"]
+
+
 def raw_counts(acc_mps2, gyro_radps, mag_uT, temperature_degC=0.0):
-    """SI values -> the int16 fields of KF_RAW_SAMPLE (round to nearest, saturate) + clip flags."""
+    """SI values -> the int16 fields of KF_RAW_SAMPLE (round to nearest, saturate) + clip flags,
+    the gyro in 1-count (mrad/s) units: the counts the unit's calibration map (int16 input)
+    takes in HIL mode 0.  The gyro fields the unit sends: :func:`raw_gyro_counts`;
+    :func:`raw_sample_counts` gives all fields as sent."""
     def q(x, scale):
         r = np.round(np.asarray(x, np.float64) / scale)
         return np.clip(r, -32768, 32767).astype(np.int16), np.any(np.abs(r) > 32767, axis=-1)
@@ -53,3 +87,13 @@ def raw_counts(acc_mps2, gyro_radps, mag_uT, temperature_degC=0.0):
     t, _ = q(np.asarray(temperature_degC)[..., None], RAW_SCALE["temperature"])
     flags = ca * 1 | cg * 2 | cm * 4
     return a, g, m, t[..., 0], flags.astype(np.uint8)
+
+
+def raw_sample_counts(acc_mps2, gyro_radps, mag_uT, temperature_degC=0.0):
+    """SI values -> the fields of KF_RAW_SAMPLE as the unit sends them for HIL input:
+    (acc, gyro, mag, temperature, flags, gyro_shift); the gyro with :func:`raw_gyro_counts`
+    (GYRO_CLIPPED only beyond 2^3 * 32.767 rad/s), the rest as :func:`raw_counts`."""
+    a, _, m, t, flags = raw_counts(acc_mps2, gyro_radps, mag_uT, temperature_degC)
+    g, shift, cg = raw_gyro_counts(gyro_radps)
+    flags = (flags & ~np.uint8(2)) | (cg * 2).astype(np.uint8)
+    return a, g, m, t, flags.astype(np.uint8), shift

@@ -14,7 +14,7 @@ Without ``unit=`` a file with one unit is read; a file with several fails with a
 
 Samples (dialect ``firmware/mavlink/kinefuse.xml``) are converted to SI with the dialect's
 scale factors (``RAW_SCALE``, the same as ``kinefuse export``): acc mG × 9.80665e-3 → m/s²,
-gyro mrad/s × 1e-3 → rad/s, mag mgauss × 0.1 → µT, temperature cdegC × 0.01 → °C.
+gyro mrad/s × 2^gyro_shift × 1e-3 → rad/s (``gyro_shift``: 0 in recordings without it), mag mgauss × 0.1 → µT, temperature cdegC × 0.01 → °C.
 
 **Time base.** ``t`` is the HOST clock: seconds of the host's monotonic clock since the
 recording started (``metadata["start_unix_ns"]`` gives UTC of ``t = 0``).  Each sample's device
@@ -198,6 +198,7 @@ def _unwrap(cnt: np.ndarray) -> np.ndarray:
 def read(path: str, *, unit=None, **_) -> Recording:
     """One unit of a ``.kfr`` recording (or raw MAVLink capture) as a :class:`Recording`."""
     from kinefuse.host.link.dialect import RAW_SCALE
+    from kinefuse.host.link.hil import gyro_radps
     from kinefuse.host.link.stats import clock_jumps, counter_analysis, fit_clock, leading_stale
     path = str(path)
     df = _decode(path)
@@ -280,7 +281,7 @@ def read(path: str, *, unit=None, **_) -> Recording:
     flags = a["flags"].astype(np.int64)
 
     acc = np.column_stack([a[f"acc_{x}"] for x in "xyz"]).astype(np.float64) * RAW_SCALE["acc"]
-    gyr = np.column_stack([a[f"gyro_{x}"] for x in "xyz"]).astype(np.float64) * RAW_SCALE["gyro"]
+    gyr = gyro_radps(a)    # x 2^gyro_shift per sample (0 in recordings without the field)
     mag_all = np.column_stack([a[f"mag_{x}"] for x in "xyz"]).astype(np.float64) * RAW_SCALE["mag"]
     temp = np.where(flags & TEMPERATURE_VALID, a["temperature"].astype(np.float64) * RAW_SCALE["temperature"],
                     np.nan)

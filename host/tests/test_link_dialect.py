@@ -88,7 +88,7 @@ def test_dialect_hash_matches_c_header():
 
 def test_generated_module_knows_our_messages():
     d = kinefuse_dialect()
-    for name, size in [("KF_RAW_SAMPLE", 34), ("KF_ORIENTATION", 61), ("KF_JOINT_ANGLE", 29),
+    for name, size in [("KF_RAW_SAMPLE", 35), ("KF_ORIENTATION", 61), ("KF_JOINT_ANGLE", 29),
                        ("KF_EFFORTS", 111), ("KF_UNIT_STATUS", 95)]:   # 83 + 12 bytes of extensions
         assert d[name].length == size, name
     m = module()
@@ -109,6 +109,7 @@ C_PROGRAM = r"""
 #include "kf_dialect.h"
 
 /* pack: argv = p sysid compid time_boot_us sample_counter acc_x .. temperature unit_id flags
+                 gyro_shift
    pack_orientation: argv = o sysid compid time_boot_us counter qw qx qy qz rejected status
                              frame filter unit cov0..cov5   (floats in hex bit patterns)
    parse: bytes on stdin, one line per decoded KF_RAW_SAMPLE / KF_ORIENTATION */
@@ -120,13 +121,14 @@ int main(int argc, char **argv)
 {
     mavlink_message_t msg;
     uint8_t buf[MAVLINK_MAX_PACKET_LEN];
-    if (argc > 1 && argv[1][0] == 'p' && argc == 18) {
+    if (argc > 1 && argv[1][0] == 'p' && argc == 19) {
         mavlink_msg_kf_raw_sample_pack((uint8_t)u32(argv[2]), (uint8_t)u32(argv[3]), &msg,
             strtoull(argv[4], NULL, 0), u32(argv[5]),
             (int16_t)atoi(argv[6]), (int16_t)atoi(argv[7]), (int16_t)atoi(argv[8]),
             (int16_t)atoi(argv[9]), (int16_t)atoi(argv[10]), (int16_t)atoi(argv[11]),
             (int16_t)atoi(argv[12]), (int16_t)atoi(argv[13]), (int16_t)atoi(argv[14]),
-            (int16_t)atoi(argv[15]), (uint8_t)u32(argv[16]), (uint8_t)u32(argv[17]));
+            (int16_t)atoi(argv[15]), (uint8_t)u32(argv[16]), (uint8_t)u32(argv[17]),
+            (uint8_t)u32(argv[18]));
     } else if (argc > 1 && argv[1][0] == 'o' && argc == 21) {
         float cov[6];
         int k;
@@ -144,10 +146,10 @@ int main(int argc, char **argv)
                 if (msg.msgid == MAVLINK_MSG_ID_KF_RAW_SAMPLE) {
                     mavlink_kf_raw_sample_t s;
                     mavlink_msg_kf_raw_sample_decode(&msg, &s);
-                    printf("R %u %u %u %" PRIu64 " %" PRIu32 " %d %d %d %d %d %d %d %d %d %d %u %u\n",
+                    printf("R %u %u %u %" PRIu64 " %" PRIu32 " %d %d %d %d %d %d %d %d %d %d %u %u %u\n",
                            msg.sysid, msg.compid, msg.seq, s.time_boot_us, s.sample_counter,
                            s.acc_x, s.acc_y, s.acc_z, s.gyro_x, s.gyro_y, s.gyro_z,
-                           s.mag_x, s.mag_y, s.mag_z, s.temperature, s.unit_id, s.flags);
+                           s.mag_x, s.mag_y, s.mag_z, s.temperature, s.unit_id, s.flags, s.gyro_shift);
                 } else if (msg.msgid == MAVLINK_MSG_ID_KF_ORIENTATION) {
                     mavlink_kf_orientation_t o;
                     mavlink_msg_kf_orientation_decode(&msg, &o);
@@ -258,7 +260,8 @@ def _raw_values(rng):
     return dict(time_boot_us=int(rng.integers(0, 2**63)), sample_counter=int(rng.integers(0, 2**32)),
                 acc_x=i16(), acc_y=i16(), acc_z=i16(), gyro_x=i16(), gyro_y=i16(), gyro_z=i16(),
                 mag_x=i16(), mag_y=i16(), mag_z=i16(), temperature=i16(),
-                unit_id=int(rng.integers(0, 256)), flags=int(rng.integers(0, 256)))
+                unit_id=int(rng.integers(0, 256)), flags=int(rng.integers(0, 256)),
+                gyro_shift=int(rng.integers(0, 4)))   # the extension field
 
 
 @needs_gcc
@@ -268,7 +271,7 @@ def test_c_packs_python_decodes(c_prog):
     for case in range(25):
         v = _raw_values(rng)
         if case % 5 == 0:  # zero tail: the C side truncates, Python must pad
-            v.update(mag_z=0, temperature=0, unit_id=0, flags=0)
+            v.update(mag_z=0, temperature=0, unit_id=0, flags=0, gyro_shift=0)
         sysid, compid = int(rng.integers(1, 255)), 200
         frame = subprocess.run([str(c_prog), "p", str(sysid), str(compid)] + [str(v[k]) for k in fields],
                                capture_output=True, check=True).stdout
@@ -291,11 +294,12 @@ def test_python_packs_c_decodes(c_prog):
     for case in range(30):
         v = _raw_values(rng)
         if case % 4 == 0:
-            v.update(temperature=0, unit_id=0, flags=0)
+            v.update(temperature=0, unit_id=0, flags=0, gyro_shift=0)
         stream += enc.encode("KF_RAW_SAMPLE", **v)
         expected.append(f"R 9 200 {case} {v['time_boot_us']} {v['sample_counter']} "
                         + " ".join(str(v[k]) for k in ["acc_x", "acc_y", "acc_z", "gyro_x", "gyro_y", "gyro_z",
-                                                       "mag_x", "mag_y", "mag_z", "temperature", "unit_id", "flags"]))
+                                                       "mag_x", "mag_y", "mag_z", "temperature", "unit_id", "flags",
+                                                       "gyro_shift"]))
     out = subprocess.run([str(c_prog), "r"], input=stream, capture_output=True, check=True).stdout.decode()
     lines = out.splitlines()
     assert lines[:-1] == expected

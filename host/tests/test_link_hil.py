@@ -72,7 +72,8 @@ def test_fake_unit_in_the_loop_answers_hil_sensor():
         n = 200
         t = 10_000_000 + np.arange(n, dtype=np.uint64) * 1000
         acc = np.tile([0.1, -0.2, 9.80665], (n, 1)) + np.arange(n)[:, None] * 1e-3
-        gyro = np.tile([0.0, 0.5, -40.0], (n, 1))  # z saturates: beyond 32.767 rad/s
+        gyro = np.tile([0.0, 0.5, -40.0], (n, 1))  # z beyond 32.767 rad/s: gyro_shift 1
+        gyro[180:, 2] = -300.0                     # beyond 2^3 * 32.767 rad/s: saturates
         mag = np.tile([20.0, 0.0, -45.0], (n, 1))
         s.send_bytes(hil_sensor_frames(t, acc, gyro, mag))
         got = []
@@ -84,8 +85,11 @@ def test_fake_unit_in_the_loop_answers_hil_sensor():
         assert len(got) == n
         assert [m.time_boot_us for m in got] == t.tolist()
         k = 150
-        assert got[k].acc_z == round(acc[k, 2] / RAW_SCALE["acc"]) and got[k].gyro_y == 500
-        assert got[k].gyro_z == -32768 and got[k].flags & 2  # clipped, and flagged
+        assert got[k].acc_z == round(acc[k, 2] / RAW_SCALE["acc"]) and got[k].gyro_shift == 1
+        assert got[k].gyro_y == 250 and got[k].gyro_z == -20000 and not got[k].flags & 2  # 2 mrad/s
+        assert got[0].gyro_shift == 1 and got[0].gyro_y == 250
+        k = 190
+        assert got[k].gyro_shift == 3 and got[k].gyro_z == -32768 and got[k].flags & 2  # clipped, and flagged
         assert got[k].mag_x == 200 and got[k].mag_z == -450
     finally:
         s.close()

@@ -4,6 +4,6 @@
 
 /* First 32 bits of SHA-256 over id, name, CRC_EXTRA and fields of every message of the dialect.
    Sent in KF_UNIT_STATUS.dialect_hash so the host detects firmware built from another dialect. */
-#define KF_DIALECT_HASH 0xC86E4228UL
+#define KF_DIALECT_HASH 0xDE529F28UL
 
 #endif /* KF_DIALECT_H */

@@ -364,7 +364,7 @@ enums["KF_RAW_SAMPLE_FLAGS"].bitmask = True
 KF_RAW_SAMPLE_FLAGS_ACC_CLIPPED = 1
 enums["KF_RAW_SAMPLE_FLAGS"][1] = EnumEntry("KF_RAW_SAMPLE_FLAGS_ACC_CLIPPED", """At least one accelerometer axis reached the sensor range or the int16 range of the message (+-32.767 g).""")
 KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED = 2
-enums["KF_RAW_SAMPLE_FLAGS"][2] = EnumEntry("KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED", """At least one gyroscope axis reached the sensor range or the int16 range of the message (+-32.767 rad/s).""")
+enums["KF_RAW_SAMPLE_FLAGS"][2] = EnumEntry("KF_RAW_SAMPLE_FLAGS_GYRO_CLIPPED", """At least one gyroscope axis reached the sensor range or the int16 range of the message at the largest gyro_shift (3: +-262.136 rad/s).""")
 KF_RAW_SAMPLE_FLAGS_MAG_CLIPPED = 4
 enums["KF_RAW_SAMPLE_FLAGS"][4] = EnumEntry("KF_RAW_SAMPLE_FLAGS_MAG_CLIPPED", """At least one magnetometer axis reached the sensor range or the int16 range of the message (+-3276.7 uT).""")
 KF_RAW_SAMPLE_FLAGS_MAG_UPDATED = 8
@@ -454,7 +454,7 @@ enums["KF_ORIENTATION_STATUS"][32] = EnumEntry("KF_ORIENTATION_STATUS_BIAS_CONVE
 KF_ORIENTATION_STATUS_HEADING_TARED = 64
 enums["KF_ORIENTATION_STATUS"][64] = EnumEntry("KF_ORIENTATION_STATUS_HEADING_TARED", """Heading redefined by MAV_CMD_KF_HEADING_TARE: the earth frame's horizontal axes no longer point to magnetic East/North.""")
 KF_ORIENTATION_STATUS_INPUT_CLIPPED = 128
-enums["KF_ORIENTATION_STATUS"][128] = EnumEntry("KF_ORIENTATION_STATUS_INPUT_CLIPPED", """A sensor sample used since the previous message was clipped.""")
+enums["KF_ORIENTATION_STATUS"][128] = EnumEntry("KF_ORIENTATION_STATUS_INPUT_CLIPPED", """A sensor sample used since the previous message was clipped (a KF_RAW_SAMPLE_FLAGS_*_CLIPPED flag, or in HIL mode 0 a gyro rate beyond the calibration map's int16 input of 1 mrad/s counts: a sample sent with gyro_shift above 0).""")
 KF_ORIENTATION_STATUS_NUMERIC_RESET = 256
 enums["KF_ORIENTATION_STATUS"][256] = EnumEntry("KF_ORIENTATION_STATUS_NUMERIC_RESET", """A non-finite state was detected and the filter was reset since the previous message.""")
 KF_ORIENTATION_STATUS_ENUM_END = 257
@@ -6795,8 +6795,9 @@ class MAVLink_kf_raw_sample_message(MAVLink_message):
     kB/s, half of a 921600-baud link, leaving room for orientation and
     status. Resolution (1 mG, 1 mrad/s, 0.1 uT) is below the sensors'
     noise at 1 kHz. SI values: acc = acc_raw * 9.80665e-3 m/s^2, gyro
-    = gyro_raw * 1e-3 rad/s, mag = mag_raw * 0.1 uT, temperature = raw
-    * 0.01 degC. The unit's own filters must consume exactly these
+    = gyro_raw * 2^gyro_shift * 1e-3 rad/s (gyro_shift: extension
+    field, 0 if absent), mag = mag_raw * 0.1 uT, temperature = raw *
+    0.01 degC. The unit's own filters must consume exactly these
     values (float32(raw) * float32(scale), one rounding) so that a
     recording replayed on the host reproduces the unit's estimate bit
     for bit.
@@ -6804,22 +6805,22 @@ class MAVLink_kf_raw_sample_message(MAVLink_message):
 
     id = MAVLINK_MSG_ID_KF_RAW_SAMPLE
     msgname = "KF_RAW_SAMPLE"
-    fieldnames = ["time_boot_us", "sample_counter", "acc_x", "acc_y", "acc_z", "gyro_x", "gyro_y", "gyro_z", "mag_x", "mag_y", "mag_z", "temperature", "unit_id", "flags"]
-    ordered_fieldnames = ["time_boot_us", "sample_counter", "acc_x", "acc_y", "acc_z", "gyro_x", "gyro_y", "gyro_z", "mag_x", "mag_y", "mag_z", "temperature", "unit_id", "flags"]
-    fieldtypes = ["uint64_t", "uint32_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "uint8_t", "uint8_t"]
+    fieldnames = ["time_boot_us", "sample_counter", "acc_x", "acc_y", "acc_z", "gyro_x", "gyro_y", "gyro_z", "mag_x", "mag_y", "mag_z", "temperature", "unit_id", "flags", "gyro_shift"]
+    ordered_fieldnames = ["time_boot_us", "sample_counter", "acc_x", "acc_y", "acc_z", "gyro_x", "gyro_y", "gyro_z", "mag_x", "mag_y", "mag_z", "temperature", "unit_id", "flags", "gyro_shift"]
+    fieldtypes = ["uint64_t", "uint32_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "int16_t", "uint8_t", "uint8_t", "uint8_t"]
     fielddisplays_by_name: Dict[str, str] = {"flags": "bitmask"}
     fieldenums_by_name: Dict[str, str] = {"flags": "KF_RAW_SAMPLE_FLAGS"}
     fieldunits_by_name: Dict[str, str] = {"time_boot_us": "us", "acc_x": "mG", "acc_y": "mG", "acc_z": "mG", "gyro_x": "mrad/s", "gyro_y": "mrad/s", "gyro_z": "mrad/s", "mag_x": "mgauss", "mag_y": "mgauss", "mag_z": "mgauss", "temperature": "cdegC"}
-    native_format = bytearray(b"<QIhhhhhhhhhhBB")
-    orders = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13]
-    lengths = [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]
-    array_lengths = [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
+    native_format = bytearray(b"<QIhhhhhhhhhhBBB")
+    orders = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14]
+    lengths = [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]
+    array_lengths = [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
     crc_extra = 197
-    unpacker = struct.Struct("<QIhhhhhhhhhhBB")
+    unpacker = struct.Struct("<QIhhhhhhhhhhBBB")
     instance_field = None
     instance_offset = -1
 
-    def __init__(self, time_boot_us: int, sample_counter: int, acc_x: int, acc_y: int, acc_z: int, gyro_x: int, gyro_y: int, gyro_z: int, mag_x: int, mag_y: int, mag_z: int, temperature: int, unit_id: int, flags: int):
+    def __init__(self, time_boot_us: int, sample_counter: int, acc_x: int, acc_y: int, acc_z: int, gyro_x: int, gyro_y: int, gyro_z: int, mag_x: int, mag_y: int, mag_z: int, temperature: int, unit_id: int, flags: int, gyro_shift: int = 0):
         MAVLink_message.__init__(self, MAVLink_kf_raw_sample_message.id, MAVLink_kf_raw_sample_message.msgname)
         self._fieldnames = MAVLink_kf_raw_sample_message.fieldnames
         self._instance_field = MAVLink_kf_raw_sample_message.instance_field
@@ -6838,9 +6839,10 @@ class MAVLink_kf_raw_sample_message(MAVLink_message):
         self.temperature = temperature
         self.unit_id = unit_id
         self.flags = flags
+        self.gyro_shift = gyro_shift
 
     def pack(self, mav: "MAVLink", force_mavlink1: bool = False) -> bytes:
-        return self._pack(mav, self.crc_extra, self.unpacker.pack(self.time_boot_us, self.sample_counter, self.acc_x, self.acc_y, self.acc_z, self.gyro_x, self.gyro_y, self.gyro_z, self.mag_x, self.mag_y, self.mag_z, self.temperature, self.unit_id, self.flags), force_mavlink1=force_mavlink1)
+        return self._pack(mav, self.crc_extra, self.unpacker.pack(self.time_boot_us, self.sample_counter, self.acc_x, self.acc_y, self.acc_z, self.gyro_x, self.gyro_y, self.gyro_z, self.mag_x, self.mag_y, self.mag_z, self.temperature, self.unit_id, self.flags, self.gyro_shift), force_mavlink1=force_mavlink1)
 
 
 # Define name on the class for backwards compatibility (it is now msgname).
@@ -17746,16 +17748,17 @@ class MAVLink(object):
         m._header = MAVLink_header(msgId, incompat_flags, compat_flags, mlen, seq, srcSystem, srcComponent)
         return m
 
-    def kf_raw_sample_encode(self, time_boot_us: int, sample_counter: int, acc_x: int, acc_y: int, acc_z: int, gyro_x: int, gyro_y: int, gyro_z: int, mag_x: int, mag_y: int, mag_z: int, temperature: int, unit_id: int, flags: int) -> MAVLink_kf_raw_sample_message:
+    def kf_raw_sample_encode(self, time_boot_us: int, sample_counter: int, acc_x: int, acc_y: int, acc_z: int, gyro_x: int, gyro_y: int, gyro_z: int, mag_x: int, mag_y: int, mag_z: int, temperature: int, unit_id: int, flags: int, gyro_shift: int = 0) -> MAVLink_kf_raw_sample_message:
         """
         One sensor sample of a unit, in sensor-frame axes. Integer scaling
         (the units of RAW_IMU) keeps a frame at 46 bytes: 1 kHz uses
         46 kB/s, half of a 921600-baud link, leaving room for
         orientation and status. Resolution (1 mG, 1 mrad/s, 0.1 uT) is
         below the sensors' noise at 1 kHz. SI values: acc = acc_raw *
-        9.80665e-3 m/s^2, gyro = gyro_raw * 1e-3 rad/s, mag = mag_raw
-        * 0.1 uT, temperature = raw * 0.01 degC. The unit's own
-        filters must consume exactly these values (float32(raw) *
+        9.80665e-3 m/s^2, gyro = gyro_raw * 2^gyro_shift * 1e-3 rad/s
+        (gyro_shift: extension field, 0 if absent), mag = mag_raw *
+        0.1 uT, temperature = raw * 0.01 degC. The unit's own filters
+        must consume exactly these values (float32(raw) *
         float32(scale), one rounding) so that a recording replayed on
         the host reproduces the unit's estimate bit for bit.
 
@@ -17773,20 +17776,22 @@ class MAVLink(object):
         temperature               : Sensor die temperature (valid if KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID). [cdegC] (type:int16_t)
         unit_id                   : Unit id (equals the MAVLink system id unless configured otherwise). (type:uint8_t)
         flags                     : Sample flags. (type:uint8_t, values:KF_RAW_SAMPLE_FLAGS)
+        gyro_shift                : Gyroscope range extension: gyro_x/y/z are in units of 2^gyro_shift mrad/s (gyro = gyro_raw * 2^gyro_shift * 1e-3 rad/s). The unit picks, per sample, the smallest shift 0..3 for which all three axes fit int16 after rounding (round half to even of the float64 quotient rate / (2^shift * 1e-3 rad/s)), so samples within +-32.767 rad/s keep 1 mrad/s resolution, send 0 (no bytes on the wire) and are unchanged; 1..3 extend the range to +-65.534, +-131.068, +-262.136 rad/s. A decoder without this field (or a recording made before it) reads 0. Samples taken from the unit's own sensor carry the sensor's counts: 0. In HIL mode 0 the calibration map still takes int16 1 mrad/s counts (saturated): a sample with gyro_shift above 0 sets KF_ORIENTATION_STATUS_INPUT_CLIPPED; HIL direct mode uses the float32 rates. (type:uint8_t)
 
         """
-        return MAVLink_kf_raw_sample_message(time_boot_us, sample_counter, acc_x, acc_y, acc_z, gyro_x, gyro_y, gyro_z, mag_x, mag_y, mag_z, temperature, unit_id, flags)
+        return MAVLink_kf_raw_sample_message(time_boot_us, sample_counter, acc_x, acc_y, acc_z, gyro_x, gyro_y, gyro_z, mag_x, mag_y, mag_z, temperature, unit_id, flags, gyro_shift)
 
-    def kf_raw_sample_send(self, time_boot_us: int, sample_counter: int, acc_x: int, acc_y: int, acc_z: int, gyro_x: int, gyro_y: int, gyro_z: int, mag_x: int, mag_y: int, mag_z: int, temperature: int, unit_id: int, flags: int, force_mavlink1: bool = False) -> None:
+    def kf_raw_sample_send(self, time_boot_us: int, sample_counter: int, acc_x: int, acc_y: int, acc_z: int, gyro_x: int, gyro_y: int, gyro_z: int, mag_x: int, mag_y: int, mag_z: int, temperature: int, unit_id: int, flags: int, gyro_shift: int = 0, force_mavlink1: bool = False) -> None:
         """
         One sensor sample of a unit, in sensor-frame axes. Integer scaling
         (the units of RAW_IMU) keeps a frame at 46 bytes: 1 kHz uses
         46 kB/s, half of a 921600-baud link, leaving room for
         orientation and status. Resolution (1 mG, 1 mrad/s, 0.1 uT) is
         below the sensors' noise at 1 kHz. SI values: acc = acc_raw *
-        9.80665e-3 m/s^2, gyro = gyro_raw * 1e-3 rad/s, mag = mag_raw
-        * 0.1 uT, temperature = raw * 0.01 degC. The unit's own
-        filters must consume exactly these values (float32(raw) *
+        9.80665e-3 m/s^2, gyro = gyro_raw * 2^gyro_shift * 1e-3 rad/s
+        (gyro_shift: extension field, 0 if absent), mag = mag_raw *
+        0.1 uT, temperature = raw * 0.01 degC. The unit's own filters
+        must consume exactly these values (float32(raw) *
         float32(scale), one rounding) so that a recording replayed on
         the host reproduces the unit's estimate bit for bit.
 
@@ -17804,9 +17809,10 @@ class MAVLink(object):
         temperature               : Sensor die temperature (valid if KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID). [cdegC] (type:int16_t)
         unit_id                   : Unit id (equals the MAVLink system id unless configured otherwise). (type:uint8_t)
         flags                     : Sample flags. (type:uint8_t, values:KF_RAW_SAMPLE_FLAGS)
+        gyro_shift                : Gyroscope range extension: gyro_x/y/z are in units of 2^gyro_shift mrad/s (gyro = gyro_raw * 2^gyro_shift * 1e-3 rad/s). The unit picks, per sample, the smallest shift 0..3 for which all three axes fit int16 after rounding (round half to even of the float64 quotient rate / (2^shift * 1e-3 rad/s)), so samples within +-32.767 rad/s keep 1 mrad/s resolution, send 0 (no bytes on the wire) and are unchanged; 1..3 extend the range to +-65.534, +-131.068, +-262.136 rad/s. A decoder without this field (or a recording made before it) reads 0. Samples taken from the unit's own sensor carry the sensor's counts: 0. In HIL mode 0 the calibration map still takes int16 1 mrad/s counts (saturated): a sample with gyro_shift above 0 sets KF_ORIENTATION_STATUS_INPUT_CLIPPED; HIL direct mode uses the float32 rates. (type:uint8_t)
 
         """
-        self.send(self.kf_raw_sample_encode(time_boot_us, sample_counter, acc_x, acc_y, acc_z, gyro_x, gyro_y, gyro_z, mag_x, mag_y, mag_z, temperature, unit_id, flags), force_mavlink1=force_mavlink1)
+        self.send(self.kf_raw_sample_encode(time_boot_us, sample_counter, acc_x, acc_y, acc_z, gyro_x, gyro_y, gyro_z, mag_x, mag_y, mag_z, temperature, unit_id, flags, gyro_shift), force_mavlink1=force_mavlink1)
 
     def kf_orientation_encode(self, time_boot_us: int, sample_counter: int, q_w: float, q_x: float, q_y: float, q_z: float, rejected_samples: int, status: int, earth_frame: int, filter_id: int, unit_id: int, cov: Sequence[float] = (0, 0, 0, 0, 0, 0)) -> MAVLink_kf_orientation_message:
         """

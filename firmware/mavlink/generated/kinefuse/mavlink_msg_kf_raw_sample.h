@@ -21,11 +21,12 @@ typedef struct __mavlink_kf_raw_sample_t {
  int16_t temperature; /*< [cdegC] Sensor die temperature (valid if KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID).*/
  uint8_t unit_id; /*<  Unit id (equals the MAVLink system id unless configured otherwise).*/
  uint8_t flags; /*<  Sample flags.*/
+ uint8_t gyro_shift; /*<  Gyroscope range extension: gyro_x/y/z are in units of 2^gyro_shift mrad/s (gyro = gyro_raw * 2^gyro_shift * 1e-3 rad/s). The unit picks, per sample, the smallest shift 0..3 for which all three axes fit int16 after rounding (round half to even of the float64 quotient rate / (2^shift * 1e-3 rad/s)), so samples within +-32.767 rad/s keep 1 mrad/s resolution, send 0 (no bytes on the wire) and are unchanged; 1..3 extend the range to +-65.534, +-131.068, +-262.136 rad/s. A decoder without this field (or a recording made before it) reads 0. Samples taken from the unit's own sensor carry the sensor's counts: 0. In HIL mode 0 the calibration map still takes int16 1 mrad/s counts (saturated): a sample with gyro_shift above 0 sets KF_ORIENTATION_STATUS_INPUT_CLIPPED; HIL direct mode uses the float32 rates.*/
 } mavlink_kf_raw_sample_t;
 
-#define MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN 34
+#define MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN 35
 #define MAVLINK_MSG_ID_KF_RAW_SAMPLE_MIN_LEN 34
-#define MAVLINK_MSG_ID_52500_LEN 34
+#define MAVLINK_MSG_ID_52500_LEN 35
 #define MAVLINK_MSG_ID_52500_MIN_LEN 34
 
 #define MAVLINK_MSG_ID_KF_RAW_SAMPLE_CRC 197
@@ -37,7 +38,7 @@ typedef struct __mavlink_kf_raw_sample_t {
 #define MAVLINK_MESSAGE_INFO_KF_RAW_SAMPLE { \
     52500, \
     "KF_RAW_SAMPLE", \
-    14, \
+    15, \
     {  { "time_boot_us", NULL, MAVLINK_TYPE_UINT64_T, 0, 0, offsetof(mavlink_kf_raw_sample_t, time_boot_us) }, \
          { "sample_counter", NULL, MAVLINK_TYPE_UINT32_T, 0, 8, offsetof(mavlink_kf_raw_sample_t, sample_counter) }, \
          { "acc_x", NULL, MAVLINK_TYPE_INT16_T, 0, 12, offsetof(mavlink_kf_raw_sample_t, acc_x) }, \
@@ -52,12 +53,13 @@ typedef struct __mavlink_kf_raw_sample_t {
          { "temperature", NULL, MAVLINK_TYPE_INT16_T, 0, 30, offsetof(mavlink_kf_raw_sample_t, temperature) }, \
          { "unit_id", NULL, MAVLINK_TYPE_UINT8_T, 0, 32, offsetof(mavlink_kf_raw_sample_t, unit_id) }, \
          { "flags", NULL, MAVLINK_TYPE_UINT8_T, 0, 33, offsetof(mavlink_kf_raw_sample_t, flags) }, \
+         { "gyro_shift", NULL, MAVLINK_TYPE_UINT8_T, 0, 34, offsetof(mavlink_kf_raw_sample_t, gyro_shift) }, \
          } \
 }
 #else
 #define MAVLINK_MESSAGE_INFO_KF_RAW_SAMPLE { \
     "KF_RAW_SAMPLE", \
-    14, \
+    15, \
     {  { "time_boot_us", NULL, MAVLINK_TYPE_UINT64_T, 0, 0, offsetof(mavlink_kf_raw_sample_t, time_boot_us) }, \
          { "sample_counter", NULL, MAVLINK_TYPE_UINT32_T, 0, 8, offsetof(mavlink_kf_raw_sample_t, sample_counter) }, \
          { "acc_x", NULL, MAVLINK_TYPE_INT16_T, 0, 12, offsetof(mavlink_kf_raw_sample_t, acc_x) }, \
@@ -72,6 +74,7 @@ typedef struct __mavlink_kf_raw_sample_t {
          { "temperature", NULL, MAVLINK_TYPE_INT16_T, 0, 30, offsetof(mavlink_kf_raw_sample_t, temperature) }, \
          { "unit_id", NULL, MAVLINK_TYPE_UINT8_T, 0, 32, offsetof(mavlink_kf_raw_sample_t, unit_id) }, \
          { "flags", NULL, MAVLINK_TYPE_UINT8_T, 0, 33, offsetof(mavlink_kf_raw_sample_t, flags) }, \
+         { "gyro_shift", NULL, MAVLINK_TYPE_UINT8_T, 0, 34, offsetof(mavlink_kf_raw_sample_t, gyro_shift) }, \
          } \
 }
 #endif
@@ -96,10 +99,11 @@ typedef struct __mavlink_kf_raw_sample_t {
  * @param temperature [cdegC] Sensor die temperature (valid if KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID).
  * @param unit_id  Unit id (equals the MAVLink system id unless configured otherwise).
  * @param flags  Sample flags.
+ * @param gyro_shift  Gyroscope range extension: gyro_x/y/z are in units of 2^gyro_shift mrad/s (gyro = gyro_raw * 2^gyro_shift * 1e-3 rad/s). The unit picks, per sample, the smallest shift 0..3 for which all three axes fit int16 after rounding (round half to even of the float64 quotient rate / (2^shift * 1e-3 rad/s)), so samples within +-32.767 rad/s keep 1 mrad/s resolution, send 0 (no bytes on the wire) and are unchanged; 1..3 extend the range to +-65.534, +-131.068, +-262.136 rad/s. A decoder without this field (or a recording made before it) reads 0. Samples taken from the unit's own sensor carry the sensor's counts: 0. In HIL mode 0 the calibration map still takes int16 1 mrad/s counts (saturated): a sample with gyro_shift above 0 sets KF_ORIENTATION_STATUS_INPUT_CLIPPED; HIL direct mode uses the float32 rates.
  * @return length of the message in bytes (excluding serial stream start sign)
  */
 static inline uint16_t mavlink_msg_kf_raw_sample_pack(uint8_t system_id, uint8_t component_id, mavlink_message_t* msg,
-                               uint64_t time_boot_us, uint32_t sample_counter, int16_t acc_x, int16_t acc_y, int16_t acc_z, int16_t gyro_x, int16_t gyro_y, int16_t gyro_z, int16_t mag_x, int16_t mag_y, int16_t mag_z, int16_t temperature, uint8_t unit_id, uint8_t flags)
+                               uint64_t time_boot_us, uint32_t sample_counter, int16_t acc_x, int16_t acc_y, int16_t acc_z, int16_t gyro_x, int16_t gyro_y, int16_t gyro_z, int16_t mag_x, int16_t mag_y, int16_t mag_z, int16_t temperature, uint8_t unit_id, uint8_t flags, uint8_t gyro_shift)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN];
@@ -117,6 +121,7 @@ static inline uint16_t mavlink_msg_kf_raw_sample_pack(uint8_t system_id, uint8_t
     _mav_put_int16_t(buf, 30, temperature);
     _mav_put_uint8_t(buf, 32, unit_id);
     _mav_put_uint8_t(buf, 33, flags);
+    _mav_put_uint8_t(buf, 34, gyro_shift);
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), buf, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN);
 #else
@@ -135,6 +140,7 @@ static inline uint16_t mavlink_msg_kf_raw_sample_pack(uint8_t system_id, uint8_t
     packet.temperature = temperature;
     packet.unit_id = unit_id;
     packet.flags = flags;
+    packet.gyro_shift = gyro_shift;
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), &packet, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN);
 #endif
@@ -164,10 +170,11 @@ static inline uint16_t mavlink_msg_kf_raw_sample_pack(uint8_t system_id, uint8_t
  * @param temperature [cdegC] Sensor die temperature (valid if KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID).
  * @param unit_id  Unit id (equals the MAVLink system id unless configured otherwise).
  * @param flags  Sample flags.
+ * @param gyro_shift  Gyroscope range extension: gyro_x/y/z are in units of 2^gyro_shift mrad/s (gyro = gyro_raw * 2^gyro_shift * 1e-3 rad/s). The unit picks, per sample, the smallest shift 0..3 for which all three axes fit int16 after rounding (round half to even of the float64 quotient rate / (2^shift * 1e-3 rad/s)), so samples within +-32.767 rad/s keep 1 mrad/s resolution, send 0 (no bytes on the wire) and are unchanged; 1..3 extend the range to +-65.534, +-131.068, +-262.136 rad/s. A decoder without this field (or a recording made before it) reads 0. Samples taken from the unit's own sensor carry the sensor's counts: 0. In HIL mode 0 the calibration map still takes int16 1 mrad/s counts (saturated): a sample with gyro_shift above 0 sets KF_ORIENTATION_STATUS_INPUT_CLIPPED; HIL direct mode uses the float32 rates.
  * @return length of the message in bytes (excluding serial stream start sign)
  */
 static inline uint16_t mavlink_msg_kf_raw_sample_pack_status(uint8_t system_id, uint8_t component_id, mavlink_status_t *_status, mavlink_message_t* msg,
-                               uint64_t time_boot_us, uint32_t sample_counter, int16_t acc_x, int16_t acc_y, int16_t acc_z, int16_t gyro_x, int16_t gyro_y, int16_t gyro_z, int16_t mag_x, int16_t mag_y, int16_t mag_z, int16_t temperature, uint8_t unit_id, uint8_t flags)
+                               uint64_t time_boot_us, uint32_t sample_counter, int16_t acc_x, int16_t acc_y, int16_t acc_z, int16_t gyro_x, int16_t gyro_y, int16_t gyro_z, int16_t mag_x, int16_t mag_y, int16_t mag_z, int16_t temperature, uint8_t unit_id, uint8_t flags, uint8_t gyro_shift)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN];
@@ -185,6 +192,7 @@ static inline uint16_t mavlink_msg_kf_raw_sample_pack_status(uint8_t system_id, 
     _mav_put_int16_t(buf, 30, temperature);
     _mav_put_uint8_t(buf, 32, unit_id);
     _mav_put_uint8_t(buf, 33, flags);
+    _mav_put_uint8_t(buf, 34, gyro_shift);
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), buf, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN);
 #else
@@ -203,6 +211,7 @@ static inline uint16_t mavlink_msg_kf_raw_sample_pack_status(uint8_t system_id, 
     packet.temperature = temperature;
     packet.unit_id = unit_id;
     packet.flags = flags;
+    packet.gyro_shift = gyro_shift;
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), &packet, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN);
 #endif
@@ -235,11 +244,12 @@ static inline uint16_t mavlink_msg_kf_raw_sample_pack_status(uint8_t system_id, 
  * @param temperature [cdegC] Sensor die temperature (valid if KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID).
  * @param unit_id  Unit id (equals the MAVLink system id unless configured otherwise).
  * @param flags  Sample flags.
+ * @param gyro_shift  Gyroscope range extension: gyro_x/y/z are in units of 2^gyro_shift mrad/s (gyro = gyro_raw * 2^gyro_shift * 1e-3 rad/s). The unit picks, per sample, the smallest shift 0..3 for which all three axes fit int16 after rounding (round half to even of the float64 quotient rate / (2^shift * 1e-3 rad/s)), so samples within +-32.767 rad/s keep 1 mrad/s resolution, send 0 (no bytes on the wire) and are unchanged; 1..3 extend the range to +-65.534, +-131.068, +-262.136 rad/s. A decoder without this field (or a recording made before it) reads 0. Samples taken from the unit's own sensor carry the sensor's counts: 0. In HIL mode 0 the calibration map still takes int16 1 mrad/s counts (saturated): a sample with gyro_shift above 0 sets KF_ORIENTATION_STATUS_INPUT_CLIPPED; HIL direct mode uses the float32 rates.
  * @return length of the message in bytes (excluding serial stream start sign)
  */
 static inline uint16_t mavlink_msg_kf_raw_sample_pack_chan(uint8_t system_id, uint8_t component_id, uint8_t chan,
                                mavlink_message_t* msg,
-                                   uint64_t time_boot_us,uint32_t sample_counter,int16_t acc_x,int16_t acc_y,int16_t acc_z,int16_t gyro_x,int16_t gyro_y,int16_t gyro_z,int16_t mag_x,int16_t mag_y,int16_t mag_z,int16_t temperature,uint8_t unit_id,uint8_t flags)
+                                   uint64_t time_boot_us,uint32_t sample_counter,int16_t acc_x,int16_t acc_y,int16_t acc_z,int16_t gyro_x,int16_t gyro_y,int16_t gyro_z,int16_t mag_x,int16_t mag_y,int16_t mag_z,int16_t temperature,uint8_t unit_id,uint8_t flags,uint8_t gyro_shift)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN];
@@ -257,6 +267,7 @@ static inline uint16_t mavlink_msg_kf_raw_sample_pack_chan(uint8_t system_id, ui
     _mav_put_int16_t(buf, 30, temperature);
     _mav_put_uint8_t(buf, 32, unit_id);
     _mav_put_uint8_t(buf, 33, flags);
+    _mav_put_uint8_t(buf, 34, gyro_shift);
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), buf, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN);
 #else
@@ -275,6 +286,7 @@ static inline uint16_t mavlink_msg_kf_raw_sample_pack_chan(uint8_t system_id, ui
     packet.temperature = temperature;
     packet.unit_id = unit_id;
     packet.flags = flags;
+    packet.gyro_shift = gyro_shift;
 
         memcpy(_MAV_PAYLOAD_NON_CONST(msg), &packet, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN);
 #endif
@@ -293,7 +305,7 @@ static inline uint16_t mavlink_msg_kf_raw_sample_pack_chan(uint8_t system_id, ui
  */
 static inline uint16_t mavlink_msg_kf_raw_sample_encode(uint8_t system_id, uint8_t component_id, mavlink_message_t* msg, const mavlink_kf_raw_sample_t* kf_raw_sample)
 {
-    return mavlink_msg_kf_raw_sample_pack(system_id, component_id, msg, kf_raw_sample->time_boot_us, kf_raw_sample->sample_counter, kf_raw_sample->acc_x, kf_raw_sample->acc_y, kf_raw_sample->acc_z, kf_raw_sample->gyro_x, kf_raw_sample->gyro_y, kf_raw_sample->gyro_z, kf_raw_sample->mag_x, kf_raw_sample->mag_y, kf_raw_sample->mag_z, kf_raw_sample->temperature, kf_raw_sample->unit_id, kf_raw_sample->flags);
+    return mavlink_msg_kf_raw_sample_pack(system_id, component_id, msg, kf_raw_sample->time_boot_us, kf_raw_sample->sample_counter, kf_raw_sample->acc_x, kf_raw_sample->acc_y, kf_raw_sample->acc_z, kf_raw_sample->gyro_x, kf_raw_sample->gyro_y, kf_raw_sample->gyro_z, kf_raw_sample->mag_x, kf_raw_sample->mag_y, kf_raw_sample->mag_z, kf_raw_sample->temperature, kf_raw_sample->unit_id, kf_raw_sample->flags, kf_raw_sample->gyro_shift);
 }
 
 /**
@@ -307,7 +319,7 @@ static inline uint16_t mavlink_msg_kf_raw_sample_encode(uint8_t system_id, uint8
  */
 static inline uint16_t mavlink_msg_kf_raw_sample_encode_chan(uint8_t system_id, uint8_t component_id, uint8_t chan, mavlink_message_t* msg, const mavlink_kf_raw_sample_t* kf_raw_sample)
 {
-    return mavlink_msg_kf_raw_sample_pack_chan(system_id, component_id, chan, msg, kf_raw_sample->time_boot_us, kf_raw_sample->sample_counter, kf_raw_sample->acc_x, kf_raw_sample->acc_y, kf_raw_sample->acc_z, kf_raw_sample->gyro_x, kf_raw_sample->gyro_y, kf_raw_sample->gyro_z, kf_raw_sample->mag_x, kf_raw_sample->mag_y, kf_raw_sample->mag_z, kf_raw_sample->temperature, kf_raw_sample->unit_id, kf_raw_sample->flags);
+    return mavlink_msg_kf_raw_sample_pack_chan(system_id, component_id, chan, msg, kf_raw_sample->time_boot_us, kf_raw_sample->sample_counter, kf_raw_sample->acc_x, kf_raw_sample->acc_y, kf_raw_sample->acc_z, kf_raw_sample->gyro_x, kf_raw_sample->gyro_y, kf_raw_sample->gyro_z, kf_raw_sample->mag_x, kf_raw_sample->mag_y, kf_raw_sample->mag_z, kf_raw_sample->temperature, kf_raw_sample->unit_id, kf_raw_sample->flags, kf_raw_sample->gyro_shift);
 }
 
 /**
@@ -321,7 +333,7 @@ static inline uint16_t mavlink_msg_kf_raw_sample_encode_chan(uint8_t system_id, 
  */
 static inline uint16_t mavlink_msg_kf_raw_sample_encode_status(uint8_t system_id, uint8_t component_id, mavlink_status_t* _status, mavlink_message_t* msg, const mavlink_kf_raw_sample_t* kf_raw_sample)
 {
-    return mavlink_msg_kf_raw_sample_pack_status(system_id, component_id, _status, msg,  kf_raw_sample->time_boot_us, kf_raw_sample->sample_counter, kf_raw_sample->acc_x, kf_raw_sample->acc_y, kf_raw_sample->acc_z, kf_raw_sample->gyro_x, kf_raw_sample->gyro_y, kf_raw_sample->gyro_z, kf_raw_sample->mag_x, kf_raw_sample->mag_y, kf_raw_sample->mag_z, kf_raw_sample->temperature, kf_raw_sample->unit_id, kf_raw_sample->flags);
+    return mavlink_msg_kf_raw_sample_pack_status(system_id, component_id, _status, msg,  kf_raw_sample->time_boot_us, kf_raw_sample->sample_counter, kf_raw_sample->acc_x, kf_raw_sample->acc_y, kf_raw_sample->acc_z, kf_raw_sample->gyro_x, kf_raw_sample->gyro_y, kf_raw_sample->gyro_z, kf_raw_sample->mag_x, kf_raw_sample->mag_y, kf_raw_sample->mag_z, kf_raw_sample->temperature, kf_raw_sample->unit_id, kf_raw_sample->flags, kf_raw_sample->gyro_shift);
 }
 
 /**
@@ -342,10 +354,11 @@ static inline uint16_t mavlink_msg_kf_raw_sample_encode_status(uint8_t system_id
  * @param temperature [cdegC] Sensor die temperature (valid if KF_RAW_SAMPLE_FLAGS_TEMPERATURE_VALID).
  * @param unit_id  Unit id (equals the MAVLink system id unless configured otherwise).
  * @param flags  Sample flags.
+ * @param gyro_shift  Gyroscope range extension: gyro_x/y/z are in units of 2^gyro_shift mrad/s (gyro = gyro_raw * 2^gyro_shift * 1e-3 rad/s). The unit picks, per sample, the smallest shift 0..3 for which all three axes fit int16 after rounding (round half to even of the float64 quotient rate / (2^shift * 1e-3 rad/s)), so samples within +-32.767 rad/s keep 1 mrad/s resolution, send 0 (no bytes on the wire) and are unchanged; 1..3 extend the range to +-65.534, +-131.068, +-262.136 rad/s. A decoder without this field (or a recording made before it) reads 0. Samples taken from the unit's own sensor carry the sensor's counts: 0. In HIL mode 0 the calibration map still takes int16 1 mrad/s counts (saturated): a sample with gyro_shift above 0 sets KF_ORIENTATION_STATUS_INPUT_CLIPPED; HIL direct mode uses the float32 rates.
  */
 #ifdef MAVLINK_USE_CONVENIENCE_FUNCTIONS
 
-static inline void mavlink_msg_kf_raw_sample_send(mavlink_channel_t chan, uint64_t time_boot_us, uint32_t sample_counter, int16_t acc_x, int16_t acc_y, int16_t acc_z, int16_t gyro_x, int16_t gyro_y, int16_t gyro_z, int16_t mag_x, int16_t mag_y, int16_t mag_z, int16_t temperature, uint8_t unit_id, uint8_t flags)
+static inline void mavlink_msg_kf_raw_sample_send(mavlink_channel_t chan, uint64_t time_boot_us, uint32_t sample_counter, int16_t acc_x, int16_t acc_y, int16_t acc_z, int16_t gyro_x, int16_t gyro_y, int16_t gyro_z, int16_t mag_x, int16_t mag_y, int16_t mag_z, int16_t temperature, uint8_t unit_id, uint8_t flags, uint8_t gyro_shift)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char buf[MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN];
@@ -363,6 +376,7 @@ static inline void mavlink_msg_kf_raw_sample_send(mavlink_channel_t chan, uint64
     _mav_put_int16_t(buf, 30, temperature);
     _mav_put_uint8_t(buf, 32, unit_id);
     _mav_put_uint8_t(buf, 33, flags);
+    _mav_put_uint8_t(buf, 34, gyro_shift);
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_KF_RAW_SAMPLE, buf, MAVLINK_MSG_ID_KF_RAW_SAMPLE_MIN_LEN, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN, MAVLINK_MSG_ID_KF_RAW_SAMPLE_CRC);
 #else
@@ -381,6 +395,7 @@ static inline void mavlink_msg_kf_raw_sample_send(mavlink_channel_t chan, uint64
     packet.temperature = temperature;
     packet.unit_id = unit_id;
     packet.flags = flags;
+    packet.gyro_shift = gyro_shift;
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_KF_RAW_SAMPLE, (const char *)&packet, MAVLINK_MSG_ID_KF_RAW_SAMPLE_MIN_LEN, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN, MAVLINK_MSG_ID_KF_RAW_SAMPLE_CRC);
 #endif
@@ -394,7 +409,7 @@ static inline void mavlink_msg_kf_raw_sample_send(mavlink_channel_t chan, uint64
 static inline void mavlink_msg_kf_raw_sample_send_struct(mavlink_channel_t chan, const mavlink_kf_raw_sample_t* kf_raw_sample)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
-    mavlink_msg_kf_raw_sample_send(chan, kf_raw_sample->time_boot_us, kf_raw_sample->sample_counter, kf_raw_sample->acc_x, kf_raw_sample->acc_y, kf_raw_sample->acc_z, kf_raw_sample->gyro_x, kf_raw_sample->gyro_y, kf_raw_sample->gyro_z, kf_raw_sample->mag_x, kf_raw_sample->mag_y, kf_raw_sample->mag_z, kf_raw_sample->temperature, kf_raw_sample->unit_id, kf_raw_sample->flags);
+    mavlink_msg_kf_raw_sample_send(chan, kf_raw_sample->time_boot_us, kf_raw_sample->sample_counter, kf_raw_sample->acc_x, kf_raw_sample->acc_y, kf_raw_sample->acc_z, kf_raw_sample->gyro_x, kf_raw_sample->gyro_y, kf_raw_sample->gyro_z, kf_raw_sample->mag_x, kf_raw_sample->mag_y, kf_raw_sample->mag_z, kf_raw_sample->temperature, kf_raw_sample->unit_id, kf_raw_sample->flags, kf_raw_sample->gyro_shift);
 #else
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_KF_RAW_SAMPLE, (const char *)kf_raw_sample, MAVLINK_MSG_ID_KF_RAW_SAMPLE_MIN_LEN, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN, MAVLINK_MSG_ID_KF_RAW_SAMPLE_CRC);
 #endif
@@ -408,7 +423,7 @@ static inline void mavlink_msg_kf_raw_sample_send_struct(mavlink_channel_t chan,
   is usually the receive buffer for the channel, and allows a reply to an
   incoming message with minimum stack space usage.
  */
-static inline void mavlink_msg_kf_raw_sample_send_buf(mavlink_message_t *msgbuf, mavlink_channel_t chan,  uint64_t time_boot_us, uint32_t sample_counter, int16_t acc_x, int16_t acc_y, int16_t acc_z, int16_t gyro_x, int16_t gyro_y, int16_t gyro_z, int16_t mag_x, int16_t mag_y, int16_t mag_z, int16_t temperature, uint8_t unit_id, uint8_t flags)
+static inline void mavlink_msg_kf_raw_sample_send_buf(mavlink_message_t *msgbuf, mavlink_channel_t chan,  uint64_t time_boot_us, uint32_t sample_counter, int16_t acc_x, int16_t acc_y, int16_t acc_z, int16_t gyro_x, int16_t gyro_y, int16_t gyro_z, int16_t mag_x, int16_t mag_y, int16_t mag_z, int16_t temperature, uint8_t unit_id, uint8_t flags, uint8_t gyro_shift)
 {
 #if MAVLINK_NEED_BYTE_SWAP || !MAVLINK_ALIGNED_FIELDS
     char *buf = (char *)msgbuf;
@@ -426,6 +441,7 @@ static inline void mavlink_msg_kf_raw_sample_send_buf(mavlink_message_t *msgbuf,
     _mav_put_int16_t(buf, 30, temperature);
     _mav_put_uint8_t(buf, 32, unit_id);
     _mav_put_uint8_t(buf, 33, flags);
+    _mav_put_uint8_t(buf, 34, gyro_shift);
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_KF_RAW_SAMPLE, buf, MAVLINK_MSG_ID_KF_RAW_SAMPLE_MIN_LEN, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN, MAVLINK_MSG_ID_KF_RAW_SAMPLE_CRC);
 #else
@@ -444,6 +460,7 @@ static inline void mavlink_msg_kf_raw_sample_send_buf(mavlink_message_t *msgbuf,
     packet->temperature = temperature;
     packet->unit_id = unit_id;
     packet->flags = flags;
+    packet->gyro_shift = gyro_shift;
 
     _mav_finalize_message_chan_send(chan, MAVLINK_MSG_ID_KF_RAW_SAMPLE, (const char *)packet, MAVLINK_MSG_ID_KF_RAW_SAMPLE_MIN_LEN, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN, MAVLINK_MSG_ID_KF_RAW_SAMPLE_CRC);
 #endif
@@ -596,6 +613,16 @@ static inline uint8_t mavlink_msg_kf_raw_sample_get_flags(const mavlink_message_
 }
 
 /**
+ * @brief Get field gyro_shift from kf_raw_sample message
+ *
+ * @return  Gyroscope range extension: gyro_x/y/z are in units of 2^gyro_shift mrad/s (gyro = gyro_raw * 2^gyro_shift * 1e-3 rad/s). The unit picks, per sample, the smallest shift 0..3 for which all three axes fit int16 after rounding (round half to even of the float64 quotient rate / (2^shift * 1e-3 rad/s)), so samples within +-32.767 rad/s keep 1 mrad/s resolution, send 0 (no bytes on the wire) and are unchanged; 1..3 extend the range to +-65.534, +-131.068, +-262.136 rad/s. A decoder without this field (or a recording made before it) reads 0. Samples taken from the unit's own sensor carry the sensor's counts: 0. In HIL mode 0 the calibration map still takes int16 1 mrad/s counts (saturated): a sample with gyro_shift above 0 sets KF_ORIENTATION_STATUS_INPUT_CLIPPED; HIL direct mode uses the float32 rates.
+ */
+static inline uint8_t mavlink_msg_kf_raw_sample_get_gyro_shift(const mavlink_message_t* msg)
+{
+    return _MAV_RETURN_uint8_t(msg,  34);
+}
+
+/**
  * @brief Decode a kf_raw_sample message into a struct
  *
  * @param msg The message to decode
@@ -618,6 +645,7 @@ static inline void mavlink_msg_kf_raw_sample_decode(const mavlink_message_t* msg
     kf_raw_sample->temperature = mavlink_msg_kf_raw_sample_get_temperature(msg);
     kf_raw_sample->unit_id = mavlink_msg_kf_raw_sample_get_unit_id(msg);
     kf_raw_sample->flags = mavlink_msg_kf_raw_sample_get_flags(msg);
+    kf_raw_sample->gyro_shift = mavlink_msg_kf_raw_sample_get_gyro_shift(msg);
 #else
         uint8_t len = msg->len < MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN? msg->len : MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN;
         memset(kf_raw_sample, 0, MAVLINK_MSG_ID_KF_RAW_SAMPLE_LEN);

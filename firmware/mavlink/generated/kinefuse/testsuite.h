@@ -37,7 +37,7 @@ static void mavlink_test_kf_raw_sample(uint8_t system_id, uint8_t component_id, 
         uint8_t buffer[MAVLINK_MAX_PACKET_LEN];
         uint16_t i;
     mavlink_kf_raw_sample_t packet_in = {
-        93372036854775807ULL,963497880,17859,17963,18067,18171,18275,18379,18483,18587,18691,18795,101,168
+        93372036854775807ULL,963497880,17859,17963,18067,18171,18275,18379,18483,18587,18691,18795,101,168,235
     };
     mavlink_kf_raw_sample_t packet1, packet2;
         memset(&packet1, 0, sizeof(packet1));
@@ -55,6 +55,7 @@ static void mavlink_test_kf_raw_sample(uint8_t system_id, uint8_t component_id, 
         packet1.temperature = packet_in.temperature;
         packet1.unit_id = packet_in.unit_id;
         packet1.flags = packet_in.flags;
+        packet1.gyro_shift = packet_in.gyro_shift;
         
         
 #ifdef MAVLINK_STATUS_FLAG_OUT_MAVLINK1
@@ -69,12 +70,12 @@ static void mavlink_test_kf_raw_sample(uint8_t system_id, uint8_t component_id, 
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
         memset(&packet2, 0, sizeof(packet2));
-    mavlink_msg_kf_raw_sample_pack(system_id, component_id, &msg , packet1.time_boot_us , packet1.sample_counter , packet1.acc_x , packet1.acc_y , packet1.acc_z , packet1.gyro_x , packet1.gyro_y , packet1.gyro_z , packet1.mag_x , packet1.mag_y , packet1.mag_z , packet1.temperature , packet1.unit_id , packet1.flags );
+    mavlink_msg_kf_raw_sample_pack(system_id, component_id, &msg , packet1.time_boot_us , packet1.sample_counter , packet1.acc_x , packet1.acc_y , packet1.acc_z , packet1.gyro_x , packet1.gyro_y , packet1.gyro_z , packet1.mag_x , packet1.mag_y , packet1.mag_z , packet1.temperature , packet1.unit_id , packet1.flags , packet1.gyro_shift );
     mavlink_msg_kf_raw_sample_decode(&msg, &packet2);
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
         memset(&packet2, 0, sizeof(packet2));
-    mavlink_msg_kf_raw_sample_pack_chan(system_id, component_id, MAVLINK_COMM_0, &msg , packet1.time_boot_us , packet1.sample_counter , packet1.acc_x , packet1.acc_y , packet1.acc_z , packet1.gyro_x , packet1.gyro_y , packet1.gyro_z , packet1.mag_x , packet1.mag_y , packet1.mag_z , packet1.temperature , packet1.unit_id , packet1.flags );
+    mavlink_msg_kf_raw_sample_pack_chan(system_id, component_id, MAVLINK_COMM_0, &msg , packet1.time_boot_us , packet1.sample_counter , packet1.acc_x , packet1.acc_y , packet1.acc_z , packet1.gyro_x , packet1.gyro_y , packet1.gyro_z , packet1.mag_x , packet1.mag_y , packet1.mag_z , packet1.temperature , packet1.unit_id , packet1.flags , packet1.gyro_shift );
     mavlink_msg_kf_raw_sample_decode(&msg, &packet2);
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
@@ -87,7 +88,7 @@ static void mavlink_test_kf_raw_sample(uint8_t system_id, uint8_t component_id, 
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
         
         memset(&packet2, 0, sizeof(packet2));
-    mavlink_msg_kf_raw_sample_send(MAVLINK_COMM_1 , packet1.time_boot_us , packet1.sample_counter , packet1.acc_x , packet1.acc_y , packet1.acc_z , packet1.gyro_x , packet1.gyro_y , packet1.gyro_z , packet1.mag_x , packet1.mag_y , packet1.mag_z , packet1.temperature , packet1.unit_id , packet1.flags );
+    mavlink_msg_kf_raw_sample_send(MAVLINK_COMM_1 , packet1.time_boot_us , packet1.sample_counter , packet1.acc_x , packet1.acc_y , packet1.acc_z , packet1.gyro_x , packet1.gyro_y , packet1.gyro_z , packet1.mag_x , packet1.mag_y , packet1.mag_z , packet1.temperature , packet1.unit_id , packet1.flags , packet1.gyro_shift );
     mavlink_msg_kf_raw_sample_decode(last_msg, &packet2);
         MAVLINK_ASSERT(memcmp(&packet1, &packet2, sizeof(packet1)) == 0);
 
