@@ -171,6 +171,22 @@ def _noise(k: np.ndarray, axis: int) -> np.ndarray:
     return (x % np.uint64(7)).astype(np.int64) - 3
 
 
+BOOT_RATE_HZ = 1000   # KF_RATE_HZ's default: the host sensor's rate until --rate arrives
+
+
+def _rate_change(got: dict, k: np.ndarray, rate_hz: int, search_s: float = 2.0) -> int:
+    """The unit counter at which the host sensor restarted at ``rate_hz``: the last received
+    sample (within ``search_s`` of 1 kHz samples) equal to the new rate's sample 0 in every
+    field (sample 0 of both rates is the same, so a stream that starts at the new rate has
+    one such sample, at 0); 0 when none is (the comparison then reports the samples wrong)."""
+    first = synthetic_samples(1, rate_hz)
+    hit = (k < int(search_s * BOOT_RATE_HZ))
+    for key in ("acc", "gyr", "mag"):
+        hit &= np.all(got[key] == first[key][0], axis=1)
+    idx = np.flatnonzero(hit)
+    return int(k[idx[-1]]) if len(idx) else 0
+
+
 def synthetic_samples(n: int, rate_hz: int, k0: int = 0) -> dict[str, np.ndarray]:
     """Samples k0..k0+n-1 of the host port's synthetic IMU (counts in KF_RAW_SAMPLE units),
     with t_rel_us = k * 1e6 // rate (time since the sensor started)."""
@@ -699,7 +715,6 @@ def stream_check(seconds: float, rate_hz: int = 1000, out_dir=None, system: str 
         expected = np.arange(n)
         res["lost"] = int(len(np.setdiff1d(expected, uniq)))
         res["unexpected"] = int(len(np.setdiff1d(uniq, expected)))
-        ref = synthetic_samples(n, rate_hz)
         order = np.argsort(ctr, kind="stable")
         r = raw[order][: n]
         k = r["sample_counter"].astype(np.int64)
@@ -708,21 +723,37 @@ def stream_check(seconds: float, rate_hz: int = 1000, out_dir=None, system: str 
         r = r[ok_idx]
         fields = {"acc": ("acc_x", "acc_y", "acc_z"), "gyr": ("gyro_x", "gyro_y", "gyro_z"),
                   "mag": ("mag_x", "mag_y", "mag_z")}
+        got = {key: np.stack([r[c].astype(np.int64) for c in cols], axis=1) for key, cols in fields.items()}
+        got["mag_valid"] = (r["flags"] & 8) != 0
+        # the unit streams from boot at its 1 kHz; --rate reaches it a few samples later and the
+        # host sensor restarts its index and time base there, while the counter runs on: the
+        # samples before the change are checked against the 1 kHz sensor, those after against
+        # the new rate's from index 0 (every field of every sample is compared either way)
+        c = _rate_change(got, k, rate_hz) if rate_hz != BOOT_RATE_HZ else 0
+        res["samples_before_rate_change"] = c
         wrong = np.zeros(len(k), bool)
-        for key, cols in fields.items():
-            mine = np.stack([r[c].astype(np.int64) for c in cols], axis=1)
-            wrong |= np.any(mine != ref[key][k], axis=1)
-        wrong |= ((r["flags"] & 8) != 0) != ref["mag_valid"][k]
-        res["wrong"] = int(wrong.sum())
+        timing = 0
         t = r["time_boot_us"].astype(np.int64)
-        res["timing_errors"] = int(np.sum((t - t[0]) != (ref["t_rel_us"][k] - ref["t_rel_us"][k[0]]))) if len(t) else 0
+        for sel, ref, idx in ((k < c, synthetic_samples(c, BOOT_RATE_HZ), k),
+                              (k >= c, synthetic_samples(n, rate_hz), k - c)):
+            if not np.any(sel):
+                continue
+            i = idx[sel]
+            for key in fields:
+                wrong[sel] |= np.any(got[key][sel] != ref[key][i], axis=1)
+            wrong[sel] |= got["mag_valid"][sel] != ref["mag_valid"][i]
+            ts = t[sel]
+            timing += int(np.sum((ts - ts[0]) != (ref["t_rel_us"][i] - ref["t_rel_us"][i[0]])))
+        res["wrong"] = int(wrong.sum())
+        res["timing_errors"] = timing
         if status is not None and len(status):
             last = status[-1]
             res["unit_frames_dropped"] = int(last["frames_dropped"])
             res["unit_samples_dropped"] = int(last["samples_dropped"])
             res["unit_crc_errors"] = int(last["crc_errors"])
-        if len(t) > 1:
-            res["achieved_rate_hz"] = round((len(t) - 1) / ((t[-1] - t[0]) * 1e-6), 3)
+        t_new = t[k >= c]     # the rate asked for: after the change
+        if len(t_new) > 1:
+            res["achieved_rate_hz"] = round((len(t_new) - 1) / ((t_new[-1] - t_new[0]) * 1e-6), 3)
         res["ok"] = (res["lost"] == 0 and res["duplicates"] == 0 and res["wrong"] == 0
                      and res["unexpected"] == 0 and res["timing_errors"] == 0 and res["crc_errors"] == 0
                      and res.get("unit_frames_dropped", 0) == 0 and res.get("unit_samples_dropped", 0) == 0)

@@ -163,6 +163,17 @@ def test_streams_5_s_at_1_khz_into_a_recording_without_loss(tmp_path):
     assert res["crc_errors"] == 0 and res["ok"]
 
 
+def test_streams_at_another_rate_into_a_recording_without_loss(tmp_path):
+    """`bench firmware --rate 500` failed every time: the unit streams its first samples at
+    1 kHz until the new rate arrives, and the host sensor restarts its index there, so every
+    later sample was compared with the wrong reference sample."""
+    res = hostunit.stream_check(2.0, 500, out_dir=tmp_path)
+    assert res["samples_received"] == 1000
+    assert (res["lost"], res["duplicates"], res["wrong"], res["timing_errors"]) == (0, 0, 0, 0), res
+    assert 0 <= res["samples_before_rate_change"] < 200       # a few samples at 1 kHz
+    assert res["achieved_rate_hz"] == pytest.approx(500.0, rel=1e-6) and res["ok"]
+
+
 @pytest.mark.skipif(os.environ.get("KINEFUSE_LONG_TESTS") != "1",
                     reason="60 s end-to-end run: set KINEFUSE_LONG_TESTS=1 (or `kinefuse bench firmware`)")
 def test_streams_60_s_at_1_khz_without_loss(tmp_path):
