@@ -209,6 +209,20 @@ def _run_ahrs_mahony(trial, params, status):
     return CompetitorResult(np.asarray(Q, dtype=np.float64))
 
 
+EKF_WMM_DATE = (2026, 12, 3)   # the date of the README's ahrs EKF scores
+
+
+def ekf_magnetic_reference():
+    """ahrs' default EKF reference (WMM at Munich, NED, nT) on EKF_WMM_DATE."""
+    import datetime
+
+    from ahrs.common.constants import MUNICH_HEIGHT, MUNICH_LATITUDE, MUNICH_LONGITUDE
+    from ahrs.utils.wmm import WMM
+    wmm = WMM(date=datetime.date(*EKF_WMM_DATE), latitude=MUNICH_LATITUDE,
+              longitude=MUNICH_LONGITUDE, height=MUNICH_HEIGHT)
+    return np.array([wmm.X, wmm.Y, wmm.Z])
+
+
 def _run_ahrs_ekf(trial, params, status):
     from ahrs.filters import EKF
 
@@ -218,10 +232,12 @@ def _run_ahrs_ekf(trial, params, status):
     # the specific force an accelerometer measures (+g upward at rest, as in BROAD).  Feeding
     # -acc makes the measurement model and its ecompass initialisation consistent; the output
     # is sensor -> NED.  (In ENU mode -acc fixes the model but starts the filter upside down.)
-    # Its magnetic reference is ahrs' default: WMM at Munich on today's date (with declination).
+    # Its magnetic reference is ahrs' default, WMM at Munich (with declination), but on a fixed
+    # date: the default is today's, so the score changed from run to run.
     Q = EKF(gyr=trial.gyr, acc=-trial.acc, mag=mag_readings(trial, hold=True),
             frequency=trial.rate_hz, frame="NED", var_gyr=float(p["var_gyr"]),
-            var_acc=float(p["var_acc"]), var_mag=float(p["var_mag"])).Q
+            var_acc=float(p["var_acc"]), var_mag=float(p["var_mag"]),
+            magnetic_ref=ekf_magnetic_reference()).Q
     return CompetitorResult(quat_mul(Q_NED_TO_ENU, np.asarray(Q, dtype=np.float64)))
 
 

@@ -181,3 +181,22 @@ def test_seed001_ahrs_fkf_holds_the_last_reading():
     q = seed001.run_ahrs_fkf(blank)
     assert np.isfinite(q).all()
     np.testing.assert_array_equal(q, seed001.run_ahrs_fkf(held))
+
+
+def test_ahrs_ekf_reference_field_is_pinned_to_a_date(monkeypatch):
+    """ahrs' EKF took WMM at Munich on *today's* date: the README's score could not be
+    reproduced on another day.  The reference is now WMM on EKF_WMM_DATE."""
+    if not competitors.available("ahrs-ekf"):
+        pytest.skip("ahrs not installed")
+    import datetime
+
+    from ahrs.utils import wmm as wmm_mod
+    trial = _still_trial(n=200, turn_from=0)
+    pinned = competitors.run_competitor("ahrs-ekf", trial).q
+    real = wmm_mod.WMM
+
+    class Later(real):       # a run years on: WMM with no date now means 2029
+        def __init__(self, date=None, **kw):
+            super().__init__(date=datetime.date(2029, 6, 1) if date is None else date, **kw)
+    monkeypatch.setattr(wmm_mod, "WMM", Later)
+    np.testing.assert_array_equal(competitors.run_competitor("ahrs-ekf", trial).q, pinned)
