@@ -44,12 +44,17 @@ def check_new_file(path, force: bool, *, option: str = "--out", inputs=()) -> Pa
 def check_output_dir(path, force: bool, names=None, *, pattern: str | None = None,
                      option: str = "--out") -> Path:
     """Folder ``path`` may receive the files ``names`` (or any file matching ``pattern``): it is
-    not a file, and holds none of them yet unless ``force``."""
+    not a file, no folder stands where one of ``names`` goes (not even with ``force``: said
+    before the work, not when its results are written), and it holds none of them yet unless
+    ``force``."""
     if not str(path).strip():     # Path("") is the current folder
         raise KinefuseError(f"{option} is empty: give a folder")
     out = Path(path)
     if out.exists() and not out.is_dir():
         raise KinefuseError(f"{option} {out} is a file, not a folder")
+    for n in names or ():
+        if (out / n).is_dir():
+            raise KinefuseError(f"cannot write {out / n}: a folder of that name is in the way")
     if not out.is_dir() or force:
         return out
     found = {n for n in (names or ()) if (out / n).exists()}

@@ -242,9 +242,6 @@ def _check_out(args, kind: str) -> None:
         up = up.parent
     if not up.is_dir():
         raise KinefuseError(f"--out {out}: cannot create the folder, {up} is a file")
-    for name in report.report_files(kind):
-        if (out / name).is_dir():
-            raise KinefuseError(f"cannot write {out / name}: a folder of that name is in the way")
 
 
 def _same_file(a, b) -> bool:

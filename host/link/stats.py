@@ -35,11 +35,16 @@ def severity_name(severity: int) -> str:
     return SEVERITY_NAMES.get(int(severity), f"severity {int(severity)}")
 
 
+def _statustext(text) -> str:
+    """A STATUSTEXT's text (str, or NUL-padded bytes) without its padding."""
+    if not isinstance(text, str):
+        text = bytes(text).decode("utf-8", "replace")
+    return text.rstrip("\0").strip()
+
+
 def statustext_text(severity: int, text) -> str:
     """"ERROR: parameter storage error: ..." of a STATUSTEXT (text as str or NUL-padded bytes)."""
-    if isinstance(text, bytes):
-        text = text.decode("utf-8", "replace")
-    return f"{severity_name(severity)}: {text.rstrip(chr(0)).strip()}"
+    return f"{severity_name(severity)}: {_statustext(text)}"
 
 
 def statustexts(ds: DecodedStream, start_ns: int | None = None) -> list[dict]:
@@ -52,7 +57,7 @@ def statustexts(ds: DecodedStream, start_ns: int | None = None) -> list[dict]:
     host = ds.host_ns.get(MSG_STATUSTEXT)
     out: dict = {}
     for k, r in enumerate(arr):
-        text = bytes(r["text"]).decode("utf-8", "replace").rstrip("\0").strip()
+        text = _statustext(r["text"])
         key = (int(r["_sysid"]), int(r["severity"]), text)
         t = None if host is None or start_ns is None else (int(host[k]) - start_ns) / 1e9
         e = out.get(key)
@@ -419,8 +424,8 @@ def _rate_change(status_rows, field: str) -> tuple[int | None, int]:
     t = status_rows["time_boot_us"].astype(np.int64)
     # the last device-clock segment without repeats: a status delivered again after the rate
     # change was taken for a reboot, so the change was dated at the next status after it
-    starts, keep = device_segments(t)
-    rows = status_rows[starts[-1]:][keep[starts[-1]:]]
+    last, fresh = _last_segment(t)
+    rows = status_rows[last][fresh]
     r = rows[field].astype(np.float64)
     changed = np.flatnonzero(r[1:] != r[:-1]) + 1
     if not changed.size:
@@ -439,8 +444,8 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
         st = st[st["_sysid"] == sysid]
         if st.size:
             # the latest status by the unit's clock (not a late repeat of an older one)
-            a, keep = device_segments(st["time_boot_us"].astype(np.int64))
-            status, statuses = st[a[-1]:][keep[a[-1]:]][-1], st
+            last, fresh = _last_segment(st["time_boot_us"].astype(np.int64))
+            status, statuses = st[last][fresh][-1], st
             from kinefuse.host.link.recorder import firmware_version_text   # as decode and record say it
             out["firmware_version"] = firmware_version_text(int(status["firmware_version"]))
             out["dialect_hash"] = f"0x{int(status['dialect_hash']):08X}"
@@ -542,7 +547,8 @@ def crc_extra_mismatches(rx: bytes, check: int = 64, accepted=None) -> list[dict
     probability 1/256).  ``accepted``: start offsets of the frames decoded (not checked again).
     [{"message", "failed", "crc_extra", "crc_extra_found"}]."""
     from kinefuse.host.link.batch import _crc_ok
-    from kinefuse.host.link.crc import x25
+    from kinefuse.host.link.crc import TABLE_NP, x25
+    extras = np.arange(256)
     d = kinefuse_dialect()
     arr = np.frombuffer(rx, np.uint8)
     n = arr.size
@@ -573,9 +579,10 @@ def crc_extra_mismatches(rx: bytes, check: int = 64, accepted=None) -> list[dict
             q, ln = int(q), int(ln)
             body, got = rx[q + 1:q + 10 + ln], rx[q + 10 + ln] | (rx[q + 11 + ln] << 8)
             tried += 1
-            for e in range(256):
-                if x25(body, e) == got:
-                    found[e] = found.get(e, 0) + 1
+            # the body's CRC once, then the last step (the CRC_EXTRA byte) for all 256 values
+            c = x25(body)      # the register (MCRF4XX has no final xor)
+            for e in np.flatnonzero(((c >> 8) ^ TABLE_NP[(c ^ extras) & 0xFF]) == got):
+                found[int(e)] = found.get(int(e), 0) + 1
         if found:
             e, k = max(found.items(), key=lambda kv: kv[1])
             if k >= 3 and 4 * k >= tried:
