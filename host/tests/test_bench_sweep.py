@@ -119,6 +119,18 @@ def _tiny_trial_dir(tmp_path, seconds=1.0):
     return path, n
 
 
+def _spy_progress(monkeypatch, module) -> list:
+    """``module.progress`` recorded: the list of its ``on`` arguments (is the bar shown)."""
+    enabled = []
+    real = module.progress
+
+    def spy(on=True):
+        enabled.append(on)
+        return real(on)
+    monkeypatch.setattr(module, "progress", spy)
+    return enabled
+
+
 def test_bitexact_json_says_what_it_covers_and_shows_progress(tmp_path, capsys, monkeypatch):
     # an IMU filter's JSON named neither the data nor the number of trials, and --json switched
     # off the (stderr) progress bar of a run that takes minutes on the 12 trials
@@ -126,13 +138,7 @@ def test_bitexact_json_says_what_it_covers_and_shows_progress(tmp_path, capsys, 
     from kinefuse.host.bench import bitexact
     from kinefuse.host.cli import main
     path, n = _tiny_trial_dir(tmp_path)
-    enabled = []
-    real = bitexact.progress
-
-    def spy(on=True):
-        enabled.append(on)
-        return real(on)
-    monkeypatch.setattr(bitexact, "progress", spy)
+    enabled = _spy_progress(monkeypatch, bitexact)
     assert main(["bench", "bitexact", "--data", str(path), "--filter", "madgwick", "--no-ref",
                  "--jobs", "1", "--json"]) == 0
     d = json.loads(capsys.readouterr().out)
@@ -157,13 +163,7 @@ def test_seed001_broad_json_is_json_and_shows_progress(tmp_path, capsys, monkeyp
     pytest.importorskip("ahrs")
     path, _n = _tiny_trial_dir(tmp_path, seconds=0.5)
     assert not broad.load_trial(path).movement.any()
-    enabled = []
-    real = seed001.progress
-
-    def spy(on=True):
-        enabled.append(on)
-        return real(on)
-    monkeypatch.setattr(seed001, "progress", spy)
+    enabled = _spy_progress(monkeypatch, seed001)
     assert main(["bench", "seed001", "--broad", str(path), "--filters", "madgwick", "--json"]) == 0
 
     def no_constants(c):
