@@ -25,6 +25,7 @@ import numpy as np
 from kinefuse.host import argtypes
 from kinefuse.host.calib import static     # light (numpy); fitting modules load on use
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.link.cli_util import check_unit_option
 
 G_STANDARD = 9.80665  # m/s²
 
@@ -194,9 +195,7 @@ def _read(args):
     if args.fs is not None:
         check_fs_option(args.fs, args.input, args.fmt or detect_format(args.input))
         opts["fs"] = args.fs
-    if args.unit is not None and not args.unit.strip():
-        # --unit "$UNSET" read as no --unit: the file's only unit was calibrated without a word
-        raise KinefuseError("--unit is empty: give a unit (system) id such as 2, s1 or s1:2")
+    check_unit_option(args.unit)
     if args.unit is not None:
         fmt = args.fmt or detect_format(args.input)
         if fmt != kfr.FORMAT:

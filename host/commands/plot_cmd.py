@@ -12,6 +12,7 @@ import numpy as np
 from kinefuse.host import broad
 from kinefuse.host.bench import accuracy
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.link.cli_util import check_unit_option
 from kinefuse.host.outputs import add_force_arg, check_new_file
 
 
@@ -117,8 +118,7 @@ def _plot_recording(args, spec, path: Path) -> int:
         raise KinefuseError(f"{spec.name}: competitors are run on BROAD trials (constant rate, a "
                             f"magnetometer reading in every sample); plot a recording with a "
                             f"kinefuse filter")
-    if args.unit is not None and not args.unit.strip():
-        raise KinefuseError("--unit is empty: give a unit (system) id such as 2, s1 or s1:2")
+    check_unit_option(args.unit)
     out = _out_path(args, path.stem, spec, path) if args.out else None   # before any work
     err = Console(stderr=True)
     with progress(err, f"reading {path}"):

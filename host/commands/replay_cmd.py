@@ -22,6 +22,7 @@ import numpy as np
 
 from kinefuse.host import runner
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.link.cli_util import check_unit_option
 from kinefuse.host.outputs import add_force_arg, check_new_file
 
 BROAD_SUFFIXES = (".mat", ".npz")
@@ -61,9 +62,7 @@ def run(args) -> int:
         raise KinefuseError(f"unknown filter {name!r} (available: {', '.join(runner.filter_names())})")
     _check_imu_filter(name)
     prm = runner.parse_params(args.param)
-    if args.unit is not None and not args.unit.strip():
-        # e.g. --unit "$UNSET": read as no --unit, so the only unit of the file was replayed
-        raise KinefuseError("--unit is empty: give a unit (system) id such as 2, s1 or s1:2")
+    check_unit_option(args.unit)
     path = str(args.rec)
     check_new_file(args.out, args.force, inputs=[path])
     broad = Path(path).suffix.lower() in BROAD_SUFFIXES

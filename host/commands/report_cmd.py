@@ -27,6 +27,7 @@ import sys
 
 from kinefuse.host import argtypes
 from kinefuse.host.errors import KinefuseError
+from kinefuse.host.link.cli_util import check_unit_option
 from kinefuse.host.kinematics import joint   # light (numpy); the heavy modules load on use
 from kinefuse.host.outputs import add_force_arg, check_output_dir
 
@@ -155,9 +156,7 @@ def _check_unit_options(args, options) -> None:
     """--thigh-unit "" (an unset shell variable) read as no unit option: the file's only unit
     was taken for that segment (and, with the other segment's also blank, for both)."""
     for opt in options:
-        v = getattr(args, opt.lstrip("-").replace("-", "_"))
-        if v is not None and not v.strip():
-            raise KinefuseError(f"{opt} is empty: give a unit (system) id such as 2, s1 or s1:2")
+        check_unit_option(getattr(args, opt.lstrip("-").replace("-", "_")), opt)
 
 
 def _check_distinct_units(option, paths, recs) -> None:

@@ -69,6 +69,14 @@ def first_unit(session, port: str, timeout: float) -> int:
 RAW_RATE_MAX_HZ = 10_000   # the unit refuses message intervals below 100 us (firmware/app/kf_handle.c)
 
 
+def check_unit_option(value, option: str = "--unit") -> None:
+    """A blank unit option (``--unit "$UNSET"``) is refused: read as no option, the file's only
+    unit was taken without a word."""
+    from kinefuse.host.errors import KinefuseError
+    if value is not None and not value.strip():
+        raise KinefuseError(f"{option} is empty: give a unit (system) id such as 2, s1 or s1:2")
+
+
 def check_raw_rate(rate, goes_with: str | None = None) -> None:
     """--rate (KF_RAW_SAMPLE, Hz) within what the unit accepts; ``goes_with`` names the option or
     action it needs when that is missing (None: it is present or not needed)."""
