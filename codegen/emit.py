@@ -90,8 +90,7 @@ class Lowered:
     """An estimator's optimised graph lowered to one number system."""
 
     def __init__(self, est: Estimator, graph: Graph, system: str):
-        check_declaration(est)
-        self.est = est
+        self.est = est          # (its declaration was checked when trace() made the graph)
         self.g = graph
         self.system = system
         self.iface = Interface(est)
