@@ -58,17 +58,68 @@ def render_all(names: list[str] | None = None, ops_dir: Path | None = None) -> d
         # filter whose fixed-point ranges cannot be bounded)
         for system in getattr(estimators.get(name), "systems", SYSTEMS):
             lo = lowered(name, system)
-            P = lo.prefix
-            put(f"{P}.h", c_header(lo, src), name)
-            put(f"{P}.c", c_source(lo, src), name)
-            put(f"models/{P}.py", py_model(lo, src), name)
-            put(f"kf_{lo.est.inputs.name}_{system}.h", c_input_header(lo), name)
+            for rel, text in _files_of(lo, src).items():
+                put(rel, text, name)
             rows.append((name, system, lo.op_summary()))
     if names is None:   # the table covers every registered filter
         files["OPS.md"] = _ops_table(rows)
     elif ops_dir is not None:   # --filter: the others' rows of the existing table stay
         files["OPS.md"] = _ops_table(rows, keep=_ops_rows(Path(ops_dir) / "OPS.md"))
     return files
+
+
+def _files_of(lo: Lowered, src: str) -> dict[str, str]:
+    """The files of one filter in one number system: C source and header, model, input record."""
+    P = lo.prefix
+    return {f"{P}.h": c_header(lo, src), f"{P}.c": c_source(lo, src),
+            f"models/{P}.py": py_model(lo, src),
+            f"kf_{lo.est.inputs.name}_{lo.system}.h": c_input_header(lo)}
+
+
+def render_estimator(est, src: str, systems=None) -> dict[str, str]:
+    """Relative path -> file text for an estimator that need not be registered: its files in
+    `systems` (default: its own) and the runtime header they include."""
+    g = optimize(trace(est))
+    files = {"kf_fixed.h": (RUNTIME_DIR / "kf_fixed.h").read_text()}
+    for system in systems or est.systems:
+        files.update(_files_of(Lowered(est, g, system), src))
+    return files
+
+
+def load_estimator(spec: str):
+    """An instance of class Name of ``path/to/file.py:Name`` (imported from that file, not
+    registered); ValueError saying what is wrong otherwise."""
+    import importlib.util
+    import sys
+
+    from kinefuse.codegen.estimator import Estimator
+    path, sep, cls_name = spec.rpartition(":")
+    if not sep or not path.endswith(".py") or not cls_name.isidentifier():
+        raise ValueError(f"--estimator {spec!r}: expected path/to/file.py:ClassName")
+    file = Path(path)
+    if not file.is_file():
+        raise ValueError(f"--estimator: no such file {path}")
+    modname = f"kinefuse_estimator_{file.stem}"
+    mod_spec = importlib.util.spec_from_file_location(modname, file)
+    mod = importlib.util.module_from_spec(mod_spec)
+    sys.modules[modname] = mod      # (dataclasses and pickling look the module up by name)
+    try:
+        mod_spec.loader.exec_module(mod)
+    except Exception as exc:
+        del sys.modules[modname]
+        raise ValueError(f"--estimator: importing {path} failed: {type(exc).__name__}: {exc}") \
+            from None
+    cls = getattr(mod, cls_name, None)
+    if not (isinstance(cls, type) and issubclass(cls, Estimator)) or cls is Estimator:
+        found = sorted(k for k, v in vars(mod).items() if isinstance(v, type)
+                       and issubclass(v, Estimator) and v.__module__ == modname)
+        what = "not defined" if cls is None else "not a subclass of Estimator"
+        raise ValueError(f"--estimator: {cls_name} in {path}: {what} (estimators defined "
+                         f"there: {', '.join(found) or 'none'})")
+    try:
+        return cls()
+    except Exception as exc:
+        raise ValueError(f"--estimator: {cls_name}() failed: {type(exc).__name__}: {exc}") from None
 
 
 def _ops_rows(path: Path) -> dict[tuple[str, str], str]:

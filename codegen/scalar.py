@@ -24,11 +24,14 @@ import sys
 from kinefuse.codegen.ir import BOOL, INT, INT32_MAX, REAL, Graph, Node
 
 _CORE_FILES = {os.path.join(os.path.dirname(__file__), f)
-               for f in ("scalar.py", "ir.py", "linalg.py", "estimator.py", "mathlib.py")}
+               for f in ("scalar.py", "ir.py", "linalg.py", "estimator.py", "mathlib.py",
+                         os.path.join("estimators", "dynamics", "ad.py"))}
 
 
 def _loc() -> str:
-    """file:line of the first caller outside the generator core (the estimator's own line)."""
+    """file:line of the first caller outside the generator core and the dynamics filters'
+    automatic differentiation (its dual numbers record every operation of a derivative): the
+    reference line that asked for the operation, in the estimator or a shared reference module."""
     f = sys._getframe(2)
     while f is not None and f.f_code.co_filename in _CORE_FILES:
         f = f.f_back

@@ -33,26 +33,20 @@ def build_adhoc(est, workdir, systems=("f32", "q")):
     from pathlib import Path
 
     from kinefuse.codegen.build import build
-    from kinefuse.codegen.emit import Lowered, c_header, c_input_header, c_source, py_model
-    from kinefuse.codegen.estimator import trace
-    from kinefuse.codegen.passes import optimize
+    from kinefuse.codegen.generate import render_estimator
     from kinefuse.codegen.runner import CRunner, ModelRunner
-    from kinefuse.codegen.runtime import RUNTIME_DIR
 
     d = Path(workdir)
-    d.mkdir(parents=True, exist_ok=True)
-    (d / "kf_fixed.h").write_text((RUNTIME_DIR / "kf_fixed.h").read_text())
-    g = optimize(trace(est))
+    (d / "models").mkdir(parents=True, exist_ok=True)
+    files = render_estimator(est, "adhoc", systems)
+    for rel, text in files.items():
+        (d / rel).write_text(text)
     out = {}
     for system in systems:
-        lo = Lowered(est, g, system)
-        P = lo.prefix
-        (d / f"{P}.h").write_text(c_header(lo, "adhoc"))
-        (d / f"{P}.c").write_text(c_source(lo, "adhoc"))
+        P = f"{est.name.replace('-', '_')}_{system}"       # Lowered.prefix
         spec_h = d / f"kf_{est.inputs.name}_{system}.h"
-        spec_h.write_text(c_input_header(lo))
         mod = types.ModuleType(f"adhoc_{P}")
-        exec(compile(py_model(lo, "adhoc"), f"<model {P}>", "exec"), mod.__dict__)
+        exec(compile(files[f"models/{P}.py"], f"<model {P}>", "exec"), mod.__dict__)
         ffi_lib = build(f"adhoc_{P}", [spec_h, d / f"{P}.h"], [d / f"{P}.c"], include_dirs=[d])
         out[system] = (CRunner(est.name, system, mod, ffi_lib, est.inputs.name),
                        ModelRunner(est.name, system, mod))

@@ -1,6 +1,8 @@
 """Rules of the emitted C and models (checked on every registered filter's committed files)."""
 from __future__ import annotations
 
+import inspect
+import os
 import re
 import subprocess
 
@@ -109,6 +111,29 @@ def test_statements_are_one_operation_in_graph_order(name):
     model = (GENERATED_DIR / "models" / f"{stem(name, 'f32')}.py").read_text()
     m_names = set(re.findall(r"\b(t\d+(?:_[a-z0-9]+)?) = ", model))
     assert all(n in m_names for n in c_names)
+
+
+REFERENCE_DIR = os.path.dirname(inspect.getsourcefile(estimators))
+REFERENCE_FILES = {f: len(open(os.path.join(d, f)).read().splitlines())
+                   for d, _, fs in os.walk(REFERENCE_DIR) for f in fs
+                   if f.endswith(".py") and f not in ("ad.py", "__init__.py")}
+
+
+@pytest.mark.parametrize("name", FILTERS)
+def test_operation_locations_name_reference_lines(name):
+    """Each operation's location (the C comments, `bench cost --profile`) is a line of the
+    reference (the estimator or a shared reference module), never of the generator or of the
+    dynamics filters' automatic differentiation, whose dual numbers record every derivative's
+    operations (their locations were all ad.py:N)."""
+    locs = {n.loc for n in graph_of(name).nodes if n.op not in ("const", "input")}
+    bad = sorted(loc for loc in locs if loc.split(":")[0] not in REFERENCE_FILES
+                 or not 0 < int(loc.split(":")[1]) <= REFERENCE_FILES[loc.split(":")[0]])
+    assert locs and not bad, f"{name}: locations outside the reference: {bad[:8]}"
+    own = os.path.basename(inspect.getsourcefile(type(estimators.get(name))))
+    assert any(loc.startswith(own + ":") for loc in locs), f"{name}: none in {own}"
+    for path in sources(name):
+        files = set(re.findall(r"/\* ([\w.-]+\.py):\d+", path.read_text()))
+        assert files and files <= set(REFERENCE_FILES), f"{path.name}: {files}"
 
 
 def test_op_count_table_lists_every_filter():
