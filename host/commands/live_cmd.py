@@ -5,7 +5,8 @@
     kinefuse live --port tcp:192.168.4.1:5760 --unit 2
 
 Per unit: KF_RAW_SAMPLE rate achieved (on the unit's clock, last 2 s) vs requested (from
-KF_UNIT_STATUS), samples lost (32-bit ``sample_counter``, wrap-safe), CRC errors of the link,
+KF_UNIT_STATUS), samples lost (32-bit ``sample_counter``, wrap-safe; a frame the link delivered
+after a later one, up to 50 ms late, is counted reordered, not lost), CRC errors of the link,
 the latest KF_ORIENTATION as roll/pitch/yaw in degrees (intrinsic Z-Y'-X'' of the quaternion
 sensor -> earth; the earth frame the unit states: ENU = yaw about Up, counter-clockwise from
 East; NED = yaw about Down, clockwise from North), battery and status from KF_UNIT_STATUS.
@@ -54,30 +55,55 @@ class UnitView:
     earth_frame: str | None = None
     ori_frames: int = 0
     status: object = None                             # latest KF_UNIT_STATUS record
-    repeats: int = 0                                  # frames delivered again or late (not samples)
+    repeats: int = 0                                  # frames delivered again (not samples)
+    reordered: int = 0                                # frames swapped on the way (samples, late)
     max_t: int | None = None                          # latest device time of the current clock segment
+    max_c: int | None = None                          # ... and its sample counter
     seen: dict = field(default_factory=dict)          # (time, counter) of its latest frames (bounded)
 
     # -- updates -------------------------------------------------------------------------------
     def raw(self, m) -> None:
+        from kinefuse.host.link.stats import reordered
         self.raw_frames += 1
         t, c = int(m.time_boot_us), int(m.sample_counter)
         if self.max_t is not None and t <= self.max_t:
             if (t, c) in self.seen:
-                # a frame delivered again or late (stats' rule, device_segments): was a counter
-                # reset, and the step from it back onto the stream that many samples "lost"
+                # a frame delivered again (stats' rule, device_segments): was a counter reset,
+                # and the step from it back onto the stream that many samples "lost"
                 self.repeats += 1
+                return
+            if reordered(t, c, self.max_t, self.max_c):
+                # frame N after N+1 (UDP, a Wi-Fi bridge): was a reboot and two samples lost
+                self.reordered += 1
+                self._late(t, c)
                 return
             self.window.clear()                       # back onto a time not sent: a reboot
             self.seen.clear()
-        self.max_t = t
-        self.seen[(t, c)] = None
-        if len(self.seen) > 4096:
-            del self.seen[next(iter(self.seen))]
+        self.max_t, self.max_c = t, c
+        self._remember(t, c)
         self.window.append(t)
         while self.window and self.window[0] < t - RATE_WINDOW_US:
             self.window.popleft()
-        self.pending.append(int(m.sample_counter))
+        self.pending.append(c)
+
+    def _remember(self, t: int, c: int) -> None:
+        self.seen[(t, c)] = None
+        if len(self.seen) > 4096:
+            del self.seen[next(iter(self.seen))]
+
+    def _late(self, t: int, c: int) -> None:
+        """A sample swapped on the way: into the rate window and the counters in its place;
+        when the counters around it were already checked, the sample counted lost arrived."""
+        import bisect
+        self._remember(t, c)
+        bisect.insort(self.window, t)
+        k = len(self.pending)
+        while k and 0 < (self.pending[k - 1] - c) & 0xFFFFFFFF < 1 << 31:   # pending[k - 1] after c
+            k -= 1
+        if k or self.last_counter is None or not 0 < (self.last_counter - c) & 0xFFFFFFFF < 1 << 31:
+            self.pending.insert(k, c)
+        elif self.lost:
+            self.lost -= 1
 
     def settle_counters(self, final: bool = False) -> None:
         """Count lost samples in the counters received since the last call (wrap-safe); the
@@ -203,6 +229,7 @@ class LiveMonitor:
             out.append(f"[{el:6.1f} s] unit {sysid} ({u.connection}): rate "
                        f"{'-' if rate is None else f'{rate:.1f}'} Hz (requested {u.requested_text(unit=True)}), "
                        f"lost {u.lost}" + (f" ({u.resets} counter resets)" if u.resets else "")
+                       + (f", {u.reordered} reordered" if u.reordered else "")
                        + f", CRC errors {self.crc_errors(sid)}, {u.orientation_text()}, "
                          f"battery {u.battery_text()}, {u.status_text()}")
         seen = {sid for sid, _ in self.units}

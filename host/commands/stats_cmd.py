@@ -54,14 +54,15 @@ def run(args) -> int:
                 if not u["dialect_match"]:
                     line += f" [yellow](dialect {u['dialect_hash']} differs from the host's)[/]"
             con.print(line)
-            t = Table("message", "count", "rate Hz", "requested Hz", "ratio", "lost", "loss %", "resets", box=None)
+            t = Table("message", "count", "rate Hz", "requested Hz", "ratio", "lost", "loss %", "resets", "reordered",
+                      box=None)
             for name, m in u["messages"].items():
                 ratio = m.get("rate_ratio")
                 style = "yellow" if ratio is not None and ratio < 0.95 else None
                 t.add_row(name, f"{m['count']:,}", fmt_rate(m.get("rate_hz")), fmt_rate(m.get("requested_hz")),
                           "-" if ratio is None else f"{ratio:.3f}", str(m.get("samples_lost", "-")),
                           "-" if "loss_fraction" not in m else f"{100 * m['loss_fraction']:.3f}",
-                          str(m.get("resets", "-")), style=style)
+                          str(m.get("resets", "-")), str(m.get("reordered", "-")), style=style)
             print_table(t, con)
             for name, m in u["messages"].items():
                 if m.get("requested_changes"):

@@ -3,8 +3,10 @@
 It is NOT the firmware: it streams KF_RAW_SAMPLE (a unit rotating about a tilted axis, with
 noise), KF_ORIENTATION (gyro strapdown integration), KF_UNIT_STATUS and HEARTBEAT, answers
 TIMESYNC, the parameter protocol and COMMAND_LONG (MAV_CMD_KF_STREAM, SET_MESSAGE_INTERVAL,
-REQUEST_MESSAGE, reboot, heading tare, filter reset), and can drift its clock, drop samples and
-corrupt bytes on purpose.
+REQUEST_MESSAGE, reboot, heading tare, filter reset), and can drift its clock, drop samples,
+corrupt bytes, have a sensor that grants another rate than KF_RATE_HZ asks and a parameter
+storage that fails (KF_UNIT_STATUS_FLAGS_STORAGE_ERROR and a STATUSTEXT, as the firmware) on
+purpose.
 
     pair = create_pty_pair()
     unit = FakeUnit(open_tty_raw(pair.device_path), unit_id=3, rate_hz=500).start()
@@ -29,6 +31,8 @@ MSG_RAW, MSG_ORI, MSG_STATUS = 52500, 52501, 52504
 CMD_STREAM, CMD_TARE, CMD_RESET = 52500, 52501, 52502
 CMD_SET_INTERVAL, CMD_REQUEST_MESSAGE, CMD_REBOOT = 511, 512, 246
 FIRMWARE_VERSION = (0 << 24) | (1 << 16) | (0 << 8) | 0  # 0.1.0 DEV
+SEVERITY_ERROR = 3
+STORAGE_TEXT = "parameter storage error: settings may be lost"     # the firmware's (kf_status.c)
 
 # name -> (MAV_PARAM_TYPE, default, min, max)
 DEFAULT_PARAMS = {
@@ -80,7 +84,10 @@ class FakeUnit:
     def __init__(self, conn: Connection, unit_id: int = 1, rate_hz: float = 1000.0, orientation_rate_hz: float = 100.0,
                  drift_ppm: float = 0.0, boot_offset_us: int = 0, streaming: bool = True, drop_every: int = 0,
                  corrupt_probability: float = 0.0, seed: int = 0, answer_params: bool = True,
-                 param_list_loss_every: int = 0):
+                 param_list_loss_every: int = 0, sensor_grant_hz: int = 0, storage_error: bool = False):
+        """``sensor_grant_hz``: the rate the sensor delivers whatever KF_RATE_HZ asks (0: the rate
+        asked; the firmware test HAL's kft_sensor_grant); ``storage_error``: every load (boot) and
+        save (parameter change) of the parameter storage fails."""
         self.conn = conn
         self.params = {k: v[1] for k, v in DEFAULT_PARAMS.items()}
         self.params["KF_UNIT_ID"] = unit_id
@@ -93,6 +100,8 @@ class FakeUnit:
         self.corrupt_probability = corrupt_probability
         self.answer_params = answer_params
         self.param_list_loss_every = param_list_loss_every  # drop every k-th PARAM_VALUE of a list
+        self.sensor_grant_hz = int(sensor_grant_hz)
+        self.storage_error = storage_error
         self.rng = np.random.default_rng(seed)
         self.enc = Encoder(sysid=unit_id, compid=UNIT_COMPONENT_ID)
         self.dec = StreamDecoder()
@@ -116,6 +125,44 @@ class FakeUnit:
         self.tared = False
         self.hil = False  # True after the first HIL_SENSOR: samples come from the host
         self.mag_present = False  # a magnetometer reading since boot (KF_UNIT_STATUS_FLAGS_MAG_PRESENT)
+        # failed loads and saves of the parameter storage since boot (at boot: the load), and
+        # their number at the last periodic status and at the last STATUSTEXT (kf_status.c)
+        self.store_errors = int(self.storage_error)
+        self.store_errors_status = self.store_errors_told = 0
+        self._apply_rate()      # the sensor configured at boot (kf_app_init)
+
+    def _apply_rate(self) -> bool:
+        """The sensor configured for KF_RATE_HZ (kf_config_apply_rates): a rate it grants
+        instead becomes KF_RATE_HZ; False (KF_RATE_HZ left as asked) when that rate is outside
+        KF_RATE_HZ's range."""
+        g = self.sensor_grant_hz
+        if not g:
+            return True
+        lo, hi = DEFAULT_PARAMS["KF_RATE_HZ"][2:]
+        if not lo <= g <= hi:
+            return False
+        self.params["KF_RATE_HZ"] = g
+        return True
+
+    def _save(self) -> None:
+        """A parameter change is stored (kf_config_save); a failure is counted."""
+        if self.storage_error:
+            self.store_errors += 1
+
+    def statustext(self, severity: int, text: str) -> bytes:
+        """A STATUSTEXT frame (MAV_SEVERITY ``severity``), as kf_send_statustext sends it."""
+        return self.enc.encode("STATUSTEXT", severity=severity, text=text, id=0, chunk_seq=0)
+
+    def _status_tick(self, now_us: int) -> list:
+        """The periodic status (kf_status_tick): HEARTBEAT, KF_UNIT_STATUS (STORAGE_ERROR: a
+        storage failure since the previous one) and, after a failure since the last one told,
+        STATUSTEXT ERROR "parameter storage error: settings may be lost"."""
+        out = [self._heartbeat(), self._status(now_us)]
+        self.store_errors_status = self.store_errors
+        if self.store_errors != self.store_errors_told:
+            self.store_errors_told = self.store_errors
+            out.append(self.statustext(SEVERITY_ERROR, STORAGE_TEXT))
+        return out
 
     def device_time_us(self) -> int:
         """Unit clock: us since boot, running (1 + drift) times as fast as the host clock."""
@@ -166,8 +213,7 @@ class FakeUnit:
         now = self.device_time_us()
         out = []
         if now >= self.next_status_us:
-            out.append(self._heartbeat())
-            out.append(self._status(now))
+            out += self._status_tick(now)
             self.next_status_us = now - now % 1_000_000 + 1_000_000
         if not self.streaming or self.hil:
             self.next_sample_us = max(self.next_sample_us, now)
@@ -247,9 +293,9 @@ class FakeUnit:
             orientation_rate_achieved=float(self.params["KF_ORI_RATE_HZ"] if self.streaming else 0),
             battery_voltage=3900, cpu_load=123,
             # as the firmware: MAG_PRESENT once a magnetometer reading arrived, never LOW_BATTERY
-            # (no threshold); no storage, so never STORAGE_ERROR
+            # (no threshold), STORAGE_ERROR after a failed load or save since the previous status
             status_flags=(1 if self.streaming else 0) | (2 if self.mag_present else 0) | 32
-            | (8 if self.hil else 0),
+            | (8 if self.hil else 0) | (128 if self.store_errors != self.store_errors_status else 0),
             battery_remaining=80, unit_id=self.params["KF_UNIT_ID"], filter_id=self.params["KF_FILTER"],
             numeric_format=1, earth_frame=1,
             # extensions: a strapdown integration never resets, one sensor (no sensor 1 rejections)
@@ -346,14 +392,26 @@ class FakeUnit:
         ptype, _, lo, hi = DEFAULT_PARAMS[m.param_id]
         index = list(self.params).index(m.param_id)
         value = decode_value(m.param_value, m.param_type)
-        if m.param_type != ptype or not (lo <= value <= hi) or (isinstance(value, float) and math.isnan(value)):
+        if m.param_type != ptype or not (lo <= value <= hi) or (isinstance(value, float) and math.isnan(value)) \
+                or not self._set(m.param_id, value):
             return [self._param_error(m.param_id, index, 2, f), self._param_value(index)]
-        if m.param_id in ("KF_RATE_HZ", "KF_ORI_RATE_HZ") and value != self.params[m.param_id]:
-            self.cnt_ori = 0              # a change restarts the firmware's dividers (kf_config_apply_rates)
-        self.params[m.param_id] = value
         if m.param_id == "KF_UNIT_ID":
             self.enc.sysid = int(value)
         return [self._param_value(index)]
+
+    def _set(self, name: str, value) -> bool:
+        """A checked parameter value applied (kf_config_set): a KF_RATE_HZ the sensor cannot
+        deliver (its grant out of range) is refused, the old rate kept; a change is stored."""
+        old = self.params[name]
+        self.params[name] = value
+        if name == "KF_RATE_HZ" and not self._apply_rate():
+            self.params[name] = old
+            return False
+        if name in ("KF_RATE_HZ", "KF_ORI_RATE_HZ") and self.params[name] != old:
+            self.cnt_ori = 0              # a change restarts the firmware's dividers (kf_config_apply_rates)
+        if self.params[name] != old:
+            self._save()
+        return True
 
     def _ack(self, command: int, result: int, f) -> bytes:
         return self.enc.encode("COMMAND_ACK", command=command, result=result, progress=0, result_param2=0,
@@ -375,11 +433,8 @@ class FakeUnit:
                 return [self._ack(m.command, 3, f)]
             lo, hi = DEFAULT_PARAMS[key][2:]
             rate = 0 if interval < 0 else DEFAULT_PARAMS[key][1] if interval == 0 else interval_rate(interval)
-            if rate is None or not lo <= rate <= hi:
+            if rate is None or not lo <= rate <= hi or not self._set(key, rate):
                 return [self._ack(m.command, 2, f)]
-            if rate != self.params[key]:
-                self.cnt_ori = 0
-            self.params[key] = rate
             return [self._ack(m.command, 0, f)]
         if m.command == CMD_REQUEST_MESSAGE:
             if int(p[0]) == MSG_STATUS:
@@ -418,16 +473,19 @@ def raw_frames(n: int, unit_id: int = 1, rate_hz: float = 1000.0, seed: int = 0,
 class FakeConnection(Connection):
     """Host end of a socket pair whose other end is driven by an in-process :class:`FakeUnit`.
 
-    Connection string ``fake:[rate=1000,ori=100,unit=1,drift=0,drop=0,corrupt=0,stream=1,params=1]``
-    (all optional): try the host tools without hardware.  rate, ori: Hz; drift: ppm of the unit's
+    Connection string ``fake:[rate=1000,ori=100,unit=1,drift=0,drop=0,corrupt=0,stream=1,params=1,grant=0,
+    storage_error=0]`` (all optional): try the host tools without hardware.  rate, ori: Hz; drift: ppm of the unit's
     clock; drop=k: every k-th sample lost; corrupt=p: each transmitted *bit* flips with
     probability p (a 46-byte frame survives with (1 - p)^368: p = 1e-4 loses about 4 % of the frames,
     p = 0.02 nearly all); stream=0: waits for MAV_CMD_KF_STREAM; params=0: a unit that does not
-    answer the parameter protocol.
+    answer the parameter protocol; grant=HZ: its sensor delivers HZ whatever KF_RATE_HZ asks (which
+    then becomes HZ, as on the unit); storage_error=1: its parameter storage fails (KF_UNIT_STATUS
+    STORAGE_ERROR and a STATUSTEXT ERROR at boot and after each parameter change).
     """
     # option -> allowed range (a value outside made the unit's thread die: a silent, empty stream)
     LIMITS = {"rate": (1, 100_000), "ori": (0, 10_000), "unit": (1, 254), "drift": (-100_000, 100_000),
-              "drop": (0, 2**31), "corrupt": (0, 1), "seed": (0, 2**32 - 1)}
+              "drop": (0, 2**31), "corrupt": (0, 1), "seed": (0, 2**32 - 1),
+              "grant": (0, DEFAULT_PARAMS["KF_RATE_HZ"][3])}
 
     def __init__(self, options: str = ""):
         import socket as _socket
@@ -436,7 +494,8 @@ class FakeConnection(Connection):
         keys = {"rate": ("rate_hz", float), "ori": ("orientation_rate_hz", float), "unit": ("unit_id", int),
                 "drift": ("drift_ppm", float), "drop": ("drop_every", int), "corrupt": ("corrupt_probability", float),
                 "stream": ("streaming", lambda v: bool(int(v))), "seed": ("seed", int),
-                "params": ("answer_params", lambda v: bool(int(v)))}
+                "params": ("answer_params", lambda v: bool(int(v))), "grant": ("sensor_grant_hz", int),
+                "storage_error": ("storage_error", lambda v: bool(int(v)))}
         kw = {}
         for part in filter(None, options.split(",")):
             k, _, v = part.partition("=")

@@ -5,8 +5,9 @@
   changing during the recording, the achieved rate is taken from its last change on (it was the
   average of the old and the new rate) and the number of changes is reported;
 - samples lost: from the 32-bit ``sample_counter`` (wrap-safe; the usual step between frames
-  is taken as the stride, so a decimated stream is not counted as loss); resets (reboots) and
-  duplicates are counted separately;
+  is taken as the stride, so a decimated stream is not counted as loss); resets (reboots),
+  duplicates and frames reordered on the way (up to REORDER_US of device time late: put back
+  in their place, not lost) are counted separately;
 - clock: host time = offset + slope * device time + delay.  The slope is the Theil-Sen median
   of the slopes between the lowest-delay points of 40 blocks, the offset puts the line on the
   lower envelope (minimum delay), so ``drift_ppm`` (unit clock rate relative to the host's,
@@ -35,7 +36,7 @@ def severity_name(severity: int) -> str:
     return SEVERITY_NAMES.get(int(severity), f"severity {int(severity)}")
 
 
-def _statustext(text) -> str:
+def clean_statustext(text) -> str:
     """A STATUSTEXT's text (str, or NUL-padded bytes) without its padding."""
     if not isinstance(text, str):
         text = bytes(text).decode("utf-8", "replace")
@@ -44,7 +45,7 @@ def _statustext(text) -> str:
 
 def statustext_text(severity: int, text) -> str:
     """"ERROR: parameter storage error: ..." of a STATUSTEXT (text as str or NUL-padded bytes)."""
-    return f"{severity_name(severity)}: {_statustext(text)}"
+    return f"{severity_name(severity)}: {clean_statustext(text)}"
 
 
 def statustexts(ds: DecodedStream, start_ns: int | None = None) -> list[dict]:
@@ -57,7 +58,7 @@ def statustexts(ds: DecodedStream, start_ns: int | None = None) -> list[dict]:
     host = ds.host_ns.get(MSG_STATUSTEXT)
     out: dict = {}
     for k, r in enumerate(arr):
-        text = _statustext(r["text"])
+        text = clean_statustext(r["text"])
         key = (int(r["_sysid"]), int(r["severity"]), text)
         t = None if host is None or start_ns is None else (int(host[k]) - start_ns) / 1e9
         e = out.get(key)
@@ -308,43 +309,74 @@ def host_time_from_fit(segments: list[dict], device_us, host_ns) -> np.ndarray:
     return off + slope * t
 
 
+REORDER_US = 50_000    # a frame at most this far (device time) behind the latest of its segment: reordered
+
+
+def reordered(t_us: int, counter, top_t: int, top_counter) -> bool:
+    """A frame (``t_us``, ``counter``) not sent before, arriving after the frame (``top_t``,
+    ``top_counter``) -- the latest of its clock segment -- was swapped on the way (UDP, a Wi-Fi
+    bridge deliver frame N+1 before N): it is at most REORDER_US of device time behind it and,
+    with a sample counter, its counter is behind too (wrap-safe).  A reboot restarts the device
+    clock near 0, further behind unless the unit had been up for less than REORDER_US."""
+    if not 0 < top_t - t_us <= REORDER_US:
+        return False
+    return counter is None or 0 < (int(top_counter) - int(counter)) & 0xFFFFFFFF < 1 << 31
+
+
 def device_segments(t_us, counter=None) -> tuple[list[int], np.ndarray]:
     """(start indices of the device-clock segments, mask of the frames that are not repeats)
     of one unit's frames of one message, in arrival order.
 
     A step back of the device clock onto a time (with the same sample counter, when there is
-    one) already sent in the current segment is a repeat -- a frame the link delivered again,
-    or late -- not a reboot; a step back onto a time not sent before starts a new segment (a
-    reboot).  A repeat is a frame whose device time is not after every earlier one of its
-    segment.  The kfr reader uses the same rule; stats and export took every step back for a
-    reboot, so a frame replayed late counted a reset, the jump from it back onto the stream's
-    latest sample that many samples lost (14 lost for 6), and the rate and clock fit were
-    those after the replay."""
+    one) already sent in the current segment is a repeat -- a frame the link delivered again --
+    not a reboot; a step back onto a time not sent before is a frame swapped on the way when it
+    lands within the reorder window behind the segment's latest frame (:func:`reordered`: kept,
+    it belongs between its neighbours by device time), else it starts a new segment (a reboot).
+    The kfr reader, stats and export use this rule, live the same frame by frame
+    (:class:`kinefuse.host.commands.live_cmd.UnitView`); stats and export took every step
+    back for a reboot, so a frame replayed late counted a reset, the jump from it back onto the
+    stream's latest sample that many samples lost (14 lost for 6), and the rate and clock fit
+    were those after the replay; a swapped pair counted a reset and two samples lost."""
     dev = np.asarray(t_us, np.int64)
     cnt = None if counter is None else np.asarray(counter, np.int64)
+    n = dev.size
     starts = [0]
     backs = np.flatnonzero(np.diff(dev) < 0) + 1
-    if backs.size:
-        # prev[i]: the latest earlier frame with the same (time, counter), -1 if none (one sort,
-        # not a scan of the segment per step back: a flaky hour-long link has thousands)
-        n = dev.size
-        keys = (np.arange(n), dev) if cnt is None else (np.arange(n), cnt, dev)
-        order = np.lexsort(keys)
-        same = dev[order][1:] == dev[order][:-1]
-        if cnt is not None:
-            same &= cnt[order][1:] == cnt[order][:-1]
-        prev = np.full(n, -1, np.int64)
-        prev[order[1:][same]] = order[:-1][same]
-        for b in backs:
-            if prev[b] < starts[-1]:      # not sent before in this segment: a reboot
-                starts.append(int(b))
-    keep = np.ones(dev.size, bool)
-    for s, e in zip(starts, starts[1:] + [dev.size]):
-        d = dev[s:e]
-        if d.size:
-            prev = np.maximum.accumulate(np.concatenate([[np.iinfo(np.int64).min], d[:-1]]))
-            keep[s:e] = d > prev
-    return starts, keep
+    if not backs.size:          # times never go back: a repeat is the frame just before again
+        keep = np.ones(n, bool)
+        same = dev[1:] == dev[:-1]
+        keep[1:] = ~(same if cnt is None else same & (cnt[1:] == cnt[:-1]))
+        return starts, keep
+    # prev[i]: the latest earlier frame with the same (time, counter), -1 if none (one sort,
+    # not a scan of the segment per step back: a flaky hour-long link has thousands)
+    keys = (np.arange(n), dev) if cnt is None else (np.arange(n), cnt, dev)
+    order = np.lexsort(keys)
+    same = dev[order][1:] == dev[order][:-1]
+    if cnt is not None:
+        same &= cnt[order][1:] == cnt[order][:-1]
+    prev = np.full(n, -1, np.int64)
+    prev[order[1:][same]] = order[:-1][same]
+    top = -1                    # the frame with the latest time of the segment so far
+    for b in backs:
+        # between two steps back the times rise: the latest is one just before a step back
+        if top < starts[-1] or dev[b - 1] >= dev[top]:
+            top = b - 1
+        if prev[b] >= starts[-1] or reordered(dev[b], None if cnt is None else cnt[b], dev[top],
+                                              None if cnt is None else cnt[top]):
+            continue            # a repeat, or a frame swapped on the way
+        starts.append(int(b))   # not sent before in this segment, far behind: a reboot
+    seg_start = np.asarray(starts)[np.searchsorted(starts, np.arange(n), side="right") - 1]
+    return starts, prev < seg_start
+
+
+def in_device_order(t_us, keep, start: int, end: int) -> tuple[np.ndarray, int]:
+    """(indices of the kept frames of the segment [start, end) sorted by device time -- a frame
+    swapped on the way goes back between its neighbours, stable for equal times --, number of
+    them that arrived after a frame with a later time: the reordered ones)."""
+    idx = np.arange(start, end)[keep[start:end]]
+    t = np.asarray(t_us, np.int64)[idx]
+    late = int(np.count_nonzero(t[1:] < np.maximum.accumulate(t)[:-1]))
+    return idx[np.argsort(t, kind="stable")], late
 
 
 INTERLEAVE_MIN_RESETS = 5     # this many device-clock restarts, each one later than the last,
@@ -386,13 +418,16 @@ def interleaved_text(sysid, name: str, info: dict,
 
 def sample_loss(t_us, counter) -> dict:
     """:func:`counter_analysis` of a unit's frames, segment by segment (:func:`device_segments`):
-    repeats left out (counted as ``duplicates``), ``resets`` = reboots."""
+    repeats left out (counted as ``duplicates``), frames swapped on the way put back in device
+    order (counted as ``reordered``, neither lost nor a reset), ``resets`` = reboots."""
     starts, keep = device_segments(t_us, counter)
     c = np.asarray(counter, np.int64)
-    lost = received = dup = 0
+    lost = received = dup = late = 0
     strides: dict = {}
     for s, e in zip(starts, starts[1:] + [c.size]):
-        part = c[s:e][keep[s:e]]
+        idx, k = in_device_order(t_us, keep, s, e)
+        late += k
+        part = c[idx]
         ca = counter_analysis(part)
         lost += ca["samples_lost"]
         dup += ca["duplicates"]
@@ -402,7 +437,7 @@ def sample_loss(t_us, counter) -> dict:
     expected = received + lost
     return {"stride": max(strides, key=strides.get) if strides else None, "samples_lost": int(lost),
             "loss_fraction": lost / expected if expected else 0.0, "resets": len(starts) - 1,
-            "duplicates": int(dup + np.count_nonzero(~keep))}
+            "duplicates": int(dup + np.count_nonzero(~keep)), "reordered": late}
 
 
 def _last_segment(t_us: np.ndarray, counter=None) -> tuple[slice, np.ndarray]:
@@ -482,7 +517,7 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
                     m["rate_from_device_s"] = since_us / 1e6
                     seg = seg[seg["time_boot_us"].astype(np.int64) >= since_us]
             t = seg["time_boot_us"].astype(np.int64)
-            span = (t[-1] - t[0]) / 1e6 if t.size >= 2 else 0.0
+            span = (t.max() - t.min()) / 1e6 if t.size >= 2 else 0.0   # a swapped frame may be first or last
             if span > 0:
                 m["rate_hz"] = (seg.size - 1) / span
                 m["device_span_s"] = span

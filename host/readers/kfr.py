@@ -32,8 +32,20 @@ The device time itself is kept in ``channels["device_time_s"]``.
 **Losses and repeats.** Samples missing from the ``sample_counter`` sequence stay missing:
 ``t`` has a gap there (nothing is interpolated or invented; a warning counts them, see
 ``metadata["samples_lost"]``).  Repeated frames (same device time) are dropped
-(``metadata["duplicates_dropped"]``).  ``channels`` also hold ``sample_counter`` (unwrapped),
+(``metadata["duplicates_dropped"]``).  A frame the link delivered after a later one (UDP, a
+Wi-Fi bridge: frame N+1 before N) at most ``REORDER_US`` (50 ms) of device time behind the latest
+of its clock segment is put back in its place by device time (``metadata["reordered"]``); it was
+dropped, and taken for a reboot by ``kinefuse stats``.  ``channels`` also hold ``sample_counter`` (unwrapped),
 ``temperature_degC`` (NaN where not valid) and ``flags``.
+
+**What the unit said.** ``metadata["unit_messages"]``: the unit's STATUSTEXTs (e.g. ERROR
+"parameter storage error: settings may be lost") in arrival order, each with ``t`` (receive time
+on the time base of ``t``), ``device_time_s`` (the unit's clock at its latest sample before it:
+STATUSTEXT carries no time), ``severity``, ``severity_name`` and ``text``; WARNING or worse also
+as a warning.  ``metadata["status_flags"]``: per message (KF_UNIT_STATUS ``status_flags``,
+KF_ORIENTATION ``status``) how many frames had each bit set, e.g. ``{"KF_UNIT_STATUS":
+{"STREAMING": 60, "STORAGE_ERROR": 1}, "KF_ORIENTATION": {"INPUT_CLIPPED": 3, ...}}``; a
+SENSOR_FAULT, TX_OVERFLOW or STORAGE_ERROR status adds a warning.
 
 **Magnetometer.** Present when the unit flags new magnetometer values
 (KF_RAW_SAMPLE_FLAGS_MAG_UPDATED) in at least one sample, else ``mag`` is ``None``.  The
@@ -63,7 +75,7 @@ from kinefuse.host.errors import KinefuseError
 from kinefuse.host.readers.recording import ReaderError, Recording, zero_order_hold
 
 FORMAT = "kfr"
-MSG_RAW, MSG_STATUS = 52500, 52504
+MSG_RAW, MSG_ORI, MSG_STATUS, MSG_STATUSTEXT = 52500, 52501, 52504, 253
 ACC_CLIPPED, GYRO_CLIPPED, MAG_CLIPPED, MAG_UPDATED = 1, 2, 4, 8
 CALIBRATED, TEMPERATURE_VALID, SIMULATED = 16, 32, 64
 
@@ -115,7 +127,7 @@ def _decode_file(path: str):
     if p.suffix.lower() == ".kfr" and p.is_file() and not is_recording(p):
         raise ReaderError(path, "not a kinefuse recording (no .kfr header magic)")
     try:
-        return decode_file(p, raw=True, msgids=(MSG_RAW, MSG_STATUS))
+        return decode_file(p, raw=True, msgids=(MSG_RAW, MSG_ORI, MSG_STATUS, MSG_STATUSTEXT))
     except KinefuseError as exc:
         raise _error(path, exc) from None
 
@@ -178,12 +190,14 @@ def _select(path: str, found: list[dict], unit) -> dict:
     raise ReaderError(path, f"unit {unit} is ambiguous ({', '.join(full)}): give the stream too, e.g. {full[0]}")
 
 
-def _segments(dev: np.ndarray, cnt: np.ndarray) -> list[int]:
-    """Start indices of device-clock segments: the clock goes back to a time not sent before in
-    this segment (a reboot); a step back onto an already-sent (time, counter) is a repeat.  The
-    rule of ``kinefuse stats`` (:func:`kinefuse.host.link.stats.device_segments`)."""
+def _segments(dev: np.ndarray, cnt: np.ndarray) -> tuple[list[int], np.ndarray]:
+    """(start indices of device-clock segments, mask of the frames that are not repeats): the
+    clock goes back to a time not sent before in this segment and outside the reorder window (a
+    reboot); a step back onto an already-sent (time, counter) is a repeat, one just behind the
+    latest frame a frame swapped on the way.  The rule of ``kinefuse stats``
+    (:func:`kinefuse.host.link.stats.device_segments`)."""
     from kinefuse.host.link.stats import device_segments
-    return device_segments(dev, cnt)[0]
+    return device_segments(dev, cnt)
 
 
 def _unwrap(cnt: np.ndarray) -> np.ndarray:
@@ -195,11 +209,51 @@ def _unwrap(cnt: np.ndarray) -> np.ndarray:
     return int(cnt[0]) + np.concatenate([[0], np.cumsum(d)])
 
 
+STATUS_FIELDS = {MSG_STATUS: ("KF_UNIT_STATUS", "status_flags"), MSG_ORI: ("KF_ORIENTATION", "status")}
+PROBLEM_FLAGS = ("SENSOR_FAULT", "TX_OVERFLOW", "STORAGE_ERROR")   # KF_UNIT_STATUS bits worth a warning
+
+
+def _unit_reports(ds, sysid: int, raw, start_ns: int | None) -> dict:
+    """What a unit said about itself, for the metadata:
+
+    * ``unit_messages``: its STATUSTEXTs in arrival order, [{"t", "device_time_s", "severity",
+      "severity_name", "text"}]; ``t`` on the recording's time base (host receive time, or the
+      device clock in a capture without host times); STATUSTEXT carries no time of its own, so
+      ``device_time_s`` is that of the unit's latest KF_RAW_SAMPLE before it (None before the first);
+    * ``status_flags``: {message: {bit: number of frames with it set}} of KF_UNIT_STATUS
+      ``status_flags`` and KF_ORIENTATION ``status`` (STORAGE_ERROR, INPUT_CLIPPED, ...)."""
+    from kinefuse.host.link.export import bitmask_fields
+    from kinefuse.host.link.stats import clean_statustext, severity_name
+    out: dict = {"unit_messages": [], "status_flags": {}}
+    for mid, (name, fld) in STATUS_FIELDS.items():
+        arr = ds.arrays.get(mid)
+        if arr is None:
+            continue
+        v = arr[fld][arr["_sysid"] == sysid].astype(np.int64)
+        counts = {bit: int(np.count_nonzero(v & b)) for b, bit in bitmask_fields(name)[fld].items()}
+        if v.size:
+            out["status_flags"][name] = {bit: n for bit, n in counts.items() if n}
+    arr = ds.arrays.get(MSG_STATUSTEXT)
+    if arr is None:
+        return out
+    rows = arr["_sysid"] == sysid
+    host = ds.host_ns.get(MSG_STATUSTEXT)
+    host = None if host is None or start_ns is None else (host[rows] - start_ns) / 1e9
+    before = np.searchsorted(raw["_offset"], arr["_offset"][rows]) - 1
+    for k, r in enumerate(arr[rows]):
+        dev = None if before[k] < 0 else int(raw["time_boot_us"][before[k]]) / 1e6
+        t = dev if host is None else float(host[k])
+        out["unit_messages"].append({"t": t, "device_time_s": dev, "severity": int(r["severity"]),
+                                     "severity_name": severity_name(r["severity"]),
+                                     "text": clean_statustext(r["text"])})
+    return out
+
+
 def read(path: str, *, unit=None, **_) -> Recording:
     """One unit of a ``.kfr`` recording (or raw MAVLink capture) as a :class:`Recording`."""
     from kinefuse.host.link.dialect import RAW_SCALE
     from kinefuse.host.link.hil import gyro_radps
-    from kinefuse.host.link.stats import clock_jumps, counter_analysis, fit_clock, leading_stale
+    from kinefuse.host.link.stats import clock_jumps, counter_analysis, fit_clock, in_device_order, leading_stale
     path = str(path)
     df = _decode(path)
     found = _units(df)
@@ -221,7 +275,7 @@ def read(path: str, *, unit=None, **_) -> Recording:
     if mixed is not None:   # two units' samples mixed into one series: was read as one unit
         raise ReaderError(path, interleaved_text(u["label"], "KF_RAW_SAMPLE", mixed,
                                                  "they cannot be read as one unit"))
-    starts = _segments(dev, cnt)
+    starts, fresh = _segments(dev, cnt)
     jumps = clock_jumps(dev, cnt) if host is not None else ()
     if len(jumps):   # one fit across a clock step is meaningless: each side gets its own
         warnings.append(f"{path}: {name}: the device clock jumped forward {len(jumps)} time(s) with the sample "
@@ -234,14 +288,12 @@ def read(path: str, *, unit=None, **_) -> Recording:
                         f"has no host times: only the last segment is read")
         starts = starts[-2:]
     keep_idx, t_parts, clocks = [], [], []
-    duplicates, lost, gaps = 0, 0, 0
+    duplicates, lost, gaps, reordered = 0, 0, 0, 0
     counters = []
     for s, e in zip(starts[:-1], starts[1:]):
-        d = dev[s:e]
-        prev_max = np.maximum.accumulate(np.concatenate([[np.iinfo(np.int64).min], d[:-1]]))
-        ok = d > prev_max
-        duplicates += int((~ok).sum())
-        idx = np.arange(s, e)[ok]
+        duplicates += int(np.count_nonzero(~fresh[s:e]))
+        idx, late = in_device_order(dev, fresh, s, e)   # a frame swapped on the way back in its place
+        reordered += late
         dev_s = dev[idx] / 1e6
         if host is None:
             t_seg = dev_s
@@ -318,7 +370,8 @@ def read(path: str, *, unit=None, **_) -> Recording:
         "unit": u["label"], "sysid": u["sysid"], "stream": u["stream"], "connection": u.get("connection"),
         "units_in_file": [x["label"] for x in found], "source_kind": df.kind if rec is None else "kfr",
         "time_base": "device" if host is None else "host",
-        "samples_lost": int(lost), "duplicates_dropped": int(duplicates), "device_clock_segments": len(keep_idx),
+        "samples_lost": int(lost), "duplicates_dropped": int(duplicates), "reordered": int(reordered),
+        "device_clock_segments": len(keep_idx),
         "calibrated_on_unit": calibrated, "simulated": bool(np.any(flags & SIMULATED)),
         "mag_present": bool(upd.any()),
         "unit_id": int(np.bincount(a["unit_id"].astype(np.int64)).argmax()),
@@ -336,6 +389,15 @@ def read(path: str, *, unit=None, **_) -> Recording:
         if st.size:
             v = int(st[-1]["firmware_version"])
             meta["firmware_version"] = f"{v >> 24}.{(v >> 16) & 0xFF}.{(v >> 8) & 0xFF}"
+    reports = _unit_reports(ds, u["sysid"], arr[rows], None if host is None else df.start_monotonic_ns)
+    meta.update(reports)
+    flags_seen = reports["status_flags"].get("KF_UNIT_STATUS", {})
+    bad = [f"{bit} in {flags_seen[bit]} of {st.size}" for bit in PROBLEM_FLAGS if bit in flags_seen]
+    if bad:
+        warnings.append(f"{path}: {name}: its KF_UNIT_STATUS said {', '.join(bad)} status message(s)")
+    from kinefuse.host.link.stats import statustext_line, statustexts
+    warnings += [f"{path}: {statustext_line(e)}" for e in statustexts(ds, df.start_monotonic_ns)
+                 if e["sysid"] == u["sysid"] and e["severity"] <= 4]    # WARNING or worse
     return Recording(t=t, acc=acc, gyr=gyr, mag=mag, fs=fs, source=path, fmt=FORMAT, metadata=meta,
                      warnings=warnings, mag_t=mag_t, mag_native=mag_native,
                      channels={"device_time_s": dev[idx] / 1e6, "sample_counter": counter,

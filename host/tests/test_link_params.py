@@ -109,34 +109,25 @@ def test_default_param_table_is_consistent():
         assert decode_value(encode_value(default, ptype), ptype) == default
 
 
-def _granting(real, asked=400, granted=500):
-    """A FakeUnit._param_set whose sensor grants ``granted`` Hz when KF_RATE_HZ asks ``asked``
-    (the firmware then makes the granted rate KF_RATE_HZ and answers it)."""
-    def param_set(self, m, f):
-        out = real(self, m, f)
-        if m.param_id == "KF_RATE_HZ" and self.params["KF_RATE_HZ"] == asked:
-            self.params["KF_RATE_HZ"] = granted
-            out = [self._param_value(list(self.params).index("KF_RATE_HZ"))]
-        return out
-    return param_set
+def test_a_granted_sensor_rate_is_applied_not_rejected():
+    """It raised "KF_RATE_HZ = 400 rejected: the unit kept 500" though the unit runs at 500 Hz
+    (a fake unit whose sensor only does 500 Hz: the firmware makes the granted rate KF_RATE_HZ)."""
+    conn = FakeConnection("unit=4,rate=200,grant=500")
+    s = Session(conn)
+    try:
+        c = ParamClient(s, 4, timeout=0.2)
+        assert c.set("KF_RATE_HZ", 400) == 500 and conn.unit.params["KF_RATE_HZ"] == 500
+        assert c.granted == {"KF_RATE_HZ": (400, 500)}
+        assert c.set("KF_ACC_TAU_S", 2.5) == 2.5 and "KF_ACC_TAU_S" not in c.granted
+    finally:
+        s.close()
 
 
-def test_a_granted_sensor_rate_is_applied_not_rejected(unit_session, monkeypatch):
-    """It raised "KF_RATE_HZ = 400 rejected: the unit kept 500" though the unit runs at 500 Hz."""
-    s, unit = unit_session
-    monkeypatch.setattr(FakeUnit, "_param_set", _granting(FakeUnit._param_set))
-    c = ParamClient(s, 4, timeout=0.2)
-    assert c.set("KF_RATE_HZ", 400) == 500 and unit.params["KF_RATE_HZ"] == 500
-    assert c.granted == {"KF_RATE_HZ": (400, 500)}
-    assert c.set("KF_ACC_TAU_S", 2.5) == 2.5 and "KF_ACC_TAU_S" not in c.granted
-
-
-def test_params_cli_says_the_sensor_delivers_the_granted_rate(run, monkeypatch):
-    monkeypatch.setattr(FakeUnit, "_param_set", _granting(FakeUnit._param_set))
-    code, out, err = run("params", "--port", "fake:", "--set", "KF_RATE_HZ=400")
+def test_params_cli_says_the_sensor_delivers_the_granted_rate(run):
+    code, out, err = run("params", "--port", "fake:grant=500", "--set", "KF_RATE_HZ=400")
     assert code == 0, err
     assert "rejected" not in out + err
     assert "KF_RATE_HZ = 500" in out and "400 asked" in out and "sensor delivers 500 Hz" in out, out
-    code, out, err = run("params", "--port", "fake:", "--set", "KF_RATE_HZ=400", "--json")
+    code, out, err = run("params", "--port", "fake:grant=500", "--set", "KF_RATE_HZ=400", "--json")
     import json
     assert json.loads(out)["granted"] == {"KF_RATE_HZ": {"asked": 400, "applied": 500}}
