@@ -92,6 +92,7 @@ int kf_app_poll(kf_app *app)
     /* two-sensor mode: the two sensors' samples in pairs, sensor 1 first, so that a sensor-0
      * sample sees the sensor-1 sample of the same instant (joint angle, leg EKF) even when
      * several of each wait in the FIFOs */
+    int got0 = 0;
     for (int k = 0; k < KF_SENSOR_BATCH; k++) {
         int got = 0;
         if (app->two_sensors && kf_hal_sensor2_read(&raw)) {
@@ -102,6 +103,7 @@ int kf_app_poll(kf_app *app)
         }
         if (kf_hal_sensor_read(&raw)) {
             got = 1;
+            got0 = 1;
             if (!app->hil) {      /* in HIL mode the samples come from HIL_SENSOR only */
                 take_sensor_sample(app, &raw, 0);
             }
@@ -110,6 +112,18 @@ int kf_app_poll(kf_app *app)
             break;
         }
         work = 1;
+    }
+    /* SENSOR_FAULT: kf_hal_sensor_read has no error return, so the one failure the unit can
+     * see is a configured sensor that stops delivering (timeout: kf_config_apply_rates).  The
+     * FIFO is read just above, so a late turn of this loop is not taken for a silent sensor.
+     * Watched in HIL mode too: the sensor is still read there. */
+    if (got0) {
+        app->sensor_last_us = kf_app_time(app);
+        app->sensor_fault = 0u;
+    } else if (app->sensor_timeout_us != 0u
+               && kf_app_time(app) - app->sensor_last_us > app->sensor_timeout_us) {
+        app->sensor_fault = 1u;
+        app->sensor_fault_seen = 1u;
     }
     /* a parameter list goes out while the queue is at most half full: streams keep priority */
     while (app->list_next >= 0 && kf_tx_pending(&app->tx) < KF_TX_BUFFER_BYTES / 2u) {
@@ -133,6 +147,7 @@ int kf_app_poll(kf_app *app)
             (void)kf_tx_flush(&app->tx);
         }
         app->reboot = 0u;
+        kf_app_sign_shutdown(app);
         kf_hal_reboot();          /* returns only on the host build, whose main re-inits */
         return 1;
     }

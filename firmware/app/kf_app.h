@@ -73,7 +73,11 @@ typedef struct kf_app {
     kf_store store;
     uint8_t key[KF_STORE_KEY_LEN];
     uint8_t key_set;
+    uint8_t sign_saved;            /* a save moved sign_reserved ahead since reset */
     uint64_t sign_floor;           /* new signing streams must be newer than this */
+    uint64_t sign_reserved;        /* signing timestamp of the newest stored copy: no accepted
+                                    * signed frame is newer (kf_handle.c reserve_timestamp) */
+    uint64_t sign_saved_us;        /* device time of the last such save */
 
     /* link */
     kf_link rx;
@@ -144,6 +148,10 @@ typedef struct kf_app {
     uint16_t cnt_ori, cnt_hr, cnt_aq, cnt_eff;
 
     /* health */
+    uint64_t sensor_last_us;       /* device time of sensor 0's last sample (or of its rate setting) */
+    uint32_t sensor_timeout_us;    /* SENSOR_FAULT after this long without a sample (0: no sensor) */
+    uint8_t sensor_fault;          /* sensor 0 is silent now */
+    uint8_t sensor_fault_seen;     /* ... or was at some time since the previous 1 Hz status */
     kf_counters cnt;
     kf_rates rates;
     uint64_t next_status_us;

@@ -47,6 +47,8 @@ int kf_send_autopilot_version(kf_app *app);
 void kf_handle_frame(kf_app *app, const mavlink_message_t *msg);
 /* install a signing key (all zero: signing off); timestamp: lowest accepted from now on */
 void kf_app_set_key(kf_app *app, const uint8_t key[32], uint64_t timestamp);
+/* before a commanded reboot: store the newest accepted signing timestamp itself */
+void kf_app_sign_shutdown(kf_app *app);
 
 /* kf_status.c */
 void kf_status_tick(kf_app *app, uint64_t now);

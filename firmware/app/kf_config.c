@@ -7,6 +7,8 @@
 
 #include "kf_app_internal.h"
 
+#define KF_SENSOR_TIMEOUT_MIN_US 100000u
+
 static const kf_filter_ops *active_ops(const kf_app *app)
 {
     return app->filter >= 0 ? &kf_gen_filters[app->filter] : NULL;
@@ -174,14 +176,23 @@ int kf_config_apply_rates(kf_app *app)
 {
     int r = 0;
     int32_t granted = kf_hal_sensor_configure(app->values[KF_P_RATE_HZ].u);
+    /* SENSOR_FAULT watch (kf_app.c): a sensor that delivers `granted` Hz is silent when nothing
+     * came for 4 periods, and never before 100 ms (start-up, FIFO batches); a fault stays until
+     * the next sample.  The timeout counts from now: a new rate may take a moment to start. */
+    app->sensor_last_us = kf_app_time(app);
     if (granted > 0) {                 /* -1: no sensor (samples over the link): as asked */
         kf_pvalue g;
+        uint32_t four = 4000000u / (uint32_t)granted;
+        app->sensor_timeout_us = four > KF_SENSOR_TIMEOUT_MIN_US ? four : KF_SENSOR_TIMEOUT_MIN_US;
         g.u = (uint32_t)granted;
         if (kf_param_in_range(&kf_param_table[KF_P_RATE_HZ], g)) {
             app->values[KF_P_RATE_HZ] = g;
         } else {
             r = -1;
         }
+    } else {
+        app->sensor_timeout_us = 0u;   /* no sensor: nothing to watch */
+        app->sensor_fault = 0u;
     }
     uint32_t rate = app->values[KF_P_RATE_HZ].u;
     app->div_ori = divider(rate, app->values[KF_P_ORI_RATE_HZ].u);
@@ -248,7 +259,7 @@ int kf_config_save(kf_app *app)
     kf_store_header h;
     memset(&h, 0, sizeof h);
     memcpy(h.key, app->key, sizeof h.key);
-    h.sign_timestamp = app->signing.timestamp;
+    h.sign_timestamp = app->sign_reserved;   /* the reservation, not the newest timestamp itself */
     return kf_store_save(&app->store, &h, stored_count(), get_entry, app);
 }
 
@@ -308,12 +319,14 @@ void kf_config_load(kf_app *app)
     memset(app->key, 0, sizeof app->key);
     app->key_set = 0u;
     app->sign_floor = 0u;
+    app->sign_reserved = 0u;
     if (kf_store_load(&app->store, &h, put_entry, app) >= 0) {
         memcpy(app->key, h.key, sizeof app->key);
         for (uint32_t i = 0; i < KF_STORE_KEY_LEN; i++) {
             app->key_set |= (uint8_t)(app->key[i] != 0u);
         }
         app->sign_floor = h.sign_timestamp;
+        app->sign_reserved = h.sign_timestamp;   /* at or above every frame accepted before */
     }
     app->values[KF_P_SIGNING].u = app->key_set;
     if (!kf_param_in_range(&kf_param_table[KF_P_FILTER], app->values[KF_P_FILTER])) {

@@ -5,10 +5,10 @@
  * as an unknown message and otherwise ignored.
  *
  * Signing: with a key set (SETUP_SIGNING), a signed frame must verify (signature, and a
- * timestamp newer than the last one of its stream and than the newest one stored before the
- * last reset), else it is dropped and counted.  Unsigned frames are then accepted only for
- * reading: HEARTBEAT, TIMESYNC, PARAM_REQUEST_LIST/READ.  PARAM_SET is answered with
- * PARAM_ERROR (permission denied) and the unchanged value, COMMAND_LONG with
+ * timestamp newer than the last one of its stream and than the floor stored before the last
+ * reset, see reserve_timestamp), else it is dropped and counted.  Unsigned frames are then
+ * accepted only for reading: HEARTBEAT, TIMESYNC, PARAM_REQUEST_LIST/READ.  PARAM_SET is
+ * answered with PARAM_ERROR (permission denied) and the unchanged value, COMMAND_LONG with
  * MAV_RESULT_DENIED; HIL_SENSOR and SETUP_SIGNING are dropped; all are counted.
  */
 #include <math.h>
@@ -42,24 +42,61 @@ static int stream_known(const kf_app *app, const mavlink_message_t *msg)
     return 0;
 }
 
-static int signature_ok(kf_app *app, const mavlink_message_t *msg)
+static uint64_t signature_timestamp(const mavlink_message_t *msg)
 {
     uint64_t ts = 0u;
     for (int i = 5; i >= 0; i--) {
         ts = (ts << 8) | msg->signature[1 + i];
     }
-    if (!stream_known(app, msg) && ts <= app->sign_floor) {
+    return ts;
+}
+
+static int signature_ok(kf_app *app, const mavlink_message_t *msg)
+{
+    if (!stream_known(app, msg) && signature_timestamp(msg) <= app->sign_floor) {
         return 0;   /* older than what was accepted before the last reset: a replay */
     }
     return mavlink_signature_check(&app->signing, &app->sign_streams, msg) ? 1 : 0;
 }
 
-/* persist the newest accepted timestamp, so a frame recorded now cannot be replayed after a
- * reset (done for configuration and commands, not for every HIL sample) */
-static void remember_timestamp(kf_app *app, int is_signed)
+/* MAVLink signing: the newest accepted timestamp must survive a restart, and the unit has no
+ * clock of that epoch.  Storing every frame's would wear the flash at the sample rate, so the
+ * stored copy holds a reservation (sign_reserved, the boot floor) at or above every timestamp
+ * accepted: a verified frame beyond it first moves it KF_SIGN_RESERVE_TICKS ahead in storage,
+ * then is handled.  A power cut at any moment therefore leaves a floor that refuses every frame
+ * handled before it (a frame cut during its own save was not handled).  A host on the MAVLink
+ * clock (10 us ticks of real time) causes one such save per 60 s of signed traffic; one whose
+ * timestamps run faster is refused until KF_SIGN_SAVE_MIN_US has passed since the previous
+ * save (at most 6 saves a minute whatever the host sends).  1: handle it, 0: drop it. */
+#define KF_SIGN_RESERVE_TICKS 6000000u      /* 60 s of 10 us ticks */
+#define KF_SIGN_SAVE_MIN_US 10000000u       /* 10 s of device time */
+
+static int reserve_timestamp(kf_app *app, uint64_t ts)
 {
-    if (is_signed && app->key_set && app->signing.timestamp > app->sign_floor) {
-        app->sign_floor = app->signing.timestamp;
+    uint64_t now;
+    if (ts <= app->sign_reserved) {
+        return 1;
+    }
+    now = kf_app_time(app);
+    if (app->sign_saved && now - app->sign_saved_us < KF_SIGN_SAVE_MIN_US) {
+        return 0;
+    }
+    app->sign_saved = 1u;
+    app->sign_saved_us = now;
+    app->sign_reserved = app->signing.timestamp + KF_SIGN_RESERVE_TICKS;   /* >= ts */
+    /* a HAL failure is counted (STORAGE_ERROR); the frame is still handled, as a parameter
+     * write is when its save fails */
+    (void)kf_config_save(app);
+    return 1;
+}
+
+void kf_app_sign_shutdown(kf_app *app)
+{
+    /* a commanded restart: store the newest accepted timestamp itself rather than the
+     * reservation, so that the host's next frames (its clock has not passed the reservation
+     * yet) are not refused after the reboot; a power cut during it leaves the reservation */
+    if (app->key_set && app->sign_reserved > app->signing.timestamp) {
+        app->sign_reserved = app->signing.timestamp;
         (void)kf_config_save(app);
     }
 }
@@ -83,6 +120,9 @@ void kf_app_set_key(kf_app *app, const uint8_t key[32], uint64_t timestamp)
         app->sign_floor = timestamp;
     }
     app->signing.timestamp = app->sign_floor;
+    if (app->sign_reserved < app->sign_floor) {
+        app->sign_reserved = app->sign_floor;   /* stored with the key (the caller saves) */
+    }
     app->values[KF_P_SIGNING].u = app->key_set;
 }
 
@@ -98,6 +138,9 @@ static void handle_setup_signing(kf_app *app, const mavlink_message_t *msg, int 
         return;
     }
     kf_app_set_key(app, m.secret_key, m.initial_timestamp);
+    if (app->sign_reserved < app->sign_floor + KF_SIGN_RESERVE_TICKS) {
+        app->sign_reserved = app->sign_floor + KF_SIGN_RESERVE_TICKS;   /* this save reserves too */
+    }
     (void)kf_config_save(app);
 }
 
@@ -119,7 +162,7 @@ static void handle_param_read(kf_app *app, const mavlink_message_t *msg)
     }
 }
 
-static void handle_param_set(kf_app *app, const mavlink_message_t *msg, int trusted, int is_signed)
+static void handle_param_set(kf_app *app, const mavlink_message_t *msg, int trusted)
 {
     mavlink_param_set_t m;
     kf_pvalue v;
@@ -149,7 +192,6 @@ static void handle_param_set(kf_app *app, const mavlink_message_t *msg, int trus
         return;
     }
     (void)kf_send_param_value(app, idx);
-    remember_timestamp(app, is_signed);
 }
 
 /* --- commands --------------------------------------------------------------------------- */
@@ -224,7 +266,7 @@ static void send_requested(kf_app *app, float msgid_f)
     }
 }
 
-static void handle_command(kf_app *app, const mavlink_message_t *msg, int trusted, int is_signed)
+static void handle_command(kf_app *app, const mavlink_message_t *msg, int trusted)
 {
     mavlink_command_long_t c;
     uint8_t result = MAV_RESULT_UNSUPPORTED;
@@ -287,7 +329,6 @@ static void handle_command(kf_app *app, const mavlink_message_t *msg, int truste
     } else if (result == MAV_RESULT_ACCEPTED && c.command == MAV_CMD_REQUEST_AUTOPILOT_CAPABILITIES) {
         (void)kf_send_autopilot_version(app);
     }
-    remember_timestamp(app, is_signed);
 }
 
 /* --- HIL sensor input ------------------------------------------------------------------- */
@@ -398,7 +439,8 @@ static void handle_hil(kf_app *app, const mavlink_message_t *msg)
 void kf_handle_frame(kf_app *app, const mavlink_message_t *msg)
 {
     int is_signed = (msg->incompat_flags & MAVLINK_IFLAG_SIGNED) != 0u;
-    if (is_signed && app->key_set && !signature_ok(app, msg)) {
+    if (is_signed && app->key_set
+        && (!signature_ok(app, msg) || !reserve_timestamp(app, signature_timestamp(msg)))) {
         app->cnt.signature_failures++;
         return;
     }
@@ -429,10 +471,10 @@ void kf_handle_frame(kf_app *app, const mavlink_message_t *msg)
         handle_param_read(app, msg);
         return;
     case MAVLINK_MSG_ID_PARAM_SET:
-        handle_param_set(app, msg, trusted, is_signed);
+        handle_param_set(app, msg, trusted);
         return;
     case MAVLINK_MSG_ID_COMMAND_LONG:
-        handle_command(app, msg, trusted, is_signed);
+        handle_command(app, msg, trusted);
         return;
     case MAVLINK_MSG_ID_HIL_SENSOR:
         if (!trusted) {

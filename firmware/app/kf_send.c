@@ -91,6 +91,9 @@ static uint32_t status_flags(const kf_app *app)
     f |= app->tx.frames_dropped != app->rates.frames_dropped0 ? KF_UNIT_STATUS_FLAGS_TX_OVERFLOW : 0u;
     /* storage errors are not a sensor fault: their own flag (and a STATUSTEXT, kf_status.c) */
     f |= app->store.errors != app->rates.store_errors_st0 ? KF_UNIT_STATUS_FLAGS_STORAGE_ERROR : 0u;
+    /* sensor 0 silent at some time since the previous status (kf_app.c); clear once a whole
+     * interval had samples */
+    f |= app->sensor_fault_seen ? KF_UNIT_STATUS_FLAGS_SENSOR_FAULT : 0u;
     return f;
 }
 

@@ -1,7 +1,7 @@
 /*
  * kf_status.c - once per second: HEARTBEAT, KF_UNIT_STATUS and SYS_STATUS, with the rates
- * achieved and the processor load measured over the second that ended (flags TX_OVERFLOW and
- * STORAGE_ERROR: since the previous status); a STATUSTEXT when the
+ * achieved and the processor load measured over the second that ended (flags TX_OVERFLOW,
+ * STORAGE_ERROR and SENSOR_FAULT: since the previous status); a STATUSTEXT when the
  * parameter storage failed, or a stored value was refused at load, since the previous one.
  */
 #include <stdint.h>
@@ -31,6 +31,7 @@ void kf_status_tick(kf_app *app, uint64_t now)
     (void)kf_send_sys_status(app);
     r->frames_dropped0 = app->tx.frames_dropped;
     r->store_errors_st0 = app->store.errors;
+    app->sensor_fault_seen = app->sensor_fault;   /* SENSOR_FAULT: since this status */
     if (app->store.errors != r->store_errors0) {
         /* a failed load or save since the previous status (at boot: since reset): besides
          * KF_UNIT_STATUS_FLAGS_STORAGE_ERROR, in words (it is not a sensor fault) */

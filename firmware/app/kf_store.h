@@ -28,7 +28,8 @@ typedef struct {
     uint32_t seq;            /* save counter: the higher valid copy wins */
     uint32_t reserved;
     uint8_t key[KF_STORE_KEY_LEN];   /* MAVLink 2 signing key; all zero: signing off */
-    uint64_t sign_timestamp; /* newest signing timestamp accepted (10 us since 2015-01-01) */
+    uint64_t sign_timestamp; /* signing floor after a reset (10 us since 2015-01-01): at or
+                              * above every signed timestamp accepted (kf_handle.c) */
 } kf_store_header;
 
 typedef struct {

@@ -111,6 +111,11 @@ def test_replay_after_a_reboot_is_refused(signed_unit):
     assert u.param("KF_SIGNING") == 1 and u.param("KF_ORI_RATE_HZ") == 40
     u.feed(recorded)                                             # fresh stream table, stored floor
     assert u.param("KF_ORI_RATE_HZ") == 40
+    # a power cycle: the floor is the stored reservation (60 s of ticks past the key's
+    # timestamp), which a host on real time has passed by the time it talks again
+    u.feed(sign("PARAM_SET", **param_set("KF_ORI_RATE_HZ", 45, 3)))
+    assert u.param("KF_ORI_RATE_HZ") == 40
+    sign.ts += 6_000_000
     u.feed(sign("PARAM_SET", **param_set("KF_ORI_RATE_HZ", 50, 3)))
     assert u.param("KF_ORI_RATE_HZ") == 50
 

@@ -25,7 +25,7 @@
 #define KF_HOST_FIFO_SAMPLES 1024u
 #define KF_HOST_RAM_STORAGE 65536u
 
-kf_host_config kf_host = {0, 1, NULL, 4096u, -1, 1, 0u};
+kf_host_config kf_host = {0, 1, NULL, 4096u, -1, 1, 0u, 0u, 0u};
 
 static uint64_t g_t0_ns;                 /* monotonic time of the last reset */
 static int g_storage_fd = -1;
@@ -38,6 +38,8 @@ static uint64_t g_sensor_t0;             /* device time (us) when the rate was s
 static uint64_t g_k;                     /* next sample index since then */
 static uint64_t g_total;                 /* samples delivered since start */
 static uint32_t g_dropped;
+static uint64_t g_gap_end;               /* device time the --sensor-gap ends (0: not begun) */
+static int g_gap_done;
 
 static uint64_t mono_ns(void)
 {
@@ -130,6 +132,17 @@ int kf_hal_sensor_read(kf_raw_sample *out)
         return 0;
     }
     uint64_t now = now_us();
+    if (kf_host.gap_us != 0u && !g_gap_done && g_total >= kf_host.gap_after) {
+        /* a stalled sensor: nothing for gap_us, then the same samples go on from its end */
+        if (g_gap_end == 0u) {
+            g_gap_end = now + kf_host.gap_us;
+        }
+        if (now < g_gap_end) {
+            return 0;
+        }
+        g_sensor_t0 = g_gap_end - sample_time(g_k);
+        g_gap_done = 1;
+    }
     if (g_sensor_t0 + sample_time(g_k) > now) {
         return 0;
     }
@@ -162,6 +175,9 @@ uint32_t kf_host_sensor_wait_us(void)
     }
     uint64_t now = now_us();
     uint64_t t = g_sensor_t0 + sample_time(g_k);
+    if (g_gap_end != 0u && !g_gap_done) {
+        t = g_gap_end;                   /* no busy loop through a --sensor-gap */
+    }
     return t <= now ? 0u : (uint32_t)(t - now > 100000u ? 100000u : t - now);
 }
 

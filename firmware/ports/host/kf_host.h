@@ -15,6 +15,8 @@ typedef struct {
     int64_t storage_fail_after; /* >= 0: power cut (process exit 75) after this many bytes */
     int sensor;               /* 1: synthetic sensor (kf_host_sensor.c), 0: none */
     uint64_t max_samples;     /* synthetic sensor stops after this many samples (0: never) */
+    uint64_t gap_after;       /* after this many samples the sensor is silent for gap_us, */
+    uint32_t gap_us;          /* then resumes (once; 0: no gap) - a stalled sensor */
 } kf_host_config;
 
 extern kf_host_config kf_host;

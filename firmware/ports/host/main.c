@@ -3,11 +3,13 @@
  *
  *   kinefuse-unit [--uart pty|stdio|PATH] [--pty-link PATH] [--storage FILE]
  *                 [--storage-size BYTES] [--no-sensor] [--max-samples N] [--wait-connect]
- *                 [--exit-after SECONDS] [--storage-fail-after BYTES]
+ *                 [--exit-after SECONDS] [--storage-fail-after BYTES] [--sensor-gap N:MS]
  *
  * --uart pty (default) creates a pseudo-terminal and prints "uart <path>" on stderr: open that
  * path as the unit's serial port (kinefuse record --port pty:<path>).  --wait-connect starts
  * the unit only when the first byte arrives (so nothing is sent before a host listens).
+ * --sensor-gap N:MS: after N samples the synthetic sensor delivers nothing for MS ms, then goes
+ * on (a stalled sensor, once per process: KF_UNIT_STATUS SENSOR_FAULT).
  * Exit status: 0 (signal, --exit-after, end of stdin), 2 (bad arguments or pty failure), 75
  * (simulated power cut).
  */
@@ -121,6 +123,17 @@ int main(int argc, char **argv)
             i++;
         } else if (strcmp(a, "--max-samples") == 0 && v && parse_u64(v, &n) == 0) {
             kf_host.max_samples = n;
+            i++;
+        } else if (strcmp(a, "--sensor-gap") == 0 && v) {
+            char *end;
+            errno = 0;
+            unsigned long long after = strtoull(v, &end, 10);
+            unsigned long long ms = (*end == ':' && end[1] != '-') ? strtoull(end + 1, &end, 10) : 0u;
+            if (errno != 0 || v[0] == '-' || *end != '\0' || ms == 0u || ms > 3600000u) {
+                return usage("--sensor-gap needs N:MS (samples, then milliseconds 1..3600000)");
+            }
+            kf_host.gap_after = after;
+            kf_host.gap_us = (uint32_t)(ms * 1000u);
             i++;
         } else if (strcmp(a, "--exit-after") == 0 && v) {
             char *end;
