@@ -1,9 +1,12 @@
 """Sensor presets: noise levels measured in the seed documents, ranges from their data sheets.
 
 Noise values are per-axis standard deviations (x, y, z) of a static recording, at the rate the
-source recorded them (``noise_ref_rate_hz``); they scale as √(rate / ref) at other rates
-(see :mod:`.sensor`).  Biases, scale errors and misalignment are zero in every preset: a
-scenario adds the ones it wants.
+source recorded them (``noise_ref_rate_hz``).  Those recordings were of the sensors' quantised
+output, so the simulated quantised output has these std's: the white noise added before
+rounding is √(σ² − LSB²/12) (Xsens DOT gyro z: 0.0303 °/s, which with 1/16.4 °/s counts gives
+the table's 0.035 °/s; adding 0.035 °/s and then rounding gave 0.039 °/s).  The white part
+scales as √(rate / ref) at other rates (see :mod:`.sensor`).  Biases, scale errors and
+misalignment are zero in every preset: a scenario adds the ones it wants.
 
 =============  =========================  ==========================  =========================
 preset         accelerometer              gyroscope                   magnetometer

@@ -7,9 +7,18 @@ For true input x (sensor frame, SI: rad/s, m/s², µT) at sample instants t:
     y ← clip(y, −range, +range);   y ← lsb · round(y / lsb), counts kept inside ±range and
                                     inside the signed ``bits``-bit word (16: −32768…32767)
 
-* σ is the per-axis white-noise standard deviation measured at ``noise_ref_rate_hz``; at
-  another output rate f it becomes σ·√(f / f_ref) (constant noise density, i.e. the sensor's
-  bandwidth follows its output rate).  ``noise_ref_rate_hz = None`` keeps σ fixed.
+* ``noise_std`` σ_tot is the per-axis standard deviation of the output at rest as a static
+  capture measures it, i.e. of the *quantised* counts when ``lsb`` > 0 (the seed tables are
+  such measurements).  The white noise added before quantisation is therefore
+  σ = √(σ_tot² − lsb²/12) (uniform rounding error of variance lsb²/12 on top of it gives σ_tot
+  back); σ_tot = 0 means no white noise (quantisation only), and 0 < σ_tot < lsb/√12 (a total
+  below the rounding noise alone) is refused.  σ applies at ``noise_ref_rate_hz``; at another
+  output rate f the white part becomes σ·√(f / f_ref) (constant noise density, i.e. the
+  sensor's bandwidth follows its output rate; the rounding noise does not scale).
+  ``noise_ref_rate_hz = None`` keeps σ fixed.
+* With ``lsb`` > 0 the counts' full scale lsb·(2^(bits−1) − 1) must reach ``range`` (to within
+  0.5 %, the rounding of data-sheet sensitivities: 16.4 LSB/(°/s) reaches 1998 of ±2000 °/s);
+  a smaller LSB, which would clip the signal at a full scale below the range, is refused.
 * b_rw is a bias random walk with σ_rw (unit/√s): increments N(0, σ_rw²·Δt).
 * All randomness comes from the numpy Generator handed in: same seed, same arrays.
 
@@ -30,6 +39,10 @@ import numpy as np
 from .segments import SpecError, take
 
 G_N = 9.80665  # m/s² per g, the unit (independent of the simulated local gravity)
+# the counts' full scale may fall this much short of the range: data-sheet sensitivities are
+# rounded (±2000 °/s at 16.4 LSB/(°/s) reaches 1998 °/s; ±500 °/s at 65.6: 499.5 °/s)
+FULL_SCALE_TOLERANCE = 0.005
+_SHOWN = {"gyr": "°/s", "acc": "g", "mag": "µT"}   # the unit of range_dps, range_g, range_uT
 
 # key suffix → (internal field, factor from the dict unit to SI)
 _UNITS = {
@@ -63,11 +76,60 @@ class ChannelModel:
     soft_iron: np.ndarray = field(default_factory=lambda: np.eye(3))
     present: bool = True
 
+    def quantisation_std(self) -> float:
+        """Std of the rounding error (SI), lsb/√12; 0 without quantisation."""
+        return self.lsb / np.sqrt(12.0) if self.lsb > 0 else 0.0
+
+    def white_std(self) -> np.ndarray:
+        """Per-axis std (SI, at ``noise_ref_rate_hz``) of the white noise added before
+        quantisation: √(noise_std² − lsb²/12), so that the quantised total is ``noise_std``."""
+        q = self.quantisation_std()
+        below = (self.noise_std > 0) & (self.noise_std < q)
+        if self.present and np.any(below):
+            raise SpecError(self._noise_below_text(q))
+        return np.sqrt(np.maximum(self.noise_std ** 2 - q ** 2, 0.0))
+
     def noise_at(self, rate_hz: float) -> np.ndarray:
-        """Per-axis white-noise std (SI) at output rate ``rate_hz``."""
+        """Per-axis white-noise std (SI) at output rate ``rate_hz`` (before quantisation)."""
+        white = self.white_std()
         if self.noise_ref_rate_hz is None:
-            return self.noise_std.copy()
-        return self.noise_std * np.sqrt(rate_hz / self.noise_ref_rate_hz)
+            return white
+        return white * np.sqrt(rate_hz / self.noise_ref_rate_hz)
+
+    # ---- checks of a channel's settings (one-line SpecErrors naming the values) -------
+    def _names(self):
+        u = _UNITS[self.kind]
+        unit = next(k for k in u if k != "range")
+        rkey, rf = u["range"]
+        return unit, u[unit], rkey, rf, _SHOWN[self.kind]
+
+    def _noise_below_text(self, q: float, where: str = "") -> str:
+        unit, f, _, _, _ = self._names()
+        i = int(np.argmax((self.noise_std > 0) & (self.noise_std < q)))
+        return (f"{where + ': ' if where else ''}noise_{unit} {self.noise_std[i] / f:.4g} ({'xyz'[i]} axis) is "
+                f"below the quantisation noise of lsb_{unit} {self.lsb / f:.4g} (lsb/√12 = {q / f:.4g}): "
+                f"noise_{unit} is the total noise of the quantised output at rest, so it "
+                f"cannot be smaller; give 0 (quantisation only) or at least {q / f:.4g}")
+
+    def check(self, where: str) -> None:
+        """Refuse settings the model cannot honour: counts whose full scale falls short of the
+        range (a tiny LSB), a total noise below the LSB's rounding noise."""
+        if not self.present or not self.lsb > 0:
+            return
+        unit, f, rkey, rf, shown = self._names()
+        counts = 2 ** (self.bits - 1) - 1
+        top = self.lsb * counts
+        short = top < self.range * (1.0 - FULL_SCALE_TOLERANCE)
+        if np.any(short):
+            r = float(np.max(self.range))
+            raise SpecError(
+                f"{where}: lsb_{unit} {self.lsb / f:.4g} × {counts} counts ({self.bits}-bit words) is a "
+                f"full scale of ±{top / rf:.4g} {shown}, below {rkey} {r / rf:.4g} {shown}: the counts cannot "
+                f"reach the range (the output would clip at ±{top / rf:.4g}); give lsb_{unit} >= "
+                f"{r * (1.0 - FULL_SCALE_TOLERANCE) / counts / f:.4g}, {rkey} <= {top / rf:.4g} or more bits")
+        q = self.quantisation_std()
+        if np.any((self.noise_std > 0) & (self.noise_std < q)):
+            raise SpecError(self._noise_below_text(q, where))
 
     def apply(self, x: np.ndarray, t: np.ndarray, rate_hz: float, rng: np.random.Generator) -> np.ndarray:
         """Measured values for true input x (N,3) at instants t (N,), SI units."""
@@ -151,6 +213,7 @@ class ChannelModel:
                 if not isinstance(v, (bool, np.bool_)):    # (bool("no") is True)
                     raise SpecError(f"{w}: expected true or false")
                 c.present = bool(v)
+        c.check(where)
         return c
 
     def to_dict(self) -> dict:

@@ -371,3 +371,50 @@ def test_disturbances_must_be_a_list():
 def test_a_sensor_without_magnetometer_is_not_refused_for_its_nan_field():
     rec = sim.simulate({**_REST1, "sensor": {"preset": "matrix"}})
     assert not rec.mag_valid.any() and np.all(np.isfinite(rec.acc))
+
+
+# ---- counts that cannot hold the range (a tiny LSB) -------------------------------------------
+
+_TINY_LSB = ("sensor.gyr: lsb_dps 0.001 × 32767 counts (16-bit words) is a full scale of ±32.77 °/s, "
+             "below range_dps 2000 °/s")
+
+
+@pytest.mark.parametrize("spec, argv, text", [
+    # the scenario's own sensor: int16 counts of 0.001 °/s end at ±32.8 °/s, the range is ±2000
+    ({"sensor": {"preset": "xsens_dot", "gyr": {"lsb_dps": 0.001}}}, [], _TINY_LSB),
+    # a per-sensor LSB that holds the scenario's ±4 g (metamotionr) but not --preset matrix's ±16 g
+    ({"sensor_overrides": {"imu": {"acc": {"lsb_mg": 0.13}}}}, [], None),
+    ({"sensor_overrides": {"imu": {"acc": {"lsb_mg": 0.13}}}}, ["--preset", "matrix"],
+     "sensor_overrides.imu.acc: lsb_mg 0.13 × 32767 counts (16-bit words) is a full scale of ±4.26 g, "
+     "below range_g 16 g"),
+    # fewer bits at the preset's LSB
+    ({"sensor": {"preset": "metamotionr", "gyr": {"bits": 12}}}, [],
+     "sensor.gyr: lsb_dps 0.01524 × 2047 counts (12-bit words) is a full scale of ±31.2 °/s, "
+     "below range_dps 500 °/s"),
+])
+def test_counts_that_cannot_reach_the_range_are_refused(tmp_path, capsys, spec, argv, text):
+    """A tiny LSB silently made the full scale LSB × 32767 (the int16 counts) instead of the range:
+    the output clipped at ±32.8 °/s while the sensor claimed ±2000 °/s."""
+    from kinefuse.host.cli import main
+    f = tmp_path / "s.json"
+    f.write_text(json.dumps({**_REST1, **spec}))
+    out = tmp_path / "s.npz"
+    code = main(["sim", "run", str(f), *argv, "--out", str(out)])
+    err = capsys.readouterr().err
+    if text is None:
+        assert code == 0, err
+        return
+    assert code == 2 and "Traceback" not in err and len(err.strip().splitlines()) == 1, err
+    assert text in err and "give lsb_" in err, err
+    assert not out.exists()
+
+
+def test_every_preset_reaches_its_range():
+    """Data-sheet sensitivities are rounded (±2000 °/s at 16.4 LSB/(°/s) ends at 1998 °/s): the
+    presets' own counts are accepted, and a range a whole count beyond them is not."""
+    from kinefuse.hil_tests.sim.presets import PRESET_NAMES, preset
+    for name in PRESET_NAMES:
+        for ch in ("gyr", "acc", "mag"):
+            getattr(preset(name), ch).check(f"{name}.{ch}")
+    with pytest.raises(KinefuseError, match="range_dps 2020 °/s"):
+        sim.simulate(_REST1, sensor={"preset": "xsens_dot", "gyr": {"range_dps": 2020}})

@@ -24,8 +24,9 @@ def register(sub) -> None:
                     "installed, VQF and x-io Fusion on the BROAD excerpt bundled with kinefuse; "
                     "print their accuracy against the optical reference and write a plot.")
     p.add_argument("--out", default="kinefuse-demo", metavar="DIR",
-                   help="folder for the plot and the JSON results, rewritten on every run "
-                        "(default: ./kinefuse-demo)")
+                   help="folder for the plot and the JSON results, rewritten on every run; "
+                        "the plot an earlier run wrote of another estimator is removed, no "
+                        "other file is touched (default: ./kinefuse-demo)")
     p.add_argument("--budget", type=float, default=40.0, metavar="S",
                    help="start no new estimator after this many seconds; started ones finish "
                         "(default: 40; inf: no budget)")
@@ -134,31 +135,59 @@ def run(args) -> int:
                         "trial's movement phases; mean = over trials"}
     json_path = out_dir / "accuracy.json"
     plot_spec = next((s for s in res.specs if s.kind == "kinefuse"), res.specs[0])
+    earlier = _earlier_plot(json_path)     # read before the JSON that names it is rewritten
+    plot_trial, plot_path = _plot_target(plot_spec, out_dir)
+    payload["plot"] = plot_path.name        # what the next run may remove
     try:
         json_path.write_text(json.dumps(payload, indent=2, allow_nan=False) + "\n")
-        plot_path, plot_trial = _plot(plot_spec, out_dir, err)
+        if earlier is not None and earlier != plot_path.name:
+            # an earlier run plotted another estimator (one failed or was not installed then):
+            # its PNG would pass for this run's plot.  Only the file its JSON names is removed.
+            stale = out_dir / earlier
+            if stale.is_symlink() or stale.is_file():
+                stale.unlink()
+        _plot(plot_spec, plot_trial, plot_path, err)
     except OSError as exc:
         raise KinefuseError(f"{out_dir}: cannot write results ({exc.strerror or exc})") from None
 
-    console.print(f"\nwrote [bold]{plot_path}[/bold]  ({plot_spec.label} on {plot_trial})")
+    console.print(f"\nwrote [bold]{plot_path}[/bold]  ({plot_spec.label} on {plot_trial.name})")
     console.print(f"wrote [bold]{json_path}[/bold]")
     console.print("next: [bold]kinefuse bench accuracy --data DIR --compare vqf,imufusion[/bold] "
                   "on the full BROAD trials; [bold]kinefuse plot --input TRIAL --filter NAME[/bold]")
     return 0
 
 
-def _plot(spec: accuracy.Spec, out_dir: Path, err) -> tuple[Path, str]:
-    from kinefuse.host.plots import plot_estimate
+def _earlier_plot(json_path: Path) -> str | None:
+    """The PNG an earlier demo wrote into this folder: the plain ``*.png`` name its
+    ``accuracy.json`` records under ``"plot"`` (None when there is no such JSON, it is not a
+    demo's, or it predates the record).  Nothing else in the folder is the demo's to remove."""
+    try:
+        earlier = json.loads(json_path.read_text())
+    except (OSError, ValueError):
+        return None
+    if not isinstance(earlier, dict) or earlier.get("data") != "bundled BROAD excerpt":
+        return None
+    name = earlier.get("plot")
+    if not isinstance(name, str) or Path(name).name != name or not name.lower().endswith(".png"):
+        return None
+    return name
 
+
+def _plot_target(spec: accuracy.Spec, out_dir: Path):
+    """(the trial the demo plots, the PNG it writes for ``spec``)."""
     trial_file = next((f for f in broad.bundled_trials() if f.stem == PLOT_TRIAL),
                       broad.bundled_trials()[0])
     trial = broad.load_trial(trial_file)
     safe = spec.label.replace(" (", "_").replace(")", "").replace(" ", "_")
-    path = out_dir / f"{trial.name}_{safe}.png"
+    return trial, out_dir / f"{trial.name}_{safe}.png"
+
+
+def _plot(spec: accuracy.Spec, trial, path: Path, err) -> None:
+    from kinefuse.host.plots import plot_estimate
+
     with err.status(f"plotting {spec.label} on {trial.name}"):
         res = accuracy.estimate(spec, trial)
         plot_estimate(trial, res.q, spec.label, path, status=getattr(res, "status", None))
-    return path, trial.name
 
 
 def _fmt(x: float) -> str:

@@ -113,6 +113,7 @@ def _plot_recording(args, spec, path: Path) -> int:
     from kinefuse.host.commands.replay_cmd import read_imu_recording, time_base_text, unit_orientation
     from kinefuse.host.link.cli_util import progress
     from kinefuse.host.plots import plot_recording
+    from kinefuse.host.readers.kfr import decode_once
 
     if spec.kind == "competitor":
         raise KinefuseError(f"{spec.name}: competitors are run on BROAD trials (constant rate, a "
@@ -121,8 +122,16 @@ def _plot_recording(args, spec, path: Path) -> int:
     check_unit_option(args.unit)
     out = _out_path(args, path.stem, spec, path) if args.out else None   # before any work
     err = Console(stderr=True)
-    with progress(err, f"reading {path}"):
-        rec = read_imu_recording(str(path), args.unit)
+    unit_q = no_unit_q = None
+    with decode_once():     # a .kfr is decoded once: its samples and the unit's KF_ORIENTATION
+        with progress(err, f"reading {path}"):
+            rec = read_imu_recording(str(path), args.unit)
+        if rec.fmt == "kfr":
+            try:
+                idx, q_u, _note, _total = unit_orientation(str(path), rec)
+                unit_q = (idx, q_u)
+            except KinefuseError as exc:
+                no_unit_q = exc
     inputs = runner.recording_inputs(rec)
     t = np.asarray(inputs.t, dtype=np.float64)
     if len(t) < 2:
@@ -138,13 +147,8 @@ def _plot_recording(args, spec, path: Path) -> int:
         out = _out_path(args, path.stem + tag, spec, path)
     for w in rec.warnings:
         print(f"kinefuse: warning: {w}", file=sys.stderr)
-    unit_q = None
-    if rec.fmt == "kfr":
-        try:
-            idx, q_u, _note, _total = unit_orientation(str(path), rec)
-            unit_q = (idx, q_u)
-        except KinefuseError as exc:
-            print(f"kinefuse: note: no on-board orientation plotted ({exc})", file=sys.stderr)
+    if no_unit_q is not None:
+        print(f"kinefuse: note: no on-board orientation plotted ({no_unit_q})", file=sys.stderr)
     with err.status(f"running {spec.label} on {path.name}{who} ({len(t):,} samples)"):
         res = runner.run_filter(spec.name, spec.impl, inputs, spec.params_dict())
     try:

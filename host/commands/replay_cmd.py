@@ -66,36 +66,38 @@ def run(args) -> int:
     path = str(args.rec)
     check_new_file(args.out, args.force, inputs=[path])
     broad = Path(path).suffix.lower() in BROAD_SUFFIXES
-    rec = None
-    if broad:
-        if args.unit is not None:
-            raise KinefuseError("--unit applies to .kfr unit recordings, not to BROAD trials")
-        if args.compare_unit:
-            raise KinefuseError("--compare-unit needs a .kfr unit recording with KF_ORIENTATION messages")
-        from kinefuse.host.broad import load_trial
-        trial = load_trial(path)
-        inputs = trial                      # the same input as `kinefuse run`
-        t = runner.output_times(trial)
-        time_base = ("s from the first sample (constant rate)" if trial.steps is None
-                     else "s, the file's sample times")
-    else:
-        from kinefuse.host import angle_series
-        if angle_series.sniff(path) == "angle-csv":
-            # was "unknown recording format": the smoothers read it, through `run`
-            smoothers = angle_series.angle_filter_names()
-            raise KinefuseError(f"{path} is a joint-angle series (t, angle_deg), not IMU samples: "
-                                f"smooth it with a joint-angle smoother ({', '.join(smoothers)}), "
-                                f"e.g. {_run_command(args, path, smoothers[0])}")
-        from rich.console import Console
-        from kinefuse.host.link.cli_util import progress
-        with progress(Console(stderr=True), f"reading {path}"):    # moves with a .kfr's decoding
-            rec = read_imu_recording(path, args.unit)
-        for w in rec.warnings:
-            print(f"kinefuse: warning: {w}", file=sys.stderr)
-        inputs = runner.recording_inputs(rec)
-        t = inputs.t
-        time_base = time_base_text(rec)
-    unit_q = unit_orientation(path, rec) if args.compare_unit else None
+    from kinefuse.host.readers.kfr import decode_once
+    with decode_once():     # a .kfr decoded once: its samples and --compare-unit's KF_ORIENTATION
+        rec = None
+        if broad:
+            if args.unit is not None:
+                raise KinefuseError("--unit applies to .kfr unit recordings, not to BROAD trials")
+            if args.compare_unit:
+                raise KinefuseError("--compare-unit needs a .kfr unit recording with KF_ORIENTATION messages")
+            from kinefuse.host.broad import load_trial
+            trial = load_trial(path)
+            inputs = trial                      # the same input as `kinefuse run`
+            t = runner.output_times(trial)
+            time_base = ("s from the first sample (constant rate)" if trial.steps is None
+                         else "s, the file's sample times")
+        else:
+            from kinefuse.host import angle_series
+            if angle_series.sniff(path) == "angle-csv":
+                # was "unknown recording format": the smoothers read it, through `run`
+                smoothers = angle_series.angle_filter_names()
+                raise KinefuseError(f"{path} is a joint-angle series (t, angle_deg), not IMU samples: "
+                                    f"smooth it with a joint-angle smoother ({', '.join(smoothers)}), "
+                                    f"e.g. {_run_command(args, path, smoothers[0])}")
+            from rich.console import Console
+            from kinefuse.host.link.cli_util import progress
+            with progress(Console(stderr=True), f"reading {path}"):    # moves with a .kfr's decoding
+                rec = read_imu_recording(path, args.unit)
+            for w in rec.warnings:
+                print(f"kinefuse: warning: {w}", file=sys.stderr)
+            inputs = runner.recording_inputs(rec)
+            t = inputs.t
+            time_base = time_base_text(rec)
+        unit_q = unit_orientation(path, rec) if args.compare_unit else None
 
     res = _run_filter(name, args.impl, inputs, prm, args.preset)
     dt = np.atleast_1d(getattr(inputs, "dt", None))
@@ -189,8 +191,8 @@ def unit_orientation(path: str, rec):
     (sample indices, quaternions, note)."""
     if rec is None or rec.fmt != "kfr":
         raise KinefuseError("--compare-unit needs a .kfr unit recording with KF_ORIENTATION messages")
-    from kinefuse.host.link.frames import decode_file
-    df = decode_file(path, raw=True, msgids=(MSG_ORI,))
+    from kinefuse.host.readers import kfr
+    df = kfr.decoded(path)      # the reader's decode: once for samples and orientation in kfr.decode_once()
     ds = df.streams.get(rec.metadata["stream"])
     arr = None if ds is None else ds.arrays.get(MSG_ORI)
     if arr is not None:

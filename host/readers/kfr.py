@@ -112,7 +112,9 @@ def decode_once():
         _decoded = outer
 
 
-def _decode(path: str):
+def decoded(path: str):
+    """The decoded file (KF_RAW_SAMPLE, KF_ORIENTATION, KF_UNIT_STATUS, STATUSTEXT): decoded
+    again on each call, once per file inside :func:`decode_once`."""
     if _decoded is None:
         return _decode_file(path)
     key = str(Path(path).resolve())
@@ -151,7 +153,7 @@ def _units(df) -> list[dict]:
 
 def list_units(path: str) -> list[dict]:
     """Units of a recording: [{label, stream, sysid, samples, connection}]."""
-    return _units(_decode(path))
+    return _units(decoded(path))
 
 
 def _parse_unit(path: str, unit) -> tuple[int | None, int | None]:
@@ -255,7 +257,7 @@ def read(path: str, *, unit=None, **_) -> Recording:
     from kinefuse.host.link.hil import gyro_radps
     from kinefuse.host.link.stats import clock_jumps, counter_analysis, fit_clock, in_device_order, leading_stale
     path = str(path)
-    df = _decode(path)
+    df = decoded(path)
     found = _units(df)
     u = _select(path, found, unit)
     ds = df.streams[u["stream"]]

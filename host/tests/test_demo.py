@@ -148,3 +148,46 @@ def test_plot_states_the_pitch_and_roll_signs(tmp_path, monkeypatch):
     plots.plot_estimate(trial, trial.quat_ref, "reference", tmp_path / "p.png")
     assert "pitch > 0: sensor x below the horizontal" in titles[0], titles
     assert "roll > 0: sensor y above it" in titles[0], titles
+
+
+def test_demo_removes_its_own_earlier_plot_only(kf, two_filters, tmp_path, monkeypatch):
+    """An earlier run plotted 'perfect (f32)'; when this run plots another estimator (the first
+    one failed), that PNG stayed beside the new one and passed for this run's plot.  The user's
+    own files -- a `kinefuse plot` PNG of the same default name pattern among them -- stay."""
+    d = tmp_path / "d"
+    assert kf("demo", "--out", str(d), "--jobs", "1", "--budget", "0.001")[0] == 0
+    first = d / "32_disturbed_attached_magnet_1cm_perfect_f32.png"
+    assert first.exists()
+    mine = {d / "32_disturbed_attached_magnet_1cm_tilted_ref.png": b"user's kinefuse plot",
+            d / "notes.png": b"user's picture", d / "notes.txt": b"user's notes"}
+    for path, data in mine.items():
+        path.write_bytes(data)
+    # the default filter now is 'tilted' (e.g. 'perfect' no longer built)
+    monkeypatch.setattr(FAKE, "default_filter", lambda: "tilted")
+    code, out, err = kf("demo", "--out", str(d), "--jobs", "1", "--budget", "0.001")
+    assert code == 0, err
+    second = d / "32_disturbed_attached_magnet_1cm_tilted_f32.png"
+    assert second.read_bytes()[:8] == PNG_MAGIC
+    assert not first.exists(), "the earlier run's plot of another filter was left behind"
+    assert json.loads((d / "accuracy.json").read_text())["plot"] == second.name
+    assert all(path.read_bytes() == data for path, data in mine.items())
+    assert sorted(p.name for p in d.glob("*.png")) == sorted(
+        [second.name, "32_disturbed_attached_magnet_1cm_tilted_ref.png", "notes.png"])
+
+
+@pytest.mark.parametrize("recorded", [
+    {"data": "bundled BROAD excerpt", "plot": "../outside.png"},     # not a name in the folder
+    {"data": "bundled BROAD excerpt", "plot": "notes.txt"},          # not a PNG
+    {"data": "something else", "plot": "notes.png"},                 # not a demo's JSON
+    {"data": "bundled BROAD excerpt", "plot": "sub.png"},            # a folder, not a file
+])
+def test_demo_removes_nothing_a_json_does_not_name_as_its_plot(kf, two_filters, tmp_path, recorded):
+    d = tmp_path / "d"
+    d.mkdir()
+    (d / "accuracy.json").write_text(json.dumps(recorded))
+    keep = [tmp_path / "outside.png", d / "notes.txt", d / "notes.png"]
+    for path in keep:
+        path.write_bytes(b"user data")
+    (d / "sub.png").mkdir()
+    assert kf("demo", "--out", str(d), "--jobs", "1", "--budget", "0.001")[0] == 0
+    assert all(path.read_bytes() == b"user data" for path in keep) and (d / "sub.png").is_dir()

@@ -151,3 +151,27 @@ def test_default_names_of_two_units_with_one_id(run, tmp_path, monkeypatch):
         assert code == 0, err
         made.append(stdout.strip())
     assert made == ["same_s0_u1_flagship_f32.png", "same_s1_u1_flagship_f32.png"]
+
+
+def test_a_kfr_is_decoded_once(run, kfr_files, tmp_path, monkeypatch):
+    """The reader decoded the file for the samples, then ``unit_orientation`` decoded it again
+    for the unit's KF_ORIENTATION (the costly part of a long recording, done twice)."""
+    from kinefuse.host import plots
+    from kinefuse.host.link import frames
+    one, _ = kfr_files
+    calls, drawn = [], {}
+    decode, draw = frames.decode_file, plots.plot_recording
+
+    def counting(*a, **k):
+        calls.append(str(a[0]))
+        return decode(*a, **k)
+
+    def drawing(*a, **k):
+        drawn.update(k)
+        return draw(*a, **k)
+    monkeypatch.setattr(frames, "decode_file", counting)
+    monkeypatch.setattr(plots, "plot_recording", drawing)
+    code, _, err = run("plot", "--input", one, "--out", tmp_path / "once.png")
+    assert code == 0, err
+    assert drawn["unit_q"] is not None and len(drawn["unit_q"][0]) > 50     # still drawn
+    assert calls == [str(one)], calls

@@ -74,6 +74,19 @@ def test_kfr_one_row_per_received_sample_and_unit_comparison(run, kfr_files, tmp
     assert rms < 10.0
 
 
+def test_compare_unit_decodes_the_recording_once(run, kfr_files, tmp_path, monkeypatch):
+    """The reader decoded the file for the samples, then --compare-unit decoded it again for the
+    unit's KF_ORIENTATION (the costly part of a long recording, done twice)."""
+    from kinefuse.host.link import frames
+    one, _ = kfr_files
+    calls, decode = [], frames.decode_file
+    monkeypatch.setattr(frames, "decode_file", lambda *a, **k: calls.append(a[0]) or decode(*a, **k))
+    code, stdout, err = run("replay", one, "--out", tmp_path / "est.csv", "--compare-unit")
+    assert code == 0, err
+    assert "on-board orientation vs replay" in stdout
+    assert len(calls) == 1, calls
+
+
 def test_kfr_unit_choice(run, kfr_files, tmp_path):
     _, two = kfr_files
     _one_line_error(*run("replay", two, "--out", tmp_path / "x.csv"), "choose one with --unit")
