@@ -2,7 +2,9 @@
 
 Rate achieved vs requested, samples lost (32-bit sample counter, wrap-safe), CRC errors,
 device-to-host clock offset and drift (robust fit on the minimum-delay envelope, ppm), delay
-above the minimum, latency from TIMESYNC round trips.
+above the minimum, latency from TIMESYNC round trips.  The requested rate is the last nonzero one
+the unit's KF_UNIT_STATUS gave (0 is the stream off, e.g. the stop at the end of ``record
+--start``); after a change of it or a stop and start, the rate is that of the last run at it.
 
     kinefuse stats walk.kfr
     kinefuse stats walk.kfr --json
@@ -65,9 +67,9 @@ def run(args) -> int:
                           str(m.get("resets", "-")), str(m.get("reordered", "-")), style=style)
             print_table(t, con)
             for name, m in u["messages"].items():
-                if m.get("requested_changes"):
-                    con.print(f"  {name}: the requested rate changed {m['requested_changes']} time(s); "
-                              f"its rate is that from unit time {m['rate_from_device_s']:.1f} s on")
+                note = rate_note(m)
+                if note:
+                    con.print(f"  {name}: {note}", soft_wrap=True)
             c = u.get("clock")
             if c:
                 dm = c["delay_above_min_ms"]
@@ -97,3 +99,26 @@ def run(args) -> int:
     for w in result["warnings"]:
         con.print(f"[yellow]warning:[/] {w}")
     return 0
+
+
+def rate_note(m: dict) -> str:
+    """What a message's rate is measured over when the unit's statuses show its requested rate
+    changing or its stream turned off (requested 0) and on again; whether it was off at the end.
+    "" when the rate is that of the whole recording."""
+    parts = []
+    if m.get("requested_changes"):
+        parts.append(f"the requested rate changed {m['requested_changes']} time(s)")
+    if m.get("restarts"):
+        parts.append(f"streaming turned off and on again {m['restarts']} time(s)")
+    until = m.get("rate_until_device_s")
+    stopped = bool(m.get("stopped_at_end"))
+    # on again after the unit's last status (which said off): those samples' rate no status told
+    later = "" if stopped else " (on again after the unit's last status: those samples not counted)"
+    if parts:
+        return (", ".join(parts) + f"; its rate is that from unit time {m['rate_from_device_s']:.1f} s on"
+                + ("" if until is None else f", until it stopped before {until:.1f} s" + later))
+    if until is not None:
+        if stopped:
+            return f"streaming off at the end (stopped before unit time {until:.1f} s)"
+        return f"its rate is that until it stopped before unit time {until:.1f} s" + later
+    return "streaming off at the end" if stopped else ""

@@ -1,9 +1,11 @@
 """Link statistics of a recording: per stream and unit, rates, loss, errors, clock fit, latency.
 
 - rate achieved: frames received per second of the unit's clock, vs the rate requested (from
-  KF_UNIT_STATUS, else the recording header); where the unit's status shows the requested rate
-  changing during the recording, the achieved rate is taken from its last change on (it was the
-  average of the old and the new rate) and the number of changes is reported;
+  KF_UNIT_STATUS, else the recording header); a requested rate of 0 in the status is the stream
+  turned off (``record --start`` stops it at the end), not a rate: the requested rate is the
+  last nonzero one and the achieved rate is measured over the stretch in which the stream ran
+  at it (from its last change or restart on, up to the stop); changes between nonzero rates
+  and restarts (off, then on again) are counted, a stream off at the end is said so;
 - samples lost: from the 32-bit ``sample_counter`` (wrap-safe; the usual step between frames
   is taken as the stride, so a decimated stream is not counted as loss); resets (reboots),
   duplicates and frames reordered on the way (up to REORDER_US of device time late: put back
@@ -452,22 +454,57 @@ def _last_segment(t_us: np.ndarray, counter=None) -> tuple[slice, np.ndarray]:
     return seg, keep[seg]
 
 
-def _rate_change(status_rows, field: str) -> tuple[int | None, int]:
-    """(device time in µs from which the last requested rate holds, number of changes) from a
-    unit's KF_UNIT_STATUS rows; statuses before the unit's last reboot (its clock went back) are
-    not compared with those after."""
+def _requested_run(status_rows, field: str) -> dict:
+    """The stretch of unit time in which a stream ran at its last requested rate, from a unit's
+    KF_UNIT_STATUS rows (``field``: raw_rate_requested, orientation_rate_requested; 0 is the
+    stream off, not a rate): {"requested": the last nonzero requested rate (None: no status
+    said the stream was on), "from_us": its samples are those after this device time (None:
+    from the start), "from_inclusive": at it too, "until_us": ... and before this one (None: to
+    the end), "changes": changes between nonzero rates, "restarts": times the stream was on,
+    off and on again, "off_at_us": the time of the last status when it says off (else None)}.
+    Statuses before the unit's last reboot (its clock went back) are not compared with those
+    after.
+
+    The last status of a ``record --start`` often comes after the stop and says 0: that was
+    counted as a change of the requested rate, the rate measured from it on (no samples: none)
+    and the 0 taken for a missing value (the header's --rate shown as requested)."""
     t = status_rows["time_boot_us"].astype(np.int64)
     # the last device-clock segment without repeats: a status delivered again after the rate
     # change was taken for a reboot, so the change was dated at the next status after it
     last, fresh = _last_segment(t)
     rows = status_rows[last][fresh]
+    rows = rows[np.argsort(rows["time_boot_us"].astype(np.int64), kind="stable")]
     r = rows[field].astype(np.float64)
-    changed = np.flatnonzero(r[1:] != r[:-1]) + 1
-    if not changed.size:
-        return None, 0
-    # the change happened between the two statuses: from the first one with the new value, the
-    # stream surely runs at it
-    return int(rows["time_boot_us"][changed[-1]]), int(changed.size)
+    times = rows["time_boot_us"].astype(np.int64)
+    out = {"requested": None, "from_us": None, "from_inclusive": True, "until_us": None, "changes": 0,
+           "restarts": 0, "off_at_us": None}
+    if not r.size:
+        return out
+    if r[-1] == 0:
+        out["off_at_us"] = int(times[-1])
+    starts = np.flatnonzero(np.r_[True, r[1:] != r[:-1]])       # runs of statuses with one value
+    vals = r[starts]
+    on = np.flatnonzero(vals != 0)
+    if not on.size:
+        return out
+    rates = vals[on]
+    out["changes"] = int(np.count_nonzero(rates[1:] != rates[:-1]))
+    # an off run with on runs before and after it (neighbouring runs differ, so are nonzero)
+    out["restarts"] = int(np.count_nonzero(vals[1:-1] == 0))
+    k = int(on[-1])
+    out["requested"] = float(vals[k])
+    a = int(starts[k])
+    if k > 0:
+        if vals[k - 1] == 0:
+            # off at the status before: every sample after it is at the new rate
+            out["from_us"], out["from_inclusive"] = int(times[a - 1]), False
+        else:
+            # the change happened between the two statuses: from the first one with the new
+            # value, the stream surely runs at it
+            out["from_us"] = int(times[a])
+    if k + 1 < starts.size:         # the run after it says off: the stream stopped before it
+        out["until_us"] = int(times[starts[k + 1]])
+    return out
 
 
 def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dict) -> dict:
@@ -506,16 +543,31 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
         a = arr[rows]
         spec = d.get(mid)
         m: dict = {"count": int(a.size)}
+        run = None
+        if statuses is not None and mid in REQUESTED_FIELD:
+            run = _requested_run(statuses, REQUESTED_FIELD[mid])
         if "time_boot_us" in a.dtype.names and a.size >= 2:
             counter = a["sample_counter"] if "sample_counter" in a.dtype.names else None
             last, fresh = _last_segment(a["time_boot_us"], counter)
             seg = a[last][fresh]        # repeats are not samples of the rate
-            if statuses is not None and mid in REQUESTED_FIELD:
-                since_us, changes = _rate_change(statuses, REQUESTED_FIELD[mid])
-                if changes:
-                    m["requested_changes"] = changes
-                    m["rate_from_device_s"] = since_us / 1e6
-                    seg = seg[seg["time_boot_us"].astype(np.int64) >= since_us]
+            if run is not None:
+                ts = seg["time_boot_us"].astype(np.int64)
+                # off at the end: the last status says so and no sample (since the unit's last
+                # reboot) came after it
+                if run["off_at_us"] is not None and not np.any(ts >= run["off_at_us"]):
+                    m["stopped_at_end"] = True
+                if run["changes"]:
+                    m["requested_changes"] = run["changes"]
+                if run["restarts"]:
+                    m["restarts"] = run["restarts"]
+                if run["from_us"] is not None:
+                    if run["changes"] or run["restarts"]:
+                        m["rate_from_device_s"] = run["from_us"] / 1e6
+                    seg = seg[ts >= run["from_us"] if run["from_inclusive"] else ts > run["from_us"]]
+                    ts = seg["time_boot_us"].astype(np.int64)
+                if run["until_us"] is not None:
+                    m["rate_until_device_s"] = run["until_us"] / 1e6
+                    seg = seg[ts < run["until_us"]]
             t = seg["time_boot_us"].astype(np.int64)
             span = (t.max() - t.min()) / 1e6 if t.size >= 2 else 0.0   # a swapped frame may be first or last
             if span > 0:
@@ -529,9 +581,9 @@ def _unit_stats(ds: DecodedStream, sysid: int, start_ns: int, header_stream: dic
                 if not any("same system id" in w for w in out.get("warnings", [])):   # once per unit
                     out.setdefault("warnings", []).append(
                         interleaved_text(sysid, spec.name if spec else str(mid), mixed))
-        req = None
-        if status is not None and mid in REQUESTED_FIELD:
-            req = float(status[REQUESTED_FIELD[mid]]) or None
+        # the last nonzero rate the unit's statuses asked for (0 is the stream off: was taken
+        # for a missing value, so the header's --rate showed instead of the rate the unit granted)
+        req = None if run is None else run["requested"]
         if req is None and spec is not None:
             req = requested_header.get(spec.name)
         if req:
