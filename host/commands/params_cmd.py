@@ -145,7 +145,8 @@ def run(args) -> int:
                 except ParamError as exc:
                     # no answer to a signed read: the unit drops frames signed with another key
                     hint = ("; a unit drops frames signed with a key other than its own: is it "
-                            "the right key?" if exc.code is None and key is not None else "")
+                            "the right key?" if exc.code is None and key is not None
+                            and exc.refused is None else "")
                     raise ParamError(f"unit {sysid}: {exc} (nothing written{hint})", exc.code) from None
             result["set"] = {}
             for name, value in sets:
@@ -159,10 +160,10 @@ def run(args) -> int:
                         hint = ("the key given is not the unit's" if key is not None
                                 else "the unit requires signed writes: give its key with --key/--key-file")
                         raise ParamError(f"unit {sysid}: {exc} ({hint})", exc.code) from None
-                    if exc.code is None and key is not None:
+                    if exc.code is None and key is not None and exc.refused is None:
                         raise ParamError(f"unit {sysid}: {exc} (a unit drops frames signed with a key "
                                          f"other than its own: is it the right key?)") from None
-                    raise ParamError(f"unit {sysid}: {exc}", exc.code) from None
+                    raise ParamError(f"unit {sysid}: {exc}", exc.code, exc.refused) from None
         if args.get:
             result["get"] = {name: client.get(name) for name in args.get}
         if not sets and not args.get:

@@ -5,7 +5,10 @@
 
 MAV_RESULT_DENIED from a kinefuse unit means that it requires signed commands (a key is set on
 it) or that a value is out of range (e.g. a KF_RAW_SAMPLE rate above KF_RATE_HZ's 2000 Hz): the
-error names both when the command went unsigned, the range when it was signed.
+error names both when the command went unsigned, the range when it was signed.  A signed
+command left unanswered because the unit refused its signature (counted in its SYS_STATUS: after
+a power cut, until the host's clock passes the unit's stored signing floor, at most 60 s; or
+another key) is told as such, not only as a timeout.
 """
 from __future__ import annotations
 
@@ -35,9 +38,11 @@ RESULT_HINTS = {
 class CommandError(KinefuseError):
     """A command was refused by a unit or not answered."""
 
-    def __init__(self, text: str, result: int | None = None):
+    def __init__(self, text: str, result: int | None = None, refused: int | None = None):
         super().__init__(text)
         self.result = result
+        #: unanswered signed commands the unit counted as signature failures (None: not that)
+        self.refused = refused
 
 
 def command_name(cmd: int) -> str:
@@ -88,16 +93,31 @@ def send_command(session, sysid: int, command: int, *params: float, timeout: flo
     Returns the MAV_RESULT; with ``check`` a refusal raises CommandError; no answer at all
     always raises CommandError (result None)."""
     drop_stale_acks(session, command)
-    for attempt in range(retries):
-        session.send("COMMAND_LONG", **_pack(command, params, sysid, attempt))
-        f = session.wait_for(_is_ack(command, sysid), timeout=timeout)
+    sent = {"n": 0}
+
+    def ask():
+        session.send("COMMAND_LONG", **_pack(command, params, sysid, sent["n"]))
+        sent["n"] += 1
+        return session.wait_for(_is_ack(command, sysid), timeout=timeout)
+
+    sent_ns = time.monotonic_ns()
+    f = None
+    for _ in range(retries):
+        f = ask()
         if f is not None:
-            r = int(f.msg.result)
-            if check and r != 0:
-                raise CommandError(refusal_text(sysid, command, r, session.encoder.key is not None), r)
-            return r
-    raise CommandError(f"no COMMAND_ACK for {command_name(command)} from unit {sysid} "
-                       f"within {retries} x {timeout:g} s")
+            break
+    text = (f"no COMMAND_ACK for {command_name(command)} from unit {sysid} "
+            f"within {retries} x {timeout:g} s")
+    if f is None:
+        # a signed command the unit refused (dropped and counted) is told as such
+        from kinefuse.host.link.signing import refused_text, unanswered_signed
+        f, n = unanswered_signed(session, sysid, sent_ns, ask)
+        if f is None:
+            raise CommandError(f"{text}: {refused_text(n)}" if n else text, refused=n)
+    r = int(f.msg.result)
+    if check and r != 0:
+        raise CommandError(refusal_text(sysid, command, r, session.encoder.key is not None), r)
+    return r
 
 
 def broadcast_command(session, command: int, *params: float, timeout: float = 1.0, retries: int = 2,

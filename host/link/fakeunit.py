@@ -4,9 +4,9 @@ It is NOT the firmware: it streams KF_RAW_SAMPLE (a unit rotating about a tilted
 noise), KF_ORIENTATION (gyro strapdown integration), KF_UNIT_STATUS and HEARTBEAT, answers
 TIMESYNC, the parameter protocol and COMMAND_LONG (MAV_CMD_KF_STREAM, SET_MESSAGE_INTERVAL,
 REQUEST_MESSAGE, reboot, heading tare, filter reset), and can drift its clock, drop samples,
-corrupt bytes, have a sensor that grants another rate than KF_RATE_HZ asks and a parameter
-storage that fails (KF_UNIT_STATUS_FLAGS_STORAGE_ERROR and a STATUSTEXT, as the firmware) on
-purpose.
+corrupt bytes, have a sensor that grants another rate than KF_RATE_HZ asks, a sensor that
+stalls once (KF_UNIT_STATUS_FLAGS_SENSOR_FAULT, as the firmware) and a parameter storage that
+fails (KF_UNIT_STATUS_FLAGS_STORAGE_ERROR and a STATUSTEXT, as the firmware) on purpose.
 
     pair = create_pty_pair()
     unit = FakeUnit(open_tty_raw(pair.device_path), unit_id=3, rate_hz=500).start()
@@ -84,10 +84,14 @@ class FakeUnit:
     def __init__(self, conn: Connection, unit_id: int = 1, rate_hz: float = 1000.0, orientation_rate_hz: float = 100.0,
                  drift_ppm: float = 0.0, boot_offset_us: int = 0, streaming: bool = True, drop_every: int = 0,
                  corrupt_probability: float = 0.0, seed: int = 0, answer_params: bool = True,
-                 param_list_loss_every: int = 0, sensor_grant_hz: int = 0, storage_error: bool = False):
+                 param_list_loss_every: int = 0, sensor_grant_hz: int = 0, storage_error: bool = False,
+                 sensor_gap: tuple | None = None):
         """``sensor_grant_hz``: the rate the sensor delivers whatever KF_RATE_HZ asks (0: the rate
         asked; the firmware test HAL's kft_sensor_grant); ``storage_error``: every load (boot) and
-        save (parameter change) of the parameter storage fails."""
+        save (parameter change) of the parameter storage fails; ``sensor_gap`` (N, MS): once,
+        after N samples since boot, the sensor delivers nothing for MS ms (the host build's
+        ``--sensor-gap N:MS``; here while streaming): a silence of 4 periods and at least
+        100 ms is KF_UNIT_STATUS_FLAGS_SENSOR_FAULT in every status whose interval had it."""
         self.conn = conn
         self.params = {k: v[1] for k, v in DEFAULT_PARAMS.items()}
         self.params["KF_UNIT_ID"] = unit_id
@@ -102,6 +106,9 @@ class FakeUnit:
         self.param_list_loss_every = param_list_loss_every  # drop every k-th PARAM_VALUE of a list
         self.sensor_grant_hz = int(sensor_grant_hz)
         self.storage_error = storage_error
+        self.sensor_gap = None if sensor_gap is None else (int(sensor_gap[0]), int(sensor_gap[1]))
+        self.gap = None         # (first device us without samples, first us with them again): once
+        self.status_prev_us = None   # device time of the previous periodic status
         self.rng = np.random.default_rng(seed)
         self.enc = Encoder(sysid=unit_id, compid=UNIT_COMPONENT_ID)
         self.dec = StreamDecoder()
@@ -158,6 +165,7 @@ class FakeUnit:
         storage failure since the previous one) and, after a failure since the last one told,
         STATUSTEXT ERROR "parameter storage error: settings may be lost"."""
         out = [self._heartbeat(), self._status(now_us)]
+        self.status_prev_us = now_us
         self.store_errors_status = self.store_errors
         if self.store_errors != self.store_errors_told:
             self.store_errors_told = self.store_errors
@@ -223,6 +231,11 @@ class FakeUnit:
         while self.next_sample_us <= now and budget:
             budget -= 1
             t = int(self.next_sample_us)
+            if self.sensor_gap is not None and self.gap is None and self.samples_taken >= self.sensor_gap[0]:
+                self.gap = (t, t + 1000 * self.sensor_gap[1])
+            if self.gap is not None and self.gap[0] <= t < self.gap[1]:
+                self.next_sample_us = self.gap[1]          # the sensor delivers nothing meanwhile
+                continue
             self.next_sample_us += self.period_us
             frame = self._sample(t)
             self.mag_present = True                # every streamed sample has a magnetometer reading
@@ -275,6 +288,17 @@ class FakeUnit:
                                rejected_samples=0, status=status, earth_frame=1, filter_id=1,
                                unit_id=self.params["KF_UNIT_ID"], cov=[1e-4, 0, 0, 1e-4, 0, 4e-4])
 
+    def _sensor_fault(self, now_us: int) -> bool:
+        """KF_UNIT_STATUS_FLAGS_SENSOR_FAULT in a status at ``now_us``: the sensor was silent for
+        more than 4 periods and 100 ms (kf_config.c sensor_timeout_us) at some time since the
+        previous periodic status (kf_app.c, kf_status.c)."""
+        if self.gap is None:
+            return False
+        timeout = max(4e6 / max(1, self.params["KF_RATE_HZ"]), 100_000)
+        start = self.gap[0] - self.period_us + timeout      # the last sample, then the timeout
+        prev = -1 if self.status_prev_us is None else self.status_prev_us
+        return start < self.gap[1] and start < now_us and self.gap[1] > prev
+
     def _heartbeat(self) -> bytes:
         return self.enc.encode("HEARTBEAT", type=0, autopilot=8, base_mode=0, custom_mode=0, system_status=4,
                                mavlink_version=3)
@@ -295,7 +319,8 @@ class FakeUnit:
             # as the firmware: MAG_PRESENT once a magnetometer reading arrived, never LOW_BATTERY
             # (no threshold), STORAGE_ERROR after a failed load or save since the previous status
             status_flags=(1 if self.streaming else 0) | (2 if self.mag_present else 0) | 32
-            | (8 if self.hil else 0) | (128 if self.store_errors != self.store_errors_status else 0),
+            | (8 if self.hil else 0) | (128 if self.store_errors != self.store_errors_status else 0)
+            | (4 if self._sensor_fault(now_us) else 0),
             battery_remaining=80, unit_id=self.params["KF_UNIT_ID"], filter_id=self.params["KF_FILTER"],
             numeric_format=1, earth_frame=1,
             # extensions: a strapdown integration never resets, one sensor (no sensor 1 rejections)
@@ -470,17 +495,27 @@ def raw_frames(n: int, unit_id: int = 1, rate_hz: float = 1000.0, seed: int = 0,
     return encode_batch("KF_RAW_SAMPLE", v, sysid=unit_id, compid=UNIT_COMPONENT_ID, seq0=seq0, n=n)
 
 
+def _gap_option(v: str) -> tuple:
+    """``N:MS`` of ``fake:sensor_gap=`` (ValueError: a bad one), as the host build's --sensor-gap."""
+    n, sep, ms = v.partition(":")
+    if not sep or not n.strip().isdigit() or not ms.strip().isdigit() or not 1 <= int(ms) <= 3_600_000:
+        raise ValueError(v)
+    return int(n), int(ms)
+
+
 class FakeConnection(Connection):
     """Host end of a socket pair whose other end is driven by an in-process :class:`FakeUnit`.
 
     Connection string ``fake:[rate=1000,ori=100,unit=1,drift=0,drop=0,corrupt=0,stream=1,params=1,grant=0,
-    storage_error=0]`` (all optional): try the host tools without hardware.  rate, ori: Hz; drift: ppm of the unit's
-    clock; drop=k: every k-th sample lost; corrupt=p: each transmitted *bit* flips with
+    storage_error=0,sensor_gap=N:MS]`` (all optional): try the host tools without hardware.  rate, ori: Hz;
+    drift: ppm of the unit's clock; drop=k: every k-th sample lost; corrupt=p: each transmitted *bit* flips with
     probability p (a 46-byte frame survives with (1 - p)^368: p = 1e-4 loses about 4 % of the frames,
     p = 0.02 nearly all); stream=0: waits for MAV_CMD_KF_STREAM; params=0: a unit that does not
     answer the parameter protocol; grant=HZ: its sensor delivers HZ whatever KF_RATE_HZ asks (which
     then becomes HZ, as on the unit); storage_error=1: its parameter storage fails (KF_UNIT_STATUS
-    STORAGE_ERROR and a STATUSTEXT ERROR at boot and after each parameter change).
+    STORAGE_ERROR and a STATUSTEXT ERROR at boot and after each parameter change);
+    sensor_gap=N:MS: once, after N samples, its sensor delivers nothing for MS ms (1..3,600,000;
+    as the host build's --sensor-gap): KF_UNIT_STATUS SENSOR_FAULT.
     """
     # option -> allowed range (a value outside made the unit's thread die: a silent, empty stream)
     LIMITS = {"rate": (1, 100_000), "ori": (0, 10_000), "unit": (1, 254), "drift": (-100_000, 100_000),
@@ -495,7 +530,8 @@ class FakeConnection(Connection):
                 "drift": ("drift_ppm", float), "drop": ("drop_every", int), "corrupt": ("corrupt_probability", float),
                 "stream": ("streaming", lambda v: bool(int(v))), "seed": ("seed", int),
                 "params": ("answer_params", lambda v: bool(int(v))), "grant": ("sensor_grant_hz", int),
-                "storage_error": ("storage_error", lambda v: bool(int(v)))}
+                "storage_error": ("storage_error", lambda v: bool(int(v))),
+                "sensor_gap": ("sensor_gap", _gap_option)}
         kw = {}
         for part in filter(None, options.split(",")):
             k, _, v = part.partition("=")
@@ -504,7 +540,8 @@ class FakeConnection(Connection):
             try:
                 kw[keys[k][0]] = keys[k][1](v)
             except ValueError:
-                raise KinefuseError(f"bad value for fake unit option {k}: {v!r}") from None
+                want = " (expected N:MS: samples, then milliseconds 1..3600000)" if k == "sensor_gap" else ""
+                raise KinefuseError(f"bad value for fake unit option {k}: {v!r}{want}") from None
             lo, hi = self.LIMITS.get(k, (None, None))
             if lo is not None and not lo <= kw[keys[k][0]] <= hi:   # NaN too
                 raise KinefuseError(f"bad value for fake unit option {k}: {v!r} (expected {lo} .. {hi})")

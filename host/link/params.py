@@ -11,6 +11,9 @@ signalling NaN (0x7F800001-0x7FBFFFFF, 0xFF800001-0xFFBFFFFF) would come back qu
 Protocol (mavlink.io parameter service): PARAM_REQUEST_LIST streams every PARAM_VALUE; lost ones
 are re-requested by index with PARAM_REQUEST_READ; PARAM_SET is answered with PARAM_VALUE (the new
 value, or the unchanged one plus PARAM_ERROR when rejected) and re-sent on timeout.
+Signed requests that get no answer: when the unit counted them as signature failures (its
+SYS_STATUS, :func:`kinefuse.host.link.signing.unanswered_signed`; e.g. after a power cut, until
+the host's clock passes the unit's stored signing floor) the error says so (``refused``).
 """
 from __future__ import annotations
 
@@ -39,9 +42,11 @@ class ParamError(KinefuseError):
     ``code``: the unit's MAV_PARAM_ERROR when it sent one (3: permission denied -- a unit with
     a signing key refuses unsigned writes), else None."""
 
-    def __init__(self, text: str, code: int | None = None):
+    def __init__(self, text: str, code: int | None = None, refused: int | None = None):
         super().__init__(text)
         self.code = code
+        #: signed requests unanswered that the unit counted as signature failures (None: not that)
+        self.refused = refused
 
 
 def encode_value(value, ptype: int) -> float:
@@ -97,8 +102,22 @@ class ParamClient:
     def _from_unit(self, f) -> bool:
         return f.sysid == self.sys and (self.comp == 0 or f.compid == self.comp)
 
+    def _unanswered(self, text: str, sent_ns: int, again=None):
+        """The ParamError for signed requests sent since ``sent_ns`` that got no answer: when the
+        unit counted them as signature failures it says so (refused_text).  ``again``: one more
+        attempt when that cannot be told otherwise (signing.unanswered_signed); its answer is
+        returned instead of an error."""
+        from kinefuse.host.link.signing import refused_text, unanswered_signed
+        answer, n = unanswered_signed(self.s, self.sys, sent_ns, again)
+        if answer is not None:
+            return answer
+        if n:
+            return ParamError(f"{text}: {refused_text(n)}", refused=n)
+        return ParamError(text)
+
     def fetch_all(self, timeout: float = 5.0) -> dict:
         """Every parameter of the unit: {name: value} (ints decoded bytewise)."""
+        sent_ns = time.monotonic_ns()
         self.s.send("PARAM_REQUEST_LIST", target_system=self.sys, target_component=self.comp)
         values: dict[int, tuple[str, object]] = {}
         count = None
@@ -121,7 +140,11 @@ class ParamClient:
                 continue
             if count is None:
                 if time.monotonic() - quiet_since > self.timeout * self.retries:
-                    raise ParamError(f"no PARAM_VALUE from system {self.sys} (is the unit connected and powered?)")
+                    # no retry here: a signed list that the unit refused is told as such
+                    err = self._unanswered(f"no PARAM_VALUE from system {self.sys}", sent_ns)
+                    if err.refused is None:
+                        err = ParamError(f"{err} (is the unit connected and powered?)")
+                    raise err
                 self.s.send("PARAM_REQUEST_LIST", target_system=self.sys, target_component=self.comp)
                 continue
             for idx in range(count):  # re-request what was lost
@@ -134,18 +157,25 @@ class ParamClient:
         return {name: v for _, (name, v) in sorted(values.items())}
 
     def get(self, name: str):
-        for _ in range(self.retries):
+        def ask():
             self.s.send("PARAM_REQUEST_READ", target_system=self.sys, target_component=self.comp,
                         param_id=name, param_index=-1)
-            f = self.s.wait_for(lambda f: f.msgid in (22, 345) and self._from_unit(f)
-                                and f.msg.param_id == name, timeout=self.timeout)
-            if f is None:
-                continue
-            if f.msgid == 345:
-                raise ParamError(f"{name}: {_error_text(f.msg.error)}", int(f.msg.error))
-            self.types[name] = f.msg.param_type
-            return decode_value(f.msg.param_value, f.msg.param_type)
-        raise ParamError(f"no answer for parameter {name} from system {self.sys}")
+            return self.s.wait_for(lambda f: f.msgid in (22, 345) and self._from_unit(f)
+                                   and f.msg.param_id == name, timeout=self.timeout)
+        sent_ns = time.monotonic_ns()
+        f = None
+        for _ in range(self.retries):
+            f = ask()
+            if f is not None:
+                break
+        if f is None:
+            f = self._unanswered(f"no answer for parameter {name} from system {self.sys}", sent_ns, ask)
+            if isinstance(f, ParamError):
+                raise f
+        if f.msgid == 345:
+            raise ParamError(f"{name}: {_error_text(f.msg.error)}", int(f.msg.error))
+        self.types[name] = f.msg.param_type
+        return decode_value(f.msg.param_value, f.msg.param_type)
 
     def set(self, name: str, value, ptype: int | None = None):
         """Write a parameter; returns the value the unit echoes.  Raises ParamError if rejected.
@@ -164,16 +194,24 @@ class ParamClient:
         want = decode_value(wire, ptype)
         self.granted.pop(name, None)
         kept = None
-        for _ in range(self.retries):
+
+        def ask():
             self.s.send("PARAM_SET", target_system=self.sys, target_component=self.comp,
                         param_id=name, param_value=wire, param_type=ptype)
-            f = self.s.wait_for(lambda f: f.msgid in (22, 345) and self._from_unit(f)
-                                and f.msg.param_id == name, timeout=self.timeout)
+            return self.s.wait_for(lambda f: f.msgid in (22, 345) and self._from_unit(f)
+                                   and f.msg.param_id == name, timeout=self.timeout)
+
+        def rejected(f):
+            self.s.wait_for(lambda f: f.msgid == 22 and f.msg.param_id == name, timeout=self.timeout)
+            return ParamError(f"{name} = {value!r} rejected: {_error_text(f.msg.error)}", int(f.msg.error))
+
+        sent_ns = time.monotonic_ns()
+        for _ in range(self.retries):
+            f = ask()
             if f is None:
                 continue
             if f.msgid == 345:
-                self.s.wait_for(lambda f: f.msgid == 22 and f.msg.param_id == name, timeout=self.timeout)
-                raise ParamError(f"{name} = {value!r} rejected: {_error_text(f.msg.error)}", int(f.msg.error))
+                raise rejected(f)
             got = decode_value(f.msg.param_value, f.msg.param_type)
             if same_value(got, want):
                 return got
@@ -184,12 +222,20 @@ class ParamClient:
             while self.s.wait_for(lambda f: f.msgid == 22 and self._from_unit(f)
                                   and f.msg.param_id == name, timeout=min(self.timeout, 0.3)):
                 pass
-        if kept is not None and name in GRANTED_PARAMS:
+        if kept is None:
+            # no answer at all: a signed write the unit refused is told as such
+            f = self._unanswered(f"no answer to PARAM_SET {name} from system {self.sys}", sent_ns, ask)
+            if isinstance(f, ParamError):
+                raise f
+            if f.msgid == 345:
+                raise rejected(f)
+            kept = decode_value(f.msg.param_value, f.msg.param_type)
+            if same_value(kept, want):
+                return kept
+        if name in GRANTED_PARAMS:
             self.granted[name] = (want, kept)
             return kept
-        if kept is not None:
-            raise ParamError(f"{name} = {value!r} rejected: the unit kept {kept!r}")
-        raise ParamError(f"no answer to PARAM_SET {name} from system {self.sys}")
+        raise ParamError(f"{name} = {value!r} rejected: the unit kept {kept!r}")
 
 
 def _error_text(code: int) -> str:

@@ -23,6 +23,7 @@ from __future__ import annotations
 import hashlib
 import os
 import re
+import time
 from pathlib import Path
 
 from kinefuse.host.errors import KinefuseError
@@ -31,6 +32,11 @@ ENV_KEY = "KINEFUSE_SIGNING_KEY"
 UNIT_COMPONENT = 200
 MAV_CMD_REQUEST_MESSAGE = 512
 MSG_HEARTBEAT = 0
+MSG_SYS_STATUS = 1
+#: the one line told when a unit counted the host's unanswered signed frames as signature failures
+REFUSED_TEXT = ("the unit refused the signature ({n} more signature failures): after a power cut it "
+                "accepts signed frames only once the host clock passes its stored floor, at most 60 s; "
+                "retry in a minute -- or the key differs: is it the right key (--key/--key-file)?")
 
 
 def parse_key(text: str) -> bytes:
@@ -111,6 +117,7 @@ def set_unit_key(session, sysid: int, new_key: bytes | None, timeout: float = 1.
         raise KinefuseError("a signing key has 32 bytes")
     clearing = not any(key)
     old = session.encoder.key
+    sent_ns = time.monotonic_ns()
     session.send("SETUP_SIGNING", target_system=sysid, target_component=UNIT_COMPONENT,
                  secret_key=list(key), initial_timestamp=signing_timestamp())
     session.encoder.key = None                       # reading needs no signature
@@ -125,20 +132,32 @@ def set_unit_key(session, sysid: int, new_key: bytes | None, timeout: float = 1.
     if clearing:
         if flag != 0 or ack != 0:
             session.encoder.key = old
-            raise KinefuseError(f"unit {sysid} still requires signing (KF_SIGNING={flag}): clearing the key "
-                                f"needs --key with the unit's current key")
+            note = _refused_note(session, sysid, sent_ns, timeout)
+            raise KinefuseError(f"unit {sysid} still requires signing (KF_SIGNING={flag})"
+                                + (note or ": clearing the key needs --key with the unit's current key"))
     elif flag != 1 or ack != 0:
         session.encoder.key = old
+        note = _refused_note(session, sysid, sent_ns, timeout) if flag == 1 else None
         why = ("it has another key: give the current one with --key/--key-file" if flag == 1
                else "KF_SIGNING is still 0")
-        raise KinefuseError(f"unit {sysid} did not take the new key ({why})")
+        raise KinefuseError(f"unit {sysid} did not take the new key" + (note or f" ({why})"))
     return {"unit": sysid, "signing": bool(flag), "key_id": key_id(None if clearing else key)}
 
 
-def _probe(session, sysid: int, timeout: float):
+def _refused_note(session, sysid: int, sent_ns: int, timeout: float):
+    """": <refused_text>" when the unit counted the SETUP_SIGNING signed with the current key
+    (``session.encoder.key``; unsigned: None) as a signature failure, else None.  Without a
+    SYS_STATUS from before it, one harmless command signed with that key is the retry: answered,
+    the unit takes that key's signatures and it was not that."""
+    _, n = unanswered_signed(session, sysid, sent_ns,
+                             lambda: _probe(session, sysid, timeout, tries=1))
+    return f": {refused_text(n)}" if n else None
+
+
+def _probe(session, sysid: int, timeout: float, tries: int = 2):
     """Result of a harmless command (REQUEST_MESSAGE HEARTBEAT) as the session signs it now;
     None when no ACK came (a frame signed with a key the unit does not have is dropped)."""
-    for _ in range(2):
+    for _ in range(tries):
         session.send("COMMAND_LONG", target_system=sysid, target_component=UNIT_COMPONENT,
                      command=MAV_CMD_REQUEST_MESSAGE, confirmation=0, param1=float(MSG_HEARTBEAT))
         f = session.wait_for(lambda f: f.msgid == 77 and f.sysid == sysid
@@ -146,3 +165,79 @@ def _probe(session, sysid: int, timeout: float):
         if f is not None:
             return int(f.msg.result)
     return None
+
+
+# ------------------------------------------------------------------ why a signed frame went unanswered
+#
+# A kinefuse unit drops a signed frame it refuses (bad signature, another key, a timestamp at or
+# below its floor -- after a power cut the stored reservation, up to 60 s ahead of the host's
+# clock) without an answer, and counts it: SYS_STATUS.errors_count3 (firmware/app/kf_send.c;
+# KF_UNIT_STATUS does not carry it), sent with every 1 Hz status.  The host asks nothing (a
+# REQUEST_MESSAGE would need a signature too): it compares the counter of the newest SYS_STATUS
+# received before its first frame with that of the first one received after it gave up.
+
+def _failures(f) -> int:
+    return int(f.msg.errors_count3)
+
+
+def signature_failures_before(session, sysid: int, t_ns: int):
+    """errors_count3 of the newest SYS_STATUS from ``sysid`` the session received before
+    ``t_ns`` (monotonic ns) and still holds, or None."""
+    session.poll(0)
+    for t, f in reversed(session.frames):
+        if t < t_ns and f.msgid == MSG_SYS_STATUS and f.sysid == sysid:
+            return _failures(f)
+    return None
+
+
+def next_signature_failures(session, sysid: int, timeout: float = 2.0):
+    """errors_count3 of the first SYS_STATUS from ``sysid`` received from now on (the unit sends
+    one a second), or None after ``timeout`` s or at the end of the connection.  The frame stays
+    queued."""
+    cut = time.monotonic_ns()
+    deadline = time.monotonic() + timeout
+    while True:
+        found = None
+        for t, f in reversed(session.frames):    # newest first: the last match is the oldest
+            if t <= cut:
+                break
+            if f.msgid == MSG_SYS_STATUS and f.sysid == sysid:
+                found = f
+        if found is not None:
+            return _failures(found)
+        left = deadline - time.monotonic()
+        if left <= 0:
+            return None
+        if not session.poll(min(left, 0.05)) and session.reader.finished:
+            return None
+
+
+def unanswered_signed(session, sysid: int, sent_ns: int, again=None):
+    """After signed frames to unit ``sysid`` sent from ``sent_ns`` (monotonic ns) on went
+    unanswered: ``(answer, n)`` -- n > 0 when the unit counted n more signature failures since
+    (None: it did not, or it cannot be told; nothing is said then).
+
+    Without a SYS_STATUS received before ``sent_ns`` (a fresh connection) the counter is read
+    now, ``again()`` makes ONE more attempt (a bounded retry: send once more, wait for the
+    answer; returns it or None) and the counter is read after it; an answer it gets is returned
+    as ``answer`` (n None).  An unsigned session: (None, None) at once."""
+    if session.encoder.key is None:
+        return None, None
+    before = signature_failures_before(session, sysid, sent_ns)
+    if before is None:
+        if again is None:
+            return None, None
+        before = next_signature_failures(session, sysid)
+        if before is None:
+            return None, None
+        answer = again()
+        if answer is not None:
+            return answer, None
+    after = next_signature_failures(session, sysid)
+    if after is None or after <= before:
+        return None, None
+    return None, after - before
+
+
+def refused_text(n: int) -> str:
+    return REFUSED_TEXT.format(n=n)

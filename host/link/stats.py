@@ -20,6 +20,8 @@
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from kinefuse.host.link.dialect import DIALECT_HASH
@@ -684,6 +686,24 @@ def crc_extra_text(m: dict) -> str:
             f"of this message (a dialect mismatch), so they are dropped; update the unit's firmware or kinefuse")
 
 
+def header_rates_checked(info) -> tuple[dict, str | None]:
+    """A stream's header entry with its ``requested_rates_hz`` (the recorder's --rate: message
+    name -> Hz) checked: anything but a mapping of names to positive finite numbers (a damaged
+    header whose text still reads) is left out, with a warning (it was a traceback)."""
+    if not isinstance(info, dict):
+        return {}, None
+    rates = info.get("requested_rates_hz")
+    if rates is None or (isinstance(rates, dict) and all(
+            isinstance(k, str) and isinstance(v, (int, float)) and not isinstance(v, bool)
+            and math.isfinite(v) and v > 0 for k, v in rates.items())):
+        return info, None
+    clean = {k: v for k, v in info.items() if k != "requested_rates_hz"}
+    shown = repr(rates)
+    shown = shown if len(shown) <= 60 else shown[:57] + "..."
+    return clean, (f"the header's requested_rates_hz is not a map of message names to rates in Hz "
+                   f"({shown}): ignored (a damaged header?)")
+
+
 def compute(df: DecodedFile) -> dict:
     start = df.start_monotonic_ns
     header = df.header
@@ -712,7 +732,10 @@ def compute(df: DecodedFile) -> dict:
             hi = max(int(h.max()) for h in t_all)
             s["host_span_s"] = (hi - lo) / 1e9
         sysids = sorted({int(x) for arr in ds.arrays.values() for x in np.unique(arr["_sysid"])})
-        units = [_unit_stats(ds, sysid, start, ds.info) for sysid in sysids]
+        info, bad = header_rates_checked(ds.info)
+        if bad:
+            result["warnings"].append(f"stream {sid}: {bad}")
+        units = [_unit_stats(ds, sysid, start, info) for sysid in sysids]
         s["units"] = [u for u in units if any(k in KF_NAMES for k in u["messages"]) or "firmware_version" in u] \
             or units
         s["other_systems"] = [u["sysid"] for u in units if u not in s["units"]]
