@@ -5,7 +5,8 @@ A :class:`Recording` holds, per emitted sample i (after drops and duplicates):
 =============  ======  ===================================================================
 t              (N,)    time stamp, s (device clock; what a filter sees)
 dt             (N,)    s, from the emitted stamps: dt[0] = 1/rate, dt[i] = t[i] − t[i−1]
-gyr            (N,3)   angular rate, rad/s, sensor frame
+gyr            (N,3)   angular rate, rad/s, sensor frame: the mean over the interval the sample
+                       closes (sensor.gyr.sampling; acc and mag are instantaneous)
 acc            (N,3)   specific force, m/s², sensor frame (+g upward at rest)
 mag            (N,3)   magnetic field, µT, sensor frame; held between magnetometer samples
                        (NaN when the sensor has no magnetometer)
@@ -15,7 +16,8 @@ movement       (N,)    bool, designed motion phase (rest/holds are False)
 pos_true       (N,3)   true sensor position, m, ENU
 t_true         (N,)    true sampling instant, s (differs from t with jitter/drift)
 index          (N,)    nominal sample number (gaps = drops, repeats = duplicates)
-truth          dict    more per-sample truth: gyr_true, acc_true (rigid body, no
+truth          dict    more per-sample truth: gyr_true (the error-free sample), gyr_inst
+                       (the body rate at t_true), acc_true (rigid body, no
                        disturbances), mag_true (earth field, no disturbances), mag_disturbed,
                        acc_disturbed (bool), and the scenario's joint angles in rad
 meta           dict    scenario, sensor, seed, preset, rate_hz, mag_rate_hz, units, sensor model

@@ -204,6 +204,75 @@ def as_scenario(x) -> Scenario:
     raise SpecError(f"expected a Scenario, dict or scenario name, got {type(x).__name__}")
 
 
+#: Gauss-Legendre nodes (on [0, 1]) and weights of the interval means, 4 points on each half of
+#: the interval: they integrate only the coning part of the mean (zero about a fixed axis)
+_GL_X, _GL_W = np.polynomial.legendre.leggauss(4)
+_MEAN_NODES = np.concatenate([(_GL_X + 1) / 4, (_GL_X + 1) / 4 + 0.5])
+_MEAN_WEIGHTS = np.concatenate([_GL_W, _GL_W]) / 4
+
+
+def _bortz_excess(theta: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """θ̇ − ω of the rotation vector θ of a body turning at body rate ω (Bortz):
+    ½ θ×ω + (1 − (a/2)·cot(a/2))/a² · θ×(θ×ω), a = |θ|; zero when θ ∥ ω."""
+    a2 = np.sum(theta * theta, axis=-1, keepdims=True)
+    a = np.sqrt(a2)
+    safe = np.where(a > 1e-3, a, 1.0)
+    f = np.where(a > 1e-3, (1.0 - 0.5 * safe / np.tan(0.5 * safe)) / (safe * safe),
+                 1.0 / 12.0 + a2 / 720.0)
+    c = np.cross(theta, w)
+    return 0.5 * c + f * np.cross(theta, c)
+
+
+def interval_rates(track, t_true: np.ndarray, rate_hz: float, sampling: str = "mean",
+                   q: np.ndarray | None = None, w: np.ndarray | None = None) -> np.ndarray:
+    """True gyroscope samples (N,3), rad/s, sensor frame, at the true (jittered, drifting)
+    instants ``t_true`` of the nominal samples, each over the interval it closes
+    (t[k−1], t[k]]; sample 0 closes the nominal period 1/rate before it.
+
+    ``sampling`` (see :data:`.sensor.GYR_SAMPLING`): "mean" ∫ω dt / Δt (the interval's rotation
+    vector less its coning part, integrated by Gauss-Legendre on the analytic body rate), "rotation" the rotation vector of q(t[k−1])⁻¹ ⊗ q(t[k]) / Δt (a plain
+    strapdown step q_k = q_{k−1} ⊗ exp(ω_k·Δt_k/2) with the true steps reproduces q exactly),
+    "instant" ω(t[k]).  Computed on the nominal samples, before drops and duplicates: a sample
+    after a dropped one still covers only its own interval (a sensor's output register is
+    overwritten each period whether or not it is read), a duplicate repeats its packet.
+    ``q``, ``w``: the track's orientations and rates at ``t_true`` when already evaluated."""
+    t_true = np.asarray(t_true, dtype=float)
+    if sampling == "instant":
+        return track.evaluate(t_true).w if w is None else w
+    if not len(t_true):
+        return np.zeros((0, 3))
+    t_prev = np.concatenate([[t_true[0] - 1.0 / rate_hz], t_true[:-1]])
+    step = t_true - t_prev
+    w = track.evaluate(t_true).w if w is None else w
+    turn = np.linalg.norm(w, axis=-1) * step
+    if np.max(turn) > 0.5 * np.pi:      # the rotation vector of an interval is taken below 180°
+        i = int(np.argmax(turn))
+        raise SpecError(f"the sensor turns {np.degrees(turn[i]):.0f}° in one sample interval (at "
+                        f"{t_true[i]:.3f} s, {np.degrees(np.linalg.norm(w[i])):.0f} °/s at {rate_hz:g} Hz): "
+                        f"at most 90° per sample; raise rate_hz")
+    if sampling == "rotation":
+        q = track.evaluate(t_true).q if q is None else q
+        q_prev = np.concatenate([track.evaluate(t_prev[:1]).q, q[:-1]])
+        return Q.to_rotvec(Q.mul(Q.conj(q_prev), q)) / step[:, None]
+    if sampling != "mean":
+        raise SpecError(f"gyr.sampling: unknown {sampling!r}")
+    # ∫ω ds = θ_k − ∫(θ̇ − ω) ds with θ(s) the rotation vector from q(t[k−1]) to q(s): the
+    # rotation over the interval exactly, less its coning part, which the quadrature integrates
+    # (a fixed axis has none: the mean is then the rotation's rate to rounding)
+    q = track.evaluate(t_true).q if q is None else q
+    k0 = track.evaluate(t_prev[:1])
+    q_prev_inv = Q.conj(np.concatenate([k0.q, q[:-1]]))
+    theta = Q.to_rotvec(Q.mul(q_prev_inv, q))
+    # intervals at rest (no rotation, no rate at either end: the motion's rests) have no
+    # coning part; only the others are integrated
+    w_prev = np.concatenate([k0.w, w[:-1]])
+    m = np.flatnonzero(np.any(theta != 0, axis=1) | np.any(w != 0, axis=1) | np.any(w_prev != 0, axis=1))
+    for x, wt in zip(_MEAN_NODES, _MEAN_WEIGHTS):      # one node at a time: memory stays O(N)
+        kn = track.evaluate(t_prev[m] + x * step[m])
+        theta[m] -= wt * step[m, None] * _bortz_excess(Q.to_rotvec(Q.mul(q_prev_inv[m], kn.q)), kn.w)
+    return theta / step[:, None]
+
+
 def _simulate_sensor(sc: Scenario, b: Built, name: str, track, ss) -> Recording:
     model = b.sensors[name]
     timing_ss, gyr_ss, acc_ss, mag_ss = ss.spawn(4)
@@ -225,7 +294,11 @@ def _simulate_sensor(sc: Scenario, b: Built, name: str, track, ss) -> Recording:
     g_up = b.earth.gravity_up
     f_earth = k.a + g_up
     acc_true = Q.rotate_inv(k.q, f_earth)
-    gyr_true = k.w
+    # the gyroscope reports the mean rate over the sample interval that ends at its instant
+    # (what the filters integrate: ω_k·dt_k over (t[k−1], t[k]]; gyr.sampling); accelerometer
+    # and magnetometer are instantaneous
+    gyr_inst = k.w
+    gyr_true = interval_rates(track, t_true, fs, model.gyr.sampling, q=k.q, w=k.w)
     d_acc, d_gyr, inertial_on = b.disturbances.inertial_add(t_true)
     gyr = model.gyr.apply(gyr_true + d_gyr, t_true, fs, np.random.default_rng(gyr_ss))
     acc = model.acc.apply(acc_true + d_acc, t_true, fs, np.random.default_rng(acc_ss))
@@ -257,7 +330,8 @@ def _simulate_sensor(sc: Scenario, b: Built, name: str, track, ss) -> Recording:
     if len(src):
         dt[0] = 1.0 / fs
         dt[1:] = np.diff(t_out)
-    truth = {"gyr_true": gyr_true[src], "acc_true": acc_true[src], "mag_true": mag_true[src],
+    truth = {"gyr_true": gyr_true[src], "gyr_inst": gyr_inst[src], "acc_true": acc_true[src],
+             "mag_true": mag_true[src],
              "mag_disturbed": mag_dist[src], "acc_disturbed": inertial_on[src]}
     for jn, sig in b.rig.joints.items():
         truth[jn] = sig(t_true)[0][src]

@@ -26,6 +26,7 @@ Dict form (scenario files) names units in the keys:
   gyr: noise_dps, bias_dps, bias_rw_dps_per_rt_s, range_dps, lsb_dps
   acc: noise_mg, bias_mg, bias_rw_mg_per_rt_s, range_g, lsb_mg
   mag: noise_uT, bias_uT, bias_rw_uT_per_rt_s, range_uT, lsb_uT, hard_iron_uT, soft_iron, present
+  gyr also: sampling ("mean" | "rotation" | "instant": what a sample is, see GYR_SAMPLING)
   all: scale (per-axis factor, 1 = exact), misalignment (3×3), noise_ref_rate_hz, bits
 A scalar is broadcast to the three axes.  1 g (unit) = 9.80665 m/s² (standard gravity).
 """
@@ -43,6 +44,14 @@ G_N = 9.80665  # m/s² per g, the unit (independent of the simulated local gravi
 # rounded (±2000 °/s at 16.4 LSB/(°/s) reaches 1998 °/s; ±500 °/s at 65.6: 499.5 °/s)
 FULL_SCALE_TOLERANCE = 0.005
 _SHOWN = {"gyr": "°/s", "acc": "g", "mag": "µT"}   # the unit of range_dps, range_g, range_uT
+#: what a gyroscope sample reports (``gyr.sampling``; the accelerometer and magnetometer are
+#: always instantaneous): "mean" the mean body rate over the interval that ends at the sample,
+#: ∫ω dt / Δt over (t[k−1], t[k]] (an integrating MEMS gyroscope; the default); "rotation" the
+#: rotation vector of q(t[k−1])⁻¹ ⊗ q(t[k]) / Δt (equal to "mean" about a fixed axis; in
+#: multi-axis motion it differs by the coning term, and a plain strapdown step ω_k·Δt_k then
+#: reproduces q exactly); "instant" the rate at t[k] (before 2026-12-04: the filters, which
+#: integrate it over the step before, ran about ω·Δt/2 ahead)
+GYR_SAMPLING = ("mean", "rotation", "instant")
 
 # key suffix → (internal field, factor from the dict unit to SI)
 _UNITS = {
@@ -75,6 +84,7 @@ class ChannelModel:
     hard_iron: np.ndarray = field(default_factory=lambda: np.zeros(3))
     soft_iron: np.ndarray = field(default_factory=lambda: np.eye(3))
     present: bool = True
+    sampling: str = "mean"                      # gyr only: what a sample is, see GYR_SAMPLING
 
     def quantisation_std(self) -> float:
         """Std of the rounding error (SI), lsb/√12; 0 without quantisation."""
@@ -168,6 +178,8 @@ class ChannelModel:
                 f"bias_rw_{unit}_per_rt_s": ("bias_rw", f), rkey: ("range", rf),
                 f"lsb_{unit}": ("lsb", f), "scale": ("scale", 1.0)}
         extra = ["misalignment", "noise_ref_rate_hz", "bits"]
+        if self.kind == "gyr":
+            extra.append("sampling")
         if self.kind == "mag":
             keys["hard_iron_uT"] = ("hard_iron", 1.0)
             extra += ["soft_iron", "present"]
@@ -209,6 +221,10 @@ class ChannelModel:
                 if c.noise_ref_rate_hz is not None and not (np.isfinite(c.noise_ref_rate_hz)
                                                             and c.noise_ref_rate_hz > 0):
                     raise SpecError(f"{w}: must be a rate > 0 Hz, or null (noise fixed)")
+            elif k == "sampling":
+                if not isinstance(v, str) or v not in GYR_SAMPLING:
+                    raise SpecError(f"{w}: expected one of {', '.join(GYR_SAMPLING)}, got {v!r}")
+                c.sampling = v
             elif k == "present":
                 if not isinstance(v, (bool, np.bool_)):    # (bool("no") is True)
                     raise SpecError(f"{w}: expected true or false")
@@ -229,6 +245,8 @@ class ChannelModel:
              f"bias_{unit}": lst(self.bias, f), f"bias_rw_{unit}_per_rt_s": lst(self.bias_rw, f),
              "scale": lst(self.scale, 1.0), "misalignment": self.misalignment.tolist(),
              rkey: lst(self.range, rf), f"lsb_{unit}": self.lsb / f, "bits": self.bits}
+        if self.kind == "gyr":
+            d["sampling"] = self.sampling
         if self.kind == "mag":
             d.update(hard_iron_uT=lst(self.hard_iron, 1.0), soft_iron=self.soft_iron.tolist(),
                      present=self.present)

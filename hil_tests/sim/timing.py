@@ -11,6 +11,8 @@ the same packet, values and stamp, delivered twice).  The first sample is never 
 ``dt`` of a recording comes from the emitted stamps: dt[0] = 1/rate, dt[i] = t[i] − t[i−1]
 (0 for a duplicate, a multiple of the period after drops).  A magnetometer at the acc/gyro rate
 is sampled at the same instants; at a rate of its own it has jittered instants of its own.
+A gyroscope sample covers the interval from the previous *nominal* sample's true instant to its
+own (dropped or not; see ``scenario.interval_rates``).
 """
 from __future__ import annotations
 
