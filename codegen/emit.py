@@ -152,7 +152,7 @@ class Lowered:
         return self.sys.store(r.node, self.sys.ref(r.node, self.names), var, r.kind)
 
     def op_summary(self) -> str:
-        return self.g.op_summary()
+        return self.g.op_summary(getattr(self.sys, "free", None))
 
     def result_refs(self) -> set[str]:
         return set().union(*(expr_names(self.result_expr(r)) for r in self.g.results)) \

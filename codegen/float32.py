@@ -8,8 +8,8 @@ executes the same statements on numpy float32 values.  Only correctly rounded op
 Semantics worth knowing:
   min(a, b) = (a < b) ? a : b and max(a, b) = (a > b) ? a : b — the second operand wins when the
   first is NaN; rsqrt(x) = 1.0f / sqrtf(x) (two rounded operations); rnorm with a scale c is
-  c / sqrtf(m), and split (on a dependency chain) sqrtf(m) * (c / m), three; assume() is the
-  identity.
+  c / sqrtf(m), and split (on a dependency chain) sqrtf(m) * (c / m), three; assume() and
+  the min/max of a bound() are the identity (no statement).
 """
 from __future__ import annotations
 
@@ -29,6 +29,11 @@ class Float32Lowering:
 
     name = NAME
     real_kind = "f32"
+
+    @staticmethod
+    def free(n: Node) -> bool:
+        """Nodes that emit no statement here (not counted in OPS.md): the min/max of a bound."""
+        return n.op in ("min", "max") and "bound" in n.attrs
 
     def __init__(self, g: Graph, decl):
         self.g = g
@@ -80,6 +85,9 @@ class Float32Lowering:
                 return m + [Assign(t + "_r", kind, Bin("/", c, Var(t + "_m"))),
                             Assign(t, kind, Bin("*", Var(t + "_s"), Var(t + "_r")))]
             return m + [Assign(t, kind, Bin("/", c, Var(t + "_s")))]
+        if op in ("min", "max") and "bound" in n.attrs:   # scalar.bound: the identity here
+            return names[n.args[0].id] if n.args[0].op != "const" else [
+                Assign(t, kind, a[0], n.loc)]
         if op == "min":
             return [Assign(t, kind, Sel(Bin("<", a[0], a[1]), a[0], a[1]), n.loc)]
         if op == "max":

@@ -145,7 +145,9 @@ def _ops_table(rows, keep: dict | None = None) -> str:
                 for s in getattr(estimators.get(n), "systems", SYSTEMS) if (n, s) in merged]
     lines = ["# Generated filters: operations per update", "",
              "Produced by `kinefuse codegen` (do not edit).  Counts are graph operations after",
-             "constant folding, common-subexpression elimination and dead-code removal.", "",
+             "constant folding, common-subexpression elimination and dead-code removal; a",
+             "number system's row leaves out what it emits no code for (f32: the min/max of a",
+             "`bound`).", "",
              "| filter | number system | operations per update |", "|---|---|---|"]
     lines += [f"| {n} | {s} | {o} |" for n, s, o in rows]
     return "\n".join(lines) + "\n"

@@ -87,7 +87,8 @@ class Node:
         self.args = args
         self.type = type
         self.value = value   # const: the value (float/int/bool); input: None
-        self.attrs = attrs   # ('kind', 'name', index) for inputs, (lo, hi) for assume
+        self.attrs = attrs   # ('kind', 'name', index) for inputs, (lo, hi) for assume,
+        #                      ('bound',) for the min/max of scalar.bound (no binary32 code)
         self.loc = loc       # "file.py:line" of the estimator code that created it
         # bool node: the operation only runs when it holds (a conditional region); its value is
         # 0 / false otherwise, in every number system
@@ -209,13 +210,15 @@ class Graph:
                 out[a.id].append(n)
         return out
 
-    def op_counts(self) -> Counter:
-        """Operations per kind, leaves and free ops (assume) excluded."""
-        return Counter(n.op for n in self.nodes if n.op not in ("const", "input", "assume"))
+    def op_counts(self, free=None) -> Counter:
+        """Operations per kind, leaves and free ops (assume; nodes for which free(node) holds)
+        excluded."""
+        return Counter(n.op for n in self.nodes if n.op not in ("const", "input", "assume")
+                       and not (free is not None and free(n)))
 
-    def op_summary(self) -> str:
+    def op_summary(self, free=None) -> str:
         """One readable line: total and per-operation counts."""
-        counts = self.op_counts()
+        counts = self.op_counts(free)
         total = sum(counts.values())
         parts = ", ".join(f"{op} {counts[op]}" for op in OPS if counts.get(op))
         return f"{total} ops ({parts})" if total else "0 ops"

@@ -13,7 +13,9 @@ Rules that keep both worlds identical:
 * logic with :func:`logical_and` / :func:`logical_or` / :func:`logical_not` (``~True`` is -2 in
   Python);
 * :func:`assume` states a bound that holds mathematically but that interval arithmetic cannot prove
-  (normalised vectors): the fixed-point path saturates there, the float paths ignore it.
+  (normalised vectors): the fixed-point path saturates there, the float paths ignore it;
+* :func:`bound` is a clamp that only gives the range analysis finite bounds: the reference and
+  the fixed-point path clamp, binary32 does not (nothing is emitted).
 """
 from __future__ import annotations
 
@@ -214,7 +216,7 @@ def fmax(a, b):
 
 
 def clamp(x, lo, hi):
-    """Limit x to [lo, hi]; NaN becomes hi (documented and identical in every number system)."""
+    """Limit x to [lo, hi]; NaN becomes lo (fmax gives lo; identical in every number system)."""
     return fmin(fmax(x, lo), hi)
 
 
@@ -235,6 +237,34 @@ def select(cond, a, b):
     ref = a if isinstance(a, Sym) else b
     g = ref.g
     return Sym(g, g.add("select", [cond.n, ref._lift(a), ref._lift(b)], loc=_loc()))
+
+
+def bound(x, lo: float, hi: float):
+    """clamp(x, lo, hi) in the float64 reference and in fixed point (the same min/max nodes and
+    fixed-point code as :func:`clamp`, marked ``bound``); the identity in binary32, where it
+    costs nothing.
+
+    For a clamp that exists only so that interval arithmetic sees finite bounds: x must lie in
+    [lo, hi] (and not be NaN) for every sample whose result is used, in float64 and binary32,
+    e.g. a convex combination of values already within the bounds.  binary32 then differs from
+    the reference only where the clamp is active, so a bound that becomes active shows up as a
+    binary32 deviation (codegen/tests/test_bound.py counts activations on the test data).  A
+    clamp that acts on reachable values, or keeps NaN or inf out of binary32, stays ``clamp``."""
+    if isinstance(lo, Sym) or isinstance(hi, Sym):
+        raise TypeError("bound: lo and hi must be numbers (use clamp for traced limits)")
+    if lo > hi:
+        raise ValueError("bound: lo > hi")
+    if isinstance(x, Sym):
+        m = x._op("max", x, lo, attrs=("bound",))
+        return m._op("min", m, hi, attrs=("bound",))
+    if _BOUND_HOOK is not None:
+        _BOUND_HOOK(x, lo, hi)
+    return clamp(x, lo, hi)
+
+
+#: called as hook(x, lo, hi) by every reference (float) evaluation of :func:`bound`; tests set
+#: it to count activations (None: nothing is called)
+_BOUND_HOOK = None
 
 
 def assume(x, lo: float, hi: float):

@@ -50,9 +50,9 @@ from kinefuse.codegen.estimators.common import (ACC_MAX, ACC_NORM_MIN_SQ, DT_MAX
                                                 INITIALISED, MAG_MAX, REJECTED)
 from kinefuse.codegen.ir import BOOL
 from kinefuse.codegen.linalg import Quat, Vec3, vselect
-from kinefuse.codegen.scalar import (all_of, any_of, assume, clamp, fabs, fmax, fmin, inc_if,
-                                     logical_and, logical_not, logical_or, rnorm, rsqrt, select,
-                                     sqrt, when)
+from kinefuse.codegen.scalar import (all_of, any_of, assume, bound, clamp, fabs, fmax, fmin,
+                                     inc_if, logical_and, logical_not, logical_or, rnorm, rsqrt,
+                                     select, sqrt, when)
 
 DEG = math.pi / 180.0
 T_SAT = 1.0e4              # s; timers saturate here
@@ -77,8 +77,8 @@ def _strict_within(v, limit):
     return all_of(*(fabs(c) < limit for c in v))
 
 
-def _clamp3(v, lo, hi):
-    return Vec3(*(clamp(c, lo, hi) for c in v))
+def _clamp3(v, lo, hi, op=clamp):   # op=bound: a clamp for the range analysis only
+    return Vec3(*(op(c, lo, hi) for c in v))
 
 
 def _renorm(q: Quat) -> Quat:
@@ -99,9 +99,9 @@ def _fld(n, d):
 
 
 def _unfld(name, f):
-    """State entries of a field record; magnitude and direction kept within their ranges."""
-    return {f"{name}_n": clamp(f[0], 0.0, N_MAX),
-            f"{name}_d": (clamp(f[1], -1.0, 1.0), clamp(f[2], -1.0, 1.0))}
+    """State entries of a field record (bound: mixes of readings within the ranges)."""
+    return {f"{name}_n": bound(f[0], 0.0, N_MAX),
+            f"{name}_d": (bound(f[1], -1.0, 1.0), bound(f[2], -1.0, 1.0))}
 
 
 class Flagship(Estimator):
@@ -351,7 +351,7 @@ class Flagship(Estimator):
         # direction (a mean), translation makes it oscillate; only the latter must lengthen
         # the time constant, or a large error would slow its own correction
         k_vel = fmin(dt / p.tau_vel, 1.0)
-        vel_mean_new = _clamp3(vel_mean + (vel_p - vel_mean) * k_vel, -V_MAX, V_MAX)
+        vel_mean_new = _clamp3(vel_mean + (vel_p - vel_mean) * k_vel, -V_MAX, V_MAX, bound)
         vel_dev = vel_p - vel_mean_new
         vel_ms_new = clamp(vel_ms + (vel_dev.norm_sq() * (1.0 / 3.0) - vel_ms) * k_vel,
                            0.0, 4.0 * V_MAX * V_MAX)
@@ -371,7 +371,7 @@ class Flagship(Estimator):
         kv = fmin(2.0 * dt * inv_tau * s4, 1.0)          # dt sqrt(2) wn
         kx = fmin(kv * s4 * inv_tau, 1.0)                # dt wn^2
         lp_x_new = _clamp3(lp_x + vel_p * kx, -LP_MAX, LP_MAX)
-        lp_v_new = _clamp3(vel_p * (1.0 - kv), -V_MAX, V_MAX)
+        lp_v_new = _clamp3(vel_p * (1.0 - kv), -V_MAX, V_MAX, bound)   # |.| <= |vel_p|
         g_e = Vec3(*(assume(c, -LP_MAX * 1.7321, LP_MAX * 1.7321)
                      for c in q_a.rotate(lp_x_new)))
         gh, _ = g_e.normalized(1e-6)

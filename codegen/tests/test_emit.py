@@ -141,4 +141,8 @@ def test_op_count_table_lists_every_filter():
     for name in FILTERS:
         for system in estimators.get(name).systems:
             assert f"| {name} | {system} |" in table
-        assert lowered(name, "f32").op_summary() == graph_of(name).op_summary()
+        # q counts every graph operation; f32 leaves out what it emits nothing for (bound)
+        if "q" in estimators.get(name).systems:
+            assert lowered(name, "q").op_summary() == graph_of(name).op_summary()
+        assert lowered(name, "f32").op_summary() == graph_of(name).op_summary(
+            lambda n: "bound" in n.attrs)
