@@ -12,8 +12,9 @@ sensor -> earth; the earth frame the unit states: ENU = yaw about Up, counter-cl
 East; NED = yaw about Down, clockwise from North), battery and status from KF_UNIT_STATUS.
 The view only listens unless --start is given: then it sends MAV_CMD_KF_STREAM start (and
 --rate's SET_MESSAGE_INTERVAL) to every unit first, checks the COMMAND_ACKs (a refusal is a
-one-line error, exit status 2; a unit with a signing key needs --key/--key-file) and sends stop
-at the end.  Ctrl-C or --seconds ends it; with
+one-line error, exit status 2; a unit with a signing key needs --key/--key-file; a unit heard
+that counted the signed start as a signature failure -- after a power cut, until the host's clock
+passes its stored floor, at most 60 s -- is told so) and sends stop at the end.  Ctrl-C or --seconds ends it; with
 stdout not a terminal it prints plain lines every --interval seconds instead of a table.
 """
 from __future__ import annotations
@@ -299,10 +300,17 @@ def start_streaming(sessions, rate_hz: float | None) -> list[str]:
         + [(C.MAV_CMD_KF_STREAM, (1.0,))]
     for s in sessions:
         for cmd, params in steps:
-            acks = C.broadcast_command(s, cmd, *params)
+            refused: dict = {}
+            acks = C.broadcast_command(s, cmd, *params, refused=refused)
             for sysid, r in sorted(acks.items()):
                 if r != 0:
                     raise C.CommandError(f"{s.conn.url}: {C.refusal_text(sysid, cmd, r, s.encoder.key is not None)}", r)
+            if refused:     # a unit heard but not answering counted the signed command as refused
+                from kinefuse.host.link.signing import refused_text
+                sysid, n = sorted(refused.items())[0]
+                more = f" (and unit(s) {', '.join(map(str, sorted(refused)[1:]))} too)" if len(refused) > 1 else ""
+                raise C.CommandError(f"{s.conn.url}: no COMMAND_ACK for {C.command_name(cmd)} from unit "
+                                     f"{sysid}{more}: {refused_text(n)}", refused=n)
             if not acks:
                 text = f"{s.conn.url}: no COMMAND_ACK for {C.command_name(cmd)}"
                 if s.encoder.key is not None:    # a unit with another key drops signed frames silently

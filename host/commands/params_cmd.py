@@ -7,7 +7,8 @@
     kinefuse params --port /dev/ttyUSB0 --key-file unit.key --set KF_RATE_HZ=500   # signed writes
 
 A unit with a signing key (``kinefuse signing``) refuses unsigned writes: a refused write is a
-one-line error with exit status 2.  Reading needs no key.
+one-line error with exit status 2.  Reading needs no key: reads go unsigned even with --key
+(a keyed unit answers them, also right after a power cut); only writes are signed.
 """
 from __future__ import annotations
 
@@ -143,11 +144,8 @@ def run(args) -> int:
                     except ParamError as exc:
                         raise ParamError(f"--set {name}: {exc}") from None
                 except ParamError as exc:
-                    # no answer to a signed read: the unit drops frames signed with another key
-                    hint = ("; a unit drops frames signed with a key other than its own: is it "
-                            "the right key?" if exc.code is None and key is not None
-                            and exc.refused is None else "")
-                    raise ParamError(f"unit {sysid}: {exc} (nothing written{hint})", exc.code) from None
+                    # reads go unsigned (params.ParamClient): no answer is not a key matter
+                    raise ParamError(f"unit {sysid}: {exc} (nothing written)", exc.code) from None
             result["set"] = {}
             for name, value in sets:
                 try:

@@ -8,7 +8,8 @@ it) or that a value is out of range (e.g. a KF_RAW_SAMPLE rate above KF_RATE_HZ'
 error names both when the command went unsigned, the range when it was signed.  A signed
 command left unanswered because the unit refused its signature (counted in its SYS_STATUS: after
 a power cut, until the host's clock passes the unit's stored signing floor, at most 60 s; or
-another key) is told as such, not only as a timeout.
+another key) is told as such, not only as a timeout; broadcast_command tells it per unit heard
+that did not answer (``refused``).
 """
 from __future__ import annotations
 
@@ -121,14 +122,23 @@ def send_command(session, sysid: int, command: int, *params: float, timeout: flo
 
 
 def broadcast_command(session, command: int, *params: float, timeout: float = 1.0, retries: int = 2,
-                      settle: float = 0.2, on_wait=None) -> dict:
+                      settle: float = 0.2, on_wait=None, refused: dict | None = None) -> dict:
     """Send to every unit on the connection (target 0); {sysid: MAV_RESULT} of the ACKs seen
     (empty: nobody answered).  After the first ACK, others are gathered for ``settle`` s.
-    ``on_wait`` is called while waiting (the recorder keeps writing what arrives)."""
+    ``on_wait`` is called while waiting (the recorder keeps writing what arrives).
+
+    ``refused`` (a dict, filled in): for a signed command, {sysid: n} of the units heard on the
+    connection (SYS_STATUS) that did not answer and counted n more signature failures meanwhile
+    (signing.unanswered_signed: e.g. after a power cut) -- so the caller tells a refused
+    signature, not only "nobody answered"."""
     acks: dict = {}
     drop_stale_acks(session, command)
-    for attempt in range(retries):
-        session.send("COMMAND_LONG", **_pack(command, params, 0, attempt))
+    sent_ns = time.monotonic_ns()
+    sent = {"n": 0}
+
+    def gather(only=None):
+        session.send("COMMAND_LONG", **_pack(command, params, 0, sent["n"]))
+        sent["n"] += 1
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             f = session.wait_for(_is_ack(command, None), timeout=min(0.05, max(0.0, deadline - time.monotonic())))
@@ -136,7 +146,23 @@ def broadcast_command(session, command: int, *params: float, timeout: float = 1.
                 on_wait()
             if f is not None:
                 acks.setdefault(f.sysid, int(f.msg.result))
-                deadline = min(deadline, time.monotonic() + settle)
+                if only is None:
+                    deadline = min(deadline, time.monotonic() + settle)
+                elif f.sysid == only:
+                    return f
+        return None
+
+    for _ in range(retries):
+        gather()
         if acks:
-            return acks
+            break
+    if refused is not None and session.encoder.key is not None:
+        from kinefuse.host.link.signing import MSG_SYS_STATUS, unanswered_signed
+        session.poll(0)
+        heard = sorted({f.sysid for _, f in session.frames if f.msgid == MSG_SYS_STATUS} - set(acks))
+        for sysid in heard:
+            # one more broadcast when no status from before tells the count (a fresh connection)
+            f, n = unanswered_signed(session, sysid, sent_ns, lambda: gather(only=sysid))
+            if f is None and n:
+                refused[sysid] = n
     return acks

@@ -11,6 +11,9 @@ signalling NaN (0x7F800001-0x7FBFFFFF, 0xFF800001-0xFFBFFFFF) would come back qu
 Protocol (mavlink.io parameter service): PARAM_REQUEST_LIST streams every PARAM_VALUE; lost ones
 are re-requested by index with PARAM_REQUEST_READ; PARAM_SET is answered with PARAM_VALUE (the new
 value, or the unchanged one plus PARAM_ERROR when rejected) and re-sent on timeout.
+Reads (PARAM_REQUEST_LIST, PARAM_REQUEST_READ) go unsigned even when the session has a key: a
+keyed unit answers them (only writes need the signature), also right after a power cut and
+whatever key the host has.  Writes (PARAM_SET) are signed with the session's key.
 Signed requests that get no answer: when the unit counted them as signature failures (its
 SYS_STATUS, :func:`kinefuse.host.link.signing.unanswered_signed`; e.g. after a power cut, until
 the host's clock passes the unit's stored signing floor) the error says so (``refused``).
@@ -102,6 +105,15 @@ class ParamClient:
     def _from_unit(self, f) -> bool:
         return f.sysid == self.sys and (self.comp == 0 or f.compid == self.comp)
 
+    def _read(self, message: str, **fields) -> None:
+        """Send a read request unsigned (a keyed unit answers those; a signed one it refuses
+        after a power cut until the host's clock passes its stored floor, or with another key)."""
+        enc = getattr(self.s, "encoder", None)
+        if enc is not None and enc.key is not None:
+            self.s.send(message, signed=False, target_system=self.sys, target_component=self.comp, **fields)
+        else:
+            self.s.send(message, target_system=self.sys, target_component=self.comp, **fields)
+
     def _unanswered(self, text: str, sent_ns: int, again=None):
         """The ParamError for signed requests sent since ``sent_ns`` that got no answer: when the
         unit counted them as signature failures it says so (refused_text).  ``again``: one more
@@ -117,8 +129,7 @@ class ParamClient:
 
     def fetch_all(self, timeout: float = 5.0) -> dict:
         """Every parameter of the unit: {name: value} (ints decoded bytewise)."""
-        sent_ns = time.monotonic_ns()
-        self.s.send("PARAM_REQUEST_LIST", target_system=self.sys, target_component=self.comp)
+        self._read("PARAM_REQUEST_LIST")
         values: dict[int, tuple[str, object]] = {}
         count = None
         deadline = time.monotonic() + timeout
@@ -140,17 +151,14 @@ class ParamClient:
                 continue
             if count is None:
                 if time.monotonic() - quiet_since > self.timeout * self.retries:
-                    # no retry here: a signed list that the unit refused is told as such
-                    err = self._unanswered(f"no PARAM_VALUE from system {self.sys}", sent_ns)
-                    if err.refused is None:
-                        err = ParamError(f"{err} (is the unit connected and powered?)")
-                    raise err
-                self.s.send("PARAM_REQUEST_LIST", target_system=self.sys, target_component=self.comp)
+                    # the list went unsigned: no refused signature to tell
+                    raise ParamError(f"no PARAM_VALUE from system {self.sys} (is the unit connected "
+                                     f"and powered?)")
+                self._read("PARAM_REQUEST_LIST")
                 continue
             for idx in range(count):  # re-request what was lost
                 if idx not in values:
-                    self.s.send("PARAM_REQUEST_READ", target_system=self.sys, target_component=self.comp,
-                                param_id="", param_index=idx)
+                    self._read("PARAM_REQUEST_READ", param_id="", param_index=idx)
         if count is None or len(values) < count:
             missing = "?" if count is None else count - len(values)
             raise ParamError(f"parameter list incomplete: {missing} of {count} parameters missing")
@@ -158,20 +166,16 @@ class ParamClient:
 
     def get(self, name: str):
         def ask():
-            self.s.send("PARAM_REQUEST_READ", target_system=self.sys, target_component=self.comp,
-                        param_id=name, param_index=-1)
+            self._read("PARAM_REQUEST_READ", param_id=name, param_index=-1)
             return self.s.wait_for(lambda f: f.msgid in (22, 345) and self._from_unit(f)
                                    and f.msg.param_id == name, timeout=self.timeout)
-        sent_ns = time.monotonic_ns()
         f = None
         for _ in range(self.retries):
             f = ask()
             if f is not None:
                 break
-        if f is None:
-            f = self._unanswered(f"no answer for parameter {name} from system {self.sys}", sent_ns, ask)
-            if isinstance(f, ParamError):
-                raise f
+        if f is None:       # an unsigned read: not a refused signature
+            raise ParamError(f"no answer for parameter {name} from system {self.sys}")
         if f.msgid == 345:
             raise ParamError(f"{name}: {_error_text(f.msg.error)}", int(f.msg.error))
         self.types[name] = f.msg.param_type

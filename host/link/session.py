@@ -33,8 +33,19 @@ class Session:
         self.msg_counts: dict = {}
 
     # -- sending -------------------------------------------------------------------------------
-    def send(self, message, **fields) -> bytes:
-        frame = self.encoder.encode(message, **fields)
+    def send(self, message, signed: bool = True, **fields) -> bytes:
+        """Encode and send one frame; signed with the session's key (``encoder.key``) when it
+        has one, unless ``signed`` is False (e.g. reading parameters: a keyed unit answers
+        unsigned reads, and after a power cut it refuses signed frames for up to 60 s).  An
+        unsigned frame takes no signing timestamp: the signed ones still strictly increase."""
+        if signed or self.encoder.key is None:
+            frame = self.encoder.encode(message, **fields)
+        else:
+            key, self.encoder.key = self.encoder.key, None
+            try:
+                frame = self.encoder.encode(message, **fields)
+            finally:
+                self.encoder.key = key
         self.send_bytes(frame)
         return frame
 
