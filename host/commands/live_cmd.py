@@ -354,6 +354,8 @@ def run(args) -> int:
             for w in start_streaming(sessions, args.rate):
                 print(f"kinefuse: warning: {w}", file=sys.stderr)
     except BaseException:
+        if args.start:      # a unit on an earlier connection may already be streaming
+            stop_streaming(sessions)
         for s in sessions:
             s.close()
         raise

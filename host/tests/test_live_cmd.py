@@ -167,3 +167,22 @@ def test_a_late_replay_is_not_loss_or_a_reset():
     u.raw(SimpleNamespace(time_boot_us=400_000, sample_counter=0))
     u.settle_counters(final=True)
     assert u.resets == 1 and len(u.window) == 1
+
+
+def test_a_refused_start_stops_the_units_already_started(run, monkeypatch):
+    """``live --start`` with two connections: the first unit started streaming, the second
+    refused; the error left the first one streaming (its sessions were only closed)."""
+    from kinefuse.host.commands import live_cmd
+    from kinefuse.host.link import command as C
+    started, stopped = [], []
+
+    def start(sessions, rate_hz):
+        started.append(sessions[0].conn.url)      # the first one answered, the second refused
+        raise C.CommandError(f"{sessions[1].conn.url}: unit 2 refused MAV_CMD_KF_STREAM", 4)
+
+    monkeypatch.setattr(live_cmd, "start_streaming", start)
+    monkeypatch.setattr(live_cmd, "stop_streaming", lambda sessions: stopped.extend(s.conn.url for s in sessions))
+    code, out, err = run("live", "--port", "fake:rate=200", "--port", "fake:unit=2,rate=200", "--start",
+                         "--seconds", "1")
+    assert code == 2 and "refused" in err and "Traceback" not in err
+    assert started == ["fake:rate=200"] and "fake:rate=200" in stopped
