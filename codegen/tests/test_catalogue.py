@@ -16,7 +16,6 @@ from kinefuse.codegen.linalg import Quat, Vec3
 RNG = np.random.default_rng(20240607)
 CATALOGUE = ("vac", "vak", "guo", "triad", "ecompass", "angle-kf", "angle-ekf", "angle-ukf",
              "angle-srukf")
-IMU_FILTERS = ("vac", "vak", "guo", "triad", "ecompass")
 
 
 def rot(q) -> np.ndarray:
