@@ -22,6 +22,18 @@ def mul(p: np.ndarray, q: np.ndarray) -> np.ndarray:
                      pw * qz + px * qy - py * qx + pz * qw], axis=-1)
 
 
+def chain(q0, dq: np.ndarray) -> np.ndarray:
+    """q0 ⊗ dq[0], q0 ⊗ dq[0] ⊗ dq[1], … (all partial products, (N,4)): integrating increments.
+    A sequential loop in plain floats (each product needs the previous one)."""
+    w, x, y, z = (float(v) for v in q0)
+    out = np.empty((len(dq), 4))
+    for k, (b0, b1, b2, b3) in enumerate(np.asarray(dq, dtype=float).tolist()):
+        w, x, y, z = (w * b0 - x * b1 - y * b2 - z * b3, w * b1 + x * b0 + y * b3 - z * b2,
+                      w * b2 - x * b3 + y * b0 + z * b1, w * b3 + x * b2 - y * b1 + z * b0)
+        out[k] = w, x, y, z
+    return out
+
+
 def conj(q: np.ndarray) -> np.ndarray:
     q = np.asarray(q, dtype=float)
     return q * np.array([1.0, -1.0, -1.0, -1.0])

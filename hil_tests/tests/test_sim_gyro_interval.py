@@ -22,17 +22,6 @@ IDEAL = {"preset": "ideal"}
 EXACT_RAD = 1e-9
 
 
-def _chain(q0, dq):
-    """q0 ⊗ dq[0] ⊗ dq[1] ⊗ … (all partial products), in plain floats."""
-    w, x, y, z = (float(v) for v in q0)
-    out = np.empty((len(dq), 4))
-    for k, (b0, b1, b2, b3) in enumerate(dq.tolist()):
-        w, x, y, z = (w * b0 - x * b1 - y * b2 - z * b3, w * b1 + x * b0 + y * b3 - z * b2,
-                      w * b2 - x * b3 + y * b0 + z * b1, w * b3 + x * b2 - y * b1 + z * b0)
-        out[k] = w, x, y, z
-    return out
-
-
 def _strapdown_error(q_true, gyr, dt, coning=False):
     """Angle (rad) between q_true[k] and q_true[0] ⊗ Π exp(φ_i/2), i = 1..k, φ_i = ω_i·dt_i: the
     filters' rule (each sample's rate over the step that ends at it), without their
@@ -41,7 +30,7 @@ def _strapdown_error(q_true, gyr, dt, coning=False):
     phi = theta[1:].copy()
     if coning:
         phi += np.cross(theta[:-1], theta[1:]) / 12.0
-    q = _chain(q_true[0], Q.from_rotvec(phi))
+    q = Q.chain(q_true[0], Q.from_rotvec(phi))
     return Q.angle(Q.mul(Q.conj(q_true[1:]), q))
 
 
