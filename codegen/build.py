@@ -134,7 +134,8 @@ def _load(name: str, path: Path):
 
 def build_filter(name: str, system: str, gen_dir: Path = GENERATED_DIR):
     """Build the committed generated C of one filter; returns (ffi, lib)."""
-    P = f"{name.replace('-', '_')}_{system}"
+    from kinefuse.codegen.estimator import generated_stem
+    P = generated_stem(name, system)
     header = gen_dir / f"{P}.h"
     if not header.exists():
         raise FileNotFoundError(f"{header} does not exist; run `kinefuse codegen`")

@@ -9,7 +9,7 @@ import inspect
 import re
 import textwrap
 
-from kinefuse.codegen.estimator import Estimator, EstimatorError, Interface, Var
+from kinefuse.codegen.estimator import Estimator, EstimatorError, Interface, Var, generated_stem
 from kinefuse.codegen.fixed import FixedLowering
 from kinefuse.codegen.float32 import Float32Lowering
 from kinefuse.codegen.ir import BOOL, INT, REAL, Graph, Node
@@ -140,8 +140,7 @@ class Lowered:
     # -- naming ---------------------------------------------------------------------------
     @property
     def prefix(self) -> str:
-        # registry names may contain '-' (e.g. angle-kf); C identifiers and module names may not
-        return f"{self.est.name.replace('-', '_')}_{self.system}"
+        return generated_stem(self.est.name, self.system)
 
     @property
     def input_struct(self) -> str:

@@ -251,6 +251,13 @@ def _flatten(est_name: str, what: str, decl: tuple[Var, ...], got: dict) -> dict
     return out
 
 
+def generated_stem(name: str, system: str) -> str:
+    """File stem and C identifier prefix of a filter's generated code in one number system
+    (registry names may contain '-', C identifiers and module names may not): angle-kf, q ->
+    angle_kf_q."""
+    return f"{name.replace('-', '_')}_{system}"
+
+
 def trace(est: Estimator) -> Graph:
     """Record one step of `est` as a raw (unoptimised) graph."""
     from kinefuse.codegen.emit import check_declaration   # emit imports this module

@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from kinefuse.codegen import estimators
-from kinefuse.codegen.estimator import run_reference
+from kinefuse.codegen.estimator import generated_stem, run_reference
 from kinefuse.codegen.runtime import q as qrt
 
 IMPLS = ("ref", "f32", "q", "f32-model", "q-model")
@@ -61,7 +61,7 @@ class ModelInfo:
         if mod is None:
             try:
                 mod = current_module("kinefuse.firmware.generated.models."
-                                     f"{name.replace('-', '_')}_{system}")
+                                     + generated_stem(name, system))
             except ModuleNotFoundError as exc:
                 raise RuntimeError(f"no generated model for {name} ({system}); run "
                                    "`kinefuse codegen`") from exc
@@ -144,7 +144,7 @@ class CRunner(ModelInfo):
             ffi_lib = build_filter(name, system)
             input_spec = estimators.get(name).inputs.name
         self.ffi, self.lib = ffi_lib
-        self.P = f"{name.replace('-', '_')}_{system}"
+        self.P = generated_stem(name, system)
         self.in_type = f"kf_{input_spec}_input_{system}"
 
     def _dtype(self, ctype: str, kind: str) -> np.dtype:
@@ -211,7 +211,7 @@ _RUNNERS: dict[tuple[str, str, str], ModelInfo] = {}
 def _generated_digest(name: str, system: str) -> str:
     """SHA-256 of the generated files a runner is made of: model, C source, every header."""
     from kinefuse.codegen.generate import GENERATED_DIR
-    P = f"{name.replace('-', '_')}_{system}"
+    P = generated_stem(name, system)
     h = hashlib.sha256()
     for path in [GENERATED_DIR / "models" / f"{P}.py", GENERATED_DIR / f"{P}.c",
                  *sorted(GENERATED_DIR.glob("*.h"))]:

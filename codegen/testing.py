@@ -33,6 +33,7 @@ def build_adhoc(est, workdir, systems=("f32", "q")):
     from pathlib import Path
 
     from kinefuse.codegen.build import build
+    from kinefuse.codegen.estimator import generated_stem
     from kinefuse.codegen.generate import render_estimator
     from kinefuse.codegen.runner import CRunner, ModelRunner
 
@@ -43,7 +44,7 @@ def build_adhoc(est, workdir, systems=("f32", "q")):
         (d / rel).write_text(text)
     out = {}
     for system in systems:
-        P = f"{est.name.replace('-', '_')}_{system}"       # Lowered.prefix
+        P = generated_stem(est.name, system)
         spec_h = d / f"kf_{est.inputs.name}_{system}.h"
         mod = types.ModuleType(f"adhoc_{P}")
         exec(compile(files[f"models/{P}.py"], f"<model {P}>", "exec"), mod.__dict__)

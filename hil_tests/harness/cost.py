@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from kinefuse.codegen import estimators
+from kinefuse.codegen.estimator import generated_stem
 from kinefuse.codegen.generate import GENERATED_DIR
 from kinefuse.codegen.runner import ModelInfo
 from kinefuse.host.errors import KinefuseError
@@ -110,7 +111,7 @@ def _table_sources(name: str, system: str) -> tuple[Path, Path, str, int]:
 
 
 def _snippets(name: str, system: str):
-    P = f"{name.replace('-', '_')}_{system}"
+    P = generated_stem(name, system)
     tag, arr = _table_names(name, system)
     # RAM counted: the state (which keeps its own copy of the parameters) and the output; the
     # parameters handed to init are a local, as x-io Fusion's settings are in its measurement
@@ -131,7 +132,7 @@ def measure_filter(name: str, system: str, target: str, *, k: int = 1000,
     """Instructions per update (exact), cycle estimate, flash/RAM added (bytes)."""
     from kinefuse.hil_tests.qemu.cost import measure_call_cost
 
-    src = GENERATED_DIR / f"{name.replace('-', '_')}_{system}.c"
+    src = GENERATED_DIR / f"{generated_stem(name, system)}.c"
     if not src.is_file():
         raise KinefuseError(f"{src} does not exist")
     table_c, table_dir, _ctype, n = _table_sources(name, system)

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from kinefuse.codegen import estimators
+from kinefuse.codegen.estimator import generated_stem
 from kinefuse.codegen.generate import GENERATED_DIR
 from kinefuse.codegen.runner import Encoded, ModelInfo
 from kinefuse.host.errors import KinefuseError
@@ -101,7 +102,7 @@ def build_filter_program(name: str, system: str, target: str, params: dict[str, 
     """
     est = estimators.get(name)
     info = ModelInfo(name, system)
-    P = f"{name.replace('-', '_')}_{system}"     # C prefix and file stem: angle-kf -> angle_kf_f32
+    P = generated_stem(name, system)
     src = GENERATED_DIR / f"{P}.c"
     if not src.is_file():
         raise KinefuseError(f"{src} does not exist (filter {name} has no {system} build)")
@@ -140,7 +141,7 @@ _CACHE: dict[tuple, FilterProgram] = {}
 def _sources_digest(name: str, system: str) -> str:
     """SHA-256 of what the program compiles: the filter's generated C and every header it may
     include (its own, the shared input record, kf_fixed.h)."""
-    P = f"{name.replace('-', '_')}_{system}"
+    P = generated_stem(name, system)
     h = hashlib.sha256()
     for path in [GENERATED_DIR / f"{P}.c", *sorted(GENERATED_DIR.glob("*.h"))]:
         h.update(path.name.encode() + b"\0")

@@ -75,7 +75,8 @@ def measure_ours(name: str, system: str, target: str, k: int, mix: bool,
     table_c, table_dir, _ct, _n = hc._table_sources(name, system)
     prelude, setup, call, finish, baseline = hc._snippets(name, system)
     from kinefuse.codegen.generate import GENERATED_DIR
-    stem = f"{name.replace('-', '_')}_{system}"
+    from kinefuse.codegen.estimator import generated_stem
+    stem = generated_stem(name, system)
     total, origin = qc.size_delta_by_origin([GENERATED_DIR / f"{stem}.c", table_c], setup, call,
                                             target, opt="-Os", prelude=prelude, finish=finish,
                                             baseline_code=baseline,

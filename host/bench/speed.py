@@ -236,7 +236,8 @@ def instructions_per_sample(name: str, inputs: dict, prm: dict, trial) -> dict[s
     from kinefuse.hil_tests.qemu.competitors import _fusion_sources, fetch_sdist
     if shutil.which("valgrind") is None:
         raise KinefuseError("--instructions needs valgrind (apt-get install valgrind)")
-    P = f"{name.replace('-', '_')}_f32"
+    from kinefuse.codegen.estimator import generated_stem
+    P = generated_stem(name, "f32")
     header = (GENERATED_DIR / f"{P}.h").read_text()
     in_type = re.search(r"const (kf_\w+_input_f32) \*in", header).group(1)
     fusion_too = trial is not None
