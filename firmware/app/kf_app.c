@@ -92,11 +92,12 @@ int kf_app_poll(kf_app *app)
     /* two-sensor mode: the two sensors' samples in pairs, sensor 1 first, so that a sensor-0
      * sample sees the sensor-1 sample of the same instant (joint angle, leg EKF) even when
      * several of each wait in the FIFOs */
-    int got0 = 0;
+    int got0 = 0, got1 = 0;
     for (int k = 0; k < KF_SENSOR_BATCH; k++) {
         int got = 0;
         if (app->two_sensors && kf_hal_sensor2_read(&raw)) {
             got = 1;
+            got1 = 1;
             if (!app->hil) {
                 take_sensor_sample(app, &raw, 1);
             }
@@ -115,16 +116,27 @@ int kf_app_poll(kf_app *app)
     }
     /* SENSOR_FAULT: kf_hal_sensor_read has no error return, so the one failure the unit can
      * see is a configured sensor that stops delivering (timeout: kf_config_apply_rates).  The
-     * FIFO is read just above, so a late turn of this loop is not taken for a silent sensor.
-     * Watched in HIL mode too: the sensor is still read there. */
+     * FIFOs are read just above, so a late turn of this loop is not taken for a silent sensor.
+     * Sensor 0 is watched in HIL mode too (it is still read there); sensor 1, in two-sensor
+     * mode, only outside it: there HIL_SENSOR id 1 stands in for it, and a board may have
+     * none (a two-sensor unit without a second sensor outside HIL mode is a fault). */
+    uint64_t t_now = kf_app_time(app);
     if (got0) {
-        app->sensor_last_us = kf_app_time(app);
-        app->sensor_fault = 0u;
-    } else if (app->sensor_timeout_us != 0u
-               && kf_app_time(app) - app->sensor_last_us > app->sensor_timeout_us) {
-        app->sensor_fault = 1u;
-        app->sensor_fault_seen = 1u;
+        app->sensor_last_us = t_now;
     }
+    if (got1) {
+        app->sensor2_last_us = t_now;
+    }
+    uint8_t silent = 0u;
+    if (app->sensor_timeout_us != 0u) {
+        silent = (uint8_t)(t_now - app->sensor_last_us > app->sensor_timeout_us);
+        if (app->two_sensors && !app->hil
+                && t_now - app->sensor2_last_us > app->sensor_timeout_us) {
+            silent = 1u;
+        }
+    }
+    app->sensor_fault = silent;
+    app->sensor_fault_seen |= silent;
     /* a parameter list goes out while the queue is at most half full: streams keep priority */
     while (app->list_next >= 0 && kf_tx_pending(&app->tx) < KF_TX_BUFFER_BYTES / 2u) {
         (void)kf_send_param_value(app, app->list_next);

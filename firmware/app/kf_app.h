@@ -149,8 +149,9 @@ typedef struct kf_app {
 
     /* health */
     uint64_t sensor_last_us;       /* device time of sensor 0's last sample (or of its rate setting) */
+    uint64_t sensor2_last_us;      /* sensor 1's (or of the rate setting, or of two-sensor mode's start) */
     uint32_t sensor_timeout_us;    /* SENSOR_FAULT after this long without a sample (0: no sensor) */
-    uint8_t sensor_fault;          /* sensor 0 is silent now */
+    uint8_t sensor_fault;          /* a watched sensor is silent now (kf_app.c) */
     uint8_t sensor_fault_seen;     /* ... or was at some time since the previous 1 Hz status */
     kf_counters cnt;
     kf_rates rates;

@@ -109,7 +109,11 @@ static void reset_two_sensors(kf_app *app)
 {
     float jv[KF_GEN_JOINT_PARAM_COUNT];
     app->cnt.rejected2_base += (uint32_t)app->out2.rejected;
+    uint8_t was_two = app->two_sensors;
     app->two_sensors = (uint8_t)(app->values[KF_P_JOINT_ID].u != 0u);
+    if (app->two_sensors && !was_two) {
+        app->sensor2_last_us = kf_app_time(app);   /* sensor 1's watch starts now */
+    }
     memset(&app->out2, 0, sizeof app->out2);
     app->out2.q[0] = 1.0f;
     memset(&app->jout, 0, sizeof app->jout);
@@ -180,6 +184,7 @@ int kf_config_apply_rates(kf_app *app)
      * came for 4 periods, and never before 100 ms (start-up, FIFO batches); a fault stays until
      * the next sample.  The timeout counts from now: a new rate may take a moment to start. */
     app->sensor_last_us = kf_app_time(app);
+    app->sensor2_last_us = app->sensor_last_us;
     if (granted > 0) {                 /* -1: no sensor (samples over the link): as asked */
         kf_pvalue g;
         uint32_t four = 4000000u / (uint32_t)granted;

@@ -49,7 +49,8 @@ void kf_hal_reboot(void);
 
 /* Set the sensor output data rate; returns the rate the sensor will deliver (Hz), or -1
  * when the board has no sensor (default).  A sensor granted a rate is watched: no sample from
- * kf_hal_sensor_read for 4 periods (at least 100 ms) is KF_UNIT_STATUS SENSOR_FAULT. */
+ * kf_hal_sensor_read for 4 periods (at least 100 ms) is KF_UNIT_STATUS SENSOR_FAULT; so is
+ * the same silence of kf_hal_sensor2_read in two-sensor mode outside HIL mode. */
 int32_t kf_hal_sensor_configure(uint32_t rate_hz);
 
 /* Battery voltage in millivolts; UINT16_MAX when unknown (default). */

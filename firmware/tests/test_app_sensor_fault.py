@@ -135,3 +135,68 @@ def test_host_build_sets_and_clears_sensor_fault():
     after = [fault for t, fault, _ in st if t > last_silent + 2.2]
     assert before and not any(before), st
     assert after and not any(after), st
+
+
+def run2(unit, t_end_us, period_us=1000, sensors=(True, True)):
+    """`run` for a two-sensor unit: each step a sample of sensor 0 and/or sensor 1."""
+    out = []
+    while unit.time_us + period_us <= t_end_us:
+        unit.advance(period_us)
+        for push, on in zip((unit.lib.kft_sensor_push, unit.lib.kft_sensor2_push), sensors):
+            if on:
+                smp = unit.ffi.new("kf_raw_sample *")
+                smp.time_us = unit.time_us
+                smp.acc[2] = 1000
+                assert push(smp)
+        unit.lib.kft_app_poll(unit.app)
+        out += [(unit.time_us, m.status_flags) for m in only(unit.take(), "KF_UNIT_STATUS")]
+    return out
+
+
+def two_sensor_unit(unit):
+    u = sensor_unit(unit)
+    u.set_param("KF_JOINT_ID", 4)
+    assert u.param("KF_JOINT_ID") == 4
+    return u
+
+
+def test_a_silent_second_sensor_sets_sensor_fault(unit):
+    """Two-sensor mode: sensor 1 (kf_hal_sensor2_read) is watched like sensor 0; a silent
+    distal sensor used to leave the flag clear while no joint angle could be formed."""
+    u = two_sensor_unit(unit)
+    st = run2(u, 1_500_000)
+    assert faults(st) == [False]
+    st = run2(u, 3_500_000, sensors=(True, False))   # sensor 1 silent from 1.5 s
+    assert faults(st) == [True, True]
+    st = run2(u, 5_500_000)
+    assert faults(st) == [True, False]               # 4 s: its interval had the silence
+    st = run2(u, 7_500_000, sensors=(False, True))   # and sensor 0 silent, as before
+    assert faults(st) == [True, True]
+
+
+def test_the_second_sensor_is_watched_from_the_start_of_two_sensor_mode(unit):
+    """A unit switched to two-sensor mode gets the timeout to see its second sensor start;
+    a unit without one (outside HIL mode) reports the fault."""
+    u = sensor_unit(unit)
+    run2(u, 1_100_000, sensors=(True, False))        # one sensor, no second: fine
+    u.set_param("KF_JOINT_ID", 4)
+    st = run2(u, 1_190_000, sensors=(True, False))   # 90 ms into two-sensor mode
+    st += run2(u, 2_100_000)
+    assert faults(st) == [False]
+    st = run2(u, 4_100_000, sensors=(True, False))
+    assert faults(st) == [True, True]
+
+
+def test_hil_mode_does_not_watch_the_second_sensor(unit):
+    """In HIL mode HIL_SENSOR id 1 stands in for sensor 1 (the board may have none); sensor 0
+    is still read and watched."""
+    u = two_sensor_unit(unit)
+    run2(u, 1_100_000)
+    u.send("HIL_SENSOR", time_usec=1_100_000, xacc=0.0, yacc=0.0, zacc=9.81, xgyro=0.0,
+           ygyro=0.0, zgyro=0.0, xmag=0.2, ymag=0.0, zmag=-0.4, abs_pressure=0.0,
+           diff_pressure=0.0, pressure_alt=0.0, temperature=0.0, fields_updated=0x1FF, id=0)
+    u.take()
+    st = run2(u, 3_100_000, sensors=(True, False))
+    assert faults(st) == [False, False]
+    st = run2(u, 5_100_000, sensors=(False, False))
+    assert faults(st) == [True, True]

@@ -23,8 +23,12 @@ static uint8_t g_storage[T_STORAGE];
 static uint32_t g_storage_size = 4096u;
 static int64_t g_budget = -1;           /* bytes that may still be written (-1: unlimited) */
 static uint32_t g_written;
-static kf_raw_sample g_sensor[T_SENSOR];
-static uint32_t g_sensor_head, g_sensor_tail;
+/* the sensors' FIFOs: [0] kf_hal_sensor_read, [1] kf_hal_sensor2_read */
+typedef struct {
+    kf_raw_sample s[T_SENSOR];
+    uint32_t head, tail;
+} sensor_fifo;
+static sensor_fifo g_sensor[2];
 static int g_reboots;
 static int32_t g_grant = -1;            /* kf_hal_sensor_configure: -1 no sensor, 0 as asked, else this */
 static uint32_t g_asked;                /* the rate last asked for */
@@ -59,14 +63,24 @@ int32_t kf_hal_uart_write(const uint8_t *buf, int32_t len)
     return (int32_t)n;
 }
 
-int kf_hal_sensor_read(kf_raw_sample *out)
+static int fifo_pop(sensor_fifo *f, kf_raw_sample *out)
 {
-    if (g_sensor_tail == g_sensor_head) {
+    if (f->tail == f->head) {
         return 0;
     }
-    *out = g_sensor[g_sensor_tail % T_SENSOR];
-    g_sensor_tail++;
+    *out = f->s[f->tail % T_SENSOR];
+    f->tail++;
     return 1;
+}
+
+int kf_hal_sensor_read(kf_raw_sample *out)
+{
+    return fifo_pop(&g_sensor[0], out);
+}
+
+int kf_hal_sensor2_read(kf_raw_sample *out)
+{
+    return fifo_pop(&g_sensor[1], out);
 }
 
 uint32_t kf_hal_storage_size(void)
@@ -130,7 +144,7 @@ void kft_reset(uint32_t storage_size)
     memset(g_storage, 0xFF, sizeof g_storage);
     g_budget = -1;
     g_written = 0u;
-    g_sensor_head = g_sensor_tail = 0u;
+    g_sensor[0].head = g_sensor[0].tail = g_sensor[1].head = g_sensor[1].tail = 0u;
     g_reboots = 0;
     g_grant = -1;
     g_asked = 0u;
@@ -186,14 +200,24 @@ uint8_t *kft_storage(void)
     return g_storage;
 }
 
-int kft_sensor_push(const kf_raw_sample *s)
+static int fifo_push(sensor_fifo *f, const kf_raw_sample *s)
 {
-    if (g_sensor_head - g_sensor_tail >= T_SENSOR) {
+    if (f->head - f->tail >= T_SENSOR) {
         return 0;
     }
-    g_sensor[g_sensor_head % T_SENSOR] = *s;
-    g_sensor_head++;
+    f->s[f->head % T_SENSOR] = *s;
+    f->head++;
     return 1;
+}
+
+int kft_sensor_push(const kf_raw_sample *s)
+{
+    return fifo_push(&g_sensor[0], s);
+}
+
+int kft_sensor2_push(const kf_raw_sample *s)
+{
+    return fifo_push(&g_sensor[1], s);
 }
 
 int kft_reboots(void)

@@ -18,6 +18,7 @@ void kft_budget(int64_t bytes);
 uint32_t kft_written(void);
 uint8_t *kft_storage(void);
 int kft_sensor_push(const kf_raw_sample *s);
+int kft_sensor2_push(const kf_raw_sample *s);
 int kft_reboots(void);
 void kft_sensor_grant(int32_t hz);
 uint32_t kft_sensor_asked(void);
