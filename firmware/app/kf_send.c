@@ -140,8 +140,11 @@ int kf_send_sys_status(kf_app *app)
     /* KF_MAG_ENABLE 0: the magnetometer is not used (present, not enabled) */
     uint32_t enabled = app->values[KF_P_MAG_ENABLE].u != 0u
                        ? sensors : sensors & ~(uint32_t)MAV_SYS_STATUS_SENSOR_3D_MAG;
+    /* health: a silent sensor (SENSOR_FAULT in the KF_UNIT_STATUS of the same second) takes
+     * all three of its sensors out (one chip delivers them) */
+    uint32_t health = app->sensor_fault_seen ? 0u : sensors;
     mavlink_msg_sys_status_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg,
-                                       sensors, enabled, sensors, app->rates.load, kf_hal_battery_mv(),
+                                       sensors, enabled, health, app->rates.load, kf_hal_battery_mv(),
                                        -1, -1, 0u, s[0], s[1], s[2], s[3], s[4], 0u, 0u, 0u);
     return kf_send(app, &msg);
 }

@@ -53,6 +53,25 @@ def test_a_silent_sensor_sets_sensor_fault_until_samples_resume(unit):
     assert faults(st) == [True, False, False]        # 4 s: its interval had the silence
 
 
+def test_sys_status_health_follows_sensor_fault(unit):
+    """Generic ground stations read SYS_STATUS: gyro, accelerometer and magnetometer (bits
+    0x1, 0x2, 0x4) are unhealthy in the status of a second with the silence, healthy again
+    after it."""
+    u = sensor_unit(unit)
+    health = []
+    for t_end, on in ((1_500_000, True), (3_500_000, False), (5_500_000, True)):
+        while u.time_us + 1000 <= t_end:
+            u.advance(1000)
+            if on:
+                smp = u.ffi.new("kf_raw_sample *")
+                smp.time_us = u.time_us
+                smp.acc[2] = 1000
+                assert u.lib.kft_sensor_push(smp)
+            u.lib.kft_app_poll(u.app)
+            health += [m.onboard_control_sensors_health & 7 for m in only(u.take(), "SYS_STATUS")]
+    assert health == [7, 0, 0, 0, 7]                 # 1 s; 2, 3 s silent; 4 s had it; 5 s
+
+
 def test_the_timeout_is_100_ms_at_1_khz(unit):
     u = sensor_unit(unit)
     run(u, 1_100_000)                                # past the status at 1 s
