@@ -47,15 +47,25 @@ def _kind(name: str) -> str:
     return kind
 
 
-def _table_names(name: str, system: str) -> tuple[str, str]:
+SENSORS = ("9d", "6d")     # IMU motion with a magnetometer reading in every sample, or none
+
+
+def _table_names(name: str, system: str, sensors: str = "9d") -> tuple[str, str]:
     """(file stem, array name) of the input table: IMU motion or a joint-angle series."""
+    if sensors not in SENSORS:
+        raise KinefuseError(f"sensors must be one of {', '.join(SENSORS)}, not {sensors!r}")
     if _kind(name) == "imu":
-        return f"kf_cost_{system}", f"kf_cost_in_{system}"
+        six = "6d_" if sensors == "6d" else ""
+        return f"kf_cost_{six}{system}", f"kf_cost_in_{six}{system}"
+    if sensors != "9d":
+        raise KinefuseError(f"{name} takes a joint-angle series: it has no 6D measurement")
     return f"kf_cost_angle_{system}", f"kf_cost_angle_in_{system}"
 
 
-def _table_sources(name: str, system: str) -> tuple[Path, Path, str, int]:
+def _table_sources(name: str, system: str, sensors: str = "9d") -> tuple[Path, Path, str, int]:
     """Input records of the competitors' motion as a C table; returns (c, dir, ctype, n).
+    ``sensors`` "6d": the same motion with no magnetometer reading (mag_valid 0 in every sample,
+    as x-io Fusion's FusionAhrsUpdateNoMagnetometer and VQF's 6D case get it).
     The joint-angle smoothers get the same number of samples of the seed-004 servo protocol
     (20° sine at 5 rad/s, 35 Hz, 1.8° noise, 23 ms latency: ``kinefuse bench seed004``)."""
     from kinefuse.hil_tests.qemu.batch import write_generated
@@ -67,7 +77,7 @@ def _table_sources(name: str, system: str) -> tuple[Path, Path, str, int]:
     if kind == "imu":
         m = motion()
         inputs = {"gyr": m["gyr"].astype(float), "acc": m["acc"].astype(float),
-                  "mag": m["mag"].astype(float), "mag_valid": np.ones(n, bool),
+                  "mag": m["mag"].astype(float), "mag_valid": np.full(n, sensors == "9d"),
                   "dt": np.full(n, 1.0 / RATE_HZ)}
     else:
         from kinefuse.host.bench.seed004 import long_series
@@ -75,7 +85,7 @@ def _table_sources(name: str, system: str) -> tuple[Path, Path, str, int]:
     info = ModelInfo(name, system)
     enc = info.encode(inputs, est.resolve_params(None))
     ctype = f"kf_{kind}_input_{system}"
-    tag, arr = _table_names(name, system)
+    tag, arr = _table_names(name, system, sensors)
     guard = tag.upper() + "_H"
 
     def lit(v, typ):
@@ -110,9 +120,9 @@ def _table_sources(name: str, system: str) -> tuple[Path, Path, str, int]:
     return cpath, hpath.parent, ctype, n
 
 
-def _snippets(name: str, system: str):
+def _snippets(name: str, system: str, sensors: str = "9d"):
     P = generated_stem(name, system)
-    tag, arr = _table_names(name, system)
+    tag, arr = _table_names(name, system, sensors)
     # RAM counted: the state (which keeps its own copy of the parameters) and the output; the
     # parameters handed to init are a local, as x-io Fusion's settings are in its measurement
     prelude = (f'#include "{P}.h"\n#include "{tag}.h"\n'
@@ -128,21 +138,22 @@ def _snippets(name: str, system: str):
 
 
 def measure_filter(name: str, system: str, target: str, *, k: int = 1000,
-                   size_opts=("-Os", "-O2"), mix: bool = True) -> dict:
+                   size_opts=("-Os", "-O2"), mix: bool = True, sensors: str = "9d") -> dict:
     """Instructions per update (exact), cycle estimate, flash/RAM added (bytes)."""
     from kinefuse.hil_tests.qemu.cost import measure_call_cost
 
     src = GENERATED_DIR / f"{generated_stem(name, system)}.c"
     if not src.is_file():
         raise KinefuseError(f"{src} does not exist")
-    table_c, table_dir, _ctype, n = _table_sources(name, system)
+    table_c, table_dir, _ctype, n = _table_sources(name, system, sensors)
     if k > n - 400:
         raise KinefuseError(f"k must be at most {n - 400}")
-    prelude, setup, call, finish, baseline = _snippets(name, system)
+    prelude, setup, call, finish, baseline = _snippets(name, system, sensors)
     cost = measure_call_cost([src, table_c], setup, call, target, k=k, prelude=prelude,
                              finish=finish, baseline_code=baseline,
                              include_dirs=[GENERATED_DIR, table_dir], size_opts=size_opts)
     row = {"impl": "kinefuse", "filter": name, "format": system, "target": target,
+           "sensors": sensors if _kind(name) == "imu" else None,
            "instructions_per_update": cost.per_call, "k": k, "warmup": 400,
            "flash_bytes": cost.size["-Os"].flash if "-Os" in cost.size else None,
            "ram_bytes": cost.size["-Os"].ram if "-Os" in cost.size else None,

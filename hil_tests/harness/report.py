@@ -242,16 +242,18 @@ def write_markdown(rep: Report, out_dir: Path, png_name: str | None, path: Path 
         lines += ["## Cost per update", "",
                   "Instructions exact (QEMU); cycles and µs at 64 MHz are a Cortex-M4 table estimate; "
                   "bytes added at -Os (own = the filter's object/state only).", "",
-                  "| impl | filter | format | target | instructions | est. cycles | est. µs | flash | own flash | RAM | own RAM |",
-                  "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+                  "| impl | filter | sensors | format | target | instructions | est. cycles | est. µs | flash | own flash | RAM | own RAM |",
+                  "|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|"]
         for r in rep.cost:
+            # (a 9D and a 6D row of one filter were indistinguishable; older JSON has no sensors)
+            sx = r.get("sensors") or ""
             if r.get("error"):
-                lines.append(f"| {r['impl']} | {r['filter']} | {r['format']} | {r['target']} | error: {r['error']} |||||||")
+                lines.append(f"| {r['impl']} | {r['filter']} | {sx} | {r['format']} | {r['target']} | error: {r['error']} |||||||")
                 continue
             cyc = r.get("est_cycles_per_update")
             cyc_s = "" if cyc is None else f"{cyc:.0f}"
             us_s = "" if cyc is None else f"{r['est_us_at_64mhz']:.1f}"
-            lines.append(f"| {r['impl']} | {r['filter']} | {r['format']} | {r['target']} | "
+            lines.append(f"| {r['impl']} | {r['filter']} | {sx} | {r['format']} | {r['target']} | "
                          f"{r['instructions_per_update']:.1f} | {cyc_s} | {us_s} | {r['flash_bytes']} | "
                          f"{r.get('own_flash_bytes', '')} | {r['ram_bytes']} | {r.get('own_ram_bytes', '')} |")
         lines.append("")

@@ -20,8 +20,8 @@ def fake_measure(monkeypatch):
     monkeypatch.setattr(concurrent.futures, "ProcessPoolExecutor", concurrent.futures.ThreadPoolExecutor)
     calls = []
 
-    def job(kind, a, b, c, k, mix, profile=False, top=12):
-        calls.append((kind, a, b, c))
+    def job(kind, a, b, c, k, mix, profile=False, top=12, sensors="9d"):
+        calls.append((kind, a, b, c, sensors))
         return {"impl": "kinefuse" if kind == "ours" else cost.competitor_impl(a), "filter": a,
                 "format": b, "target": c, "instructions_per_update": 1.0, "flash_bytes": 1,
                 "ram_bytes": 1, "k": k}
@@ -81,3 +81,35 @@ def test_a_trailing_comma_in_filters(fake_measure, capsys):
     assert main(["bench", "cost", "--filters", "madgwick,", "--formats", "f32", "--targets", "m4f",
                  "--no-competitors", "--json"]) == 0
     assert [r["filter"] for r in json.loads(capsys.readouterr().out)["rows"]] == ["madgwick"]
+
+
+def test_sensors_6d_plans_rows_without_magnetometer(fake_measure, capsys):
+    assert main(["bench", "cost", "--filters", "madgwick,angle-kf", "--formats", "f32",
+                 "--targets", "m4f", "--sensors", "9d,6d", "--json"]) == 0
+    json.loads(capsys.readouterr().out)
+    ours = [c for c in fake_measure if c[0] == "ours"]
+    assert ours == [("ours", "madgwick", "f32", "m4f", "9d"), ("ours", "madgwick", "f32", "m4f", "6d"),
+                    ("ours", "angle-kf", "f32", "m4f", None)]
+    comp = {c[1]: c[4] for c in fake_measure if c[0] == "competitor"}
+    assert comp == {"fusion-ahrs-9d": "9d", "fusion-ahrs-6d": "6d", "vqf-9d-f32": "9d",
+                    "vqf-6d-f32": "6d"}
+
+
+@pytest.mark.parametrize("given", ["", "9d,5d", "6d,6d"])
+def test_sensors_refused(given, capsys):
+    assert main(["bench", "cost", "--sensors", given]) != 0
+    err = capsys.readouterr().err
+    assert "--sensors" in err and "Traceback" not in err
+
+
+def test_the_6d_table_has_no_magnetometer_reading():
+    # the 6D rows are only 6D if no sample of their input table carries a reading
+    from kinefuse.hil_tests.harness import cost as hc
+    for sensors, want in (("9d", "1u"), ("6d", "0u")):
+        c, _d, ctype, n = hc._table_sources("madgwick", "f32", sensors)
+        body = c.read_text()
+        assert f"kf_cost_in_{'6d_' if sensors == '6d' else ''}f32[KF_COST_N]" in body
+        rows = [r for r in body.splitlines() if r.startswith("{")]
+        assert len(rows) == n
+        # mag_valid is the field after the three mag components: "}, 1u, " / "}, 0u, "
+        assert all(f"}}, {want}, " in r for r in rows)

@@ -132,3 +132,17 @@ def test_competitor_motion_is_physically_consistent():
     assert np.abs(m["gyr"]).max() < np.deg2rad(200)                                  # rad/s
     again = motion(n=300)
     assert all(np.array_equal(m[k], again[k]) for k in m)
+
+
+def test_filter_cost_without_magnetometer_skips_the_field_step():
+    # `bench cost --sensors 6d`: the same motion with mag_valid 0.  Madgwick's magnetic objective
+    # sits in a conditional region, so its 6D update must execute fewer instructions; the count
+    # is exact, so the same measurement twice gives the same number
+    from kinefuse.hil_tests.harness.cost import measure_filter
+    nine = measure_filter("madgwick", "f32", "m4f", k=20, size_opts=("-Os",), mix=False)
+    six = measure_filter("madgwick", "f32", "m4f", k=20, size_opts=("-Os",), mix=False, sensors="6d")
+    again = measure_filter("madgwick", "f32", "m4f", k=20, size_opts=("-Os",), mix=False, sensors="6d")
+    assert (nine["sensors"], six["sensors"]) == ("9d", "6d")
+    assert six["instructions_per_update"] == again["instructions_per_update"]
+    assert 0 < six["instructions_per_update"] < nine["instructions_per_update"] - 30
+    assert six["flash_bytes"] == nine["flash_bytes"]      # one update function for both

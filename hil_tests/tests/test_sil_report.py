@@ -193,3 +193,19 @@ def test_sil_report_cost_that_cannot_be_read(tmp_path, capsys):
         err = capsys.readouterr().err
         assert err.strip() == f"kinefuse: error: cannot read cost JSON {cost}: {why}", err
     assert not (tmp_path / "r").exists()
+
+
+def test_sil_report_cost_table_tells_9d_from_6d_rows(tmp_path):
+    # a 9D and a 6D row of one filter (`bench cost --sensors 9d,6d`) were two identical-looking
+    # lines; rows of older cost JSON have no sensors and keep an empty cell
+    from kinefuse.hil_tests.harness.report import Report, write_markdown
+    row = {"impl": "kinefuse", "filter": "madgwick", "format": "f32", "target": "m4f",
+           "flash_bytes": 2792, "ram_bytes": 64}
+    rep = Report(cases=[], filters=[], cost=[{**row, "sensors": "9d", "instructions_per_update": 389.0},
+                                             {**row, "sensors": "6d", "instructions_per_update": 328.0},
+                                             {**row, "instructions_per_update": 370.0}])
+    text = write_markdown(rep, tmp_path, None).read_text()
+    assert "| impl | filter | sensors | format |" in text
+    assert "| kinefuse | madgwick | 9d | f32 | m4f | 389.0 |" in text
+    assert "| kinefuse | madgwick | 6d | f32 | m4f | 328.0 |" in text
+    assert "| kinefuse | madgwick |  | f32 | m4f | 370.0 |" in text

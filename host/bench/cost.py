@@ -30,9 +30,12 @@ from kinefuse.host import argtypes
 
 COMPETITOR_CASES = ("fusion-ahrs-9d", "fusion-ahrs-6d", "vqf-9d-f32", "vqf-6d-f32")
 TARGETS = {"f32": ("m4f", "m0"), "q": ("m4f", "m0")}
-GOALS = {  # (filter, format, target): instructions per update the issue sets as a target
-    ("flagship", "f32", "m4f"): 400, ("madgwick", "f32", "m4f"): 200, ("flagship", "q", "m0"): 2500,
+GOALS = {  # (filter, format, target, sensors): instructions per update the issue sets as a target
+    # (the flagship's are for 9D; the Madgwick target names no sensor set, so both rows carry it)
+    ("flagship", "f32", "m4f", "9d"): 400, ("flagship", "q", "m0", "9d"): 2500,
+    ("madgwick", "f32", "m4f", "9d"): 200, ("madgwick", "f32", "m4f", "6d"): 200,
 }
+SENSOR_SETS = ("9d", "6d")
 
 
 def register_bench(bench_subparsers) -> None:
@@ -43,6 +46,10 @@ def register_bench(bench_subparsers) -> None:
                    help="comma-separated filters (default: every IMU filter and joint-angle smoother)")
     p.add_argument("--formats", default="f32,q", help="comma-separated number formats (default f32,q)")
     p.add_argument("--targets", default="m4f,m0", help="comma-separated targets (default m4f,m0)")
+    p.add_argument("--sensors", default="9d",
+                   help="comma-separated sensor sets of our IMU filters' rows: 9d (a magnetometer "
+                        "reading every sample) and/or 6d (none: the gyroscope and accelerometer "
+                        "path, as Fusion's and VQF's 6D rows); default 9d")
     p.add_argument("--k", type=int, default=1000,
                    help="counted updates of our filters (default 1000, at most 1000; Fusion and "
                         "VQF always count 1000, each row gives its k)")
@@ -66,14 +73,14 @@ def _own_split(cost, stems: set[str]) -> dict:
 
 
 def measure_ours(name: str, system: str, target: str, k: int, mix: bool,
-                 profile: bool = False, top: int = 12) -> dict:
+                 profile: bool = False, top: int = 12, sensors: str = "9d") -> dict:
     from kinefuse.hil_tests.harness import cost as hc
     from kinefuse.hil_tests.qemu import cost as qc
 
-    row = hc.measure_filter(name, system, target, k=k, mix=False)
+    row = hc.measure_filter(name, system, target, k=k, mix=False, sensors=sensors)
     # size split: rebuild through measure_call_cost's origin data
-    table_c, table_dir, _ct, _n = hc._table_sources(name, system)
-    prelude, setup, call, finish, baseline = hc._snippets(name, system)
+    table_c, table_dir, _ct, _n = hc._table_sources(name, system, sensors)
+    prelude, setup, call, finish, baseline = hc._snippets(name, system, sensors)
     from kinefuse.codegen.generate import GENERATED_DIR
     from kinefuse.codegen.estimator import generated_stem
     stem = generated_stem(name, system)
@@ -93,7 +100,7 @@ def measure_ours(name: str, system: str, target: str, k: int, mix: bool,
             row["profile"] = hc.profile(prog.elf, per, hc.K_MIX, top)
         if mix:
             row.update(hc.cycle_estimate(prog, target, hc.K_MIX, per=per))
-    goal = GOALS.get((name, system, target))
+    goal = GOALS.get((name, system, target, sensors))
     if goal is not None:
         row["goal_instructions"] = goal
         row["goal_met"] = row["instructions_per_update"] <= goal
@@ -106,8 +113,8 @@ def measure_competitor(case: str, target: str, mix: bool) -> dict:
 
     r = measure_case(case, target)
     c = CASES[case]
-    row = {"impl": competitor_impl(case), "filter": case, "format": "f32",
-           "target": target, "description": c.description, "k": K, "warmup": WARMUP}
+    row = {"impl": competitor_impl(case), "filter": case, "sensors": competitor_sensors(case),
+           "format": "f32", "target": target, "description": c.description, "k": K, "warmup": WARMUP}
     if r.cost is None:
         row.update({"error": r.error, "instructions_per_update": None, "flash_bytes": None,
                     "ram_bytes": None})
@@ -127,16 +134,21 @@ def competitor_impl(case: str) -> str:
     return "fusion" if case.startswith("fusion") else "vqf"
 
 
+def competitor_sensors(case: str) -> str:
+    """9d or 6d: the sensor set of a competitor case (named in the case: fusion-ahrs-6d, ...)."""
+    return "6d" if "-6d" in case else "9d"
+
+
 def _job(kind: str, a: str, b: str, c: str, k: int, mix: bool, profile: bool = False,
-         top: int = 12) -> dict:
+         top: int = 12, sensors: str | None = "9d") -> dict:
     try:
         if kind == "ours":
-            return measure_ours(a, b, c, k, mix, profile, top)
+            return measure_ours(a, b, c, k, mix, profile, top, sensors or "9d")
         return measure_competitor(a, c, mix)
     except KinefuseError as exc:
         # (a failed competitor row said impl "competitor", outside the schema's kinefuse|fusion|vqf)
         return {"impl": "kinefuse" if kind == "ours" else competitor_impl(a), "filter": a,
-                "format": b, "target": c,
+                "format": b, "target": c, "sensors": sensors,
                 "error": str(exc), "instructions_per_update": None, "flash_bytes": None,
                 "ram_bytes": None}
 
@@ -162,7 +174,11 @@ def run(args: argparse.Namespace) -> int:
     if (not formats or not targets or any(f not in ("f32", "q") for f in formats)
             or any(t not in ("m4f", "m0") for t in targets)):
         raise KinefuseError("--formats takes f32,q and --targets m4f,m0")   # (an empty list measured nothing)
-    for opt, given in (("--filters", filters), ("--formats", formats), ("--targets", targets)):
+    sensors = [x.strip() for x in args.sensors.split(",") if x.strip()]
+    if not sensors or any(x not in SENSOR_SETS for x in sensors):
+        raise KinefuseError("--sensors takes 9d,6d")
+    for opt, given in (("--filters", filters), ("--formats", formats), ("--targets", targets),
+                       ("--sensors", sensors)):
         twice = [g for k, g in enumerate(given) if g in given[:k]]
         if twice:       # (each row was measured and listed twice)
             raise KinefuseError(f"{opt} names {twice[0]} twice")
@@ -176,7 +192,7 @@ def run(args: argparse.Namespace) -> int:
     reason = qemu_unavailable()        # after the options: their errors need no QEMU
     if reason:
         raise KinefuseError(reason)
-    jobs, notes = plan_jobs(filters, formats, targets, not args.no_competitors, args.k)
+    jobs, notes = plan_jobs(filters, formats, targets, not args.no_competitors, args.k, sensors)
     from kinefuse.host.bench.common import eprint, progress
     for note in notes:        # (rows left out without a word looked like a complete table)
         eprint(f"note: {note}")
@@ -186,8 +202,8 @@ def run(args: argparse.Namespace) -> int:
     # the bar is on stderr, so --json keeps it (a full run takes many minutes)
     with progress() as bar, ProcessPoolExecutor(max(1, args.jobs)) as pool:
         task = bar.add_task("cost on M4F/M0", total=len(jobs))
-        futs = [pool.submit(_job, kind, a, b, c, args.k, not args.no_mix, args.profile, top)
-                for kind, a, b, c in jobs]
+        futs = [pool.submit(_job, kind, a, b, c, args.k, not args.no_mix, args.profile, top, sx)
+                for kind, a, b, c, sx in jobs]
         for fut in futs:
             rows.append(fut.result())
             bar.advance(task)
@@ -195,7 +211,8 @@ def run(args: argparse.Namespace) -> int:
               "cycle_model": "estimate: Cortex-M4 table (FP add/mul 1, load/store 2, VDIV/VSQRT 14, "
                              "VFMA 3, taken branch 3) over the executed instruction mix; not measured",
               "motion": "competitors.motion(): 100 Hz synthetic rotation with magnetometer, 400 "
-                        "warm-up updates, then K counted",
+                        "warm-up updates, then K counted; rows with sensors 6d: the same samples "
+                        "without a magnetometer reading (mag_valid 0)",
               # (the nested size records' flash/ram carried no unit)
               "units": "instructions_per_update: executed instructions per update (mean of k); "
                        "flash_bytes, ram_bytes, own_*_bytes and every flash/ram in size and "
@@ -210,18 +227,27 @@ def run(args: argparse.Namespace) -> int:
 
 
 def plan_jobs(filters: list[str], formats: list[str], targets: list[str], competitors: bool,
-              k: int = 1000) -> tuple[list[tuple[str, str, str, str]], list[str]]:
-    """The measurements to make, and a note for each kind of row the options leave out."""
+              k: int = 1000, sensors: tuple[str, ...] | list[str] = ("9d",),
+              ) -> tuple[list[tuple[str, str, str, str, str | None]], list[str]]:
+    """The measurements to make (kind, filter, format, target, sensors), and a note for each
+    kind of row the options leave out."""
     from kinefuse.hil_tests.harness import loops
     jobs, notes = [], []
+    imu = set(loops.imu_filters())
     for f in filters:
         have = loops.systems(f)
         missing = [s for s in formats if s not in have]
         if missing:
             notes.append(f"{f} is not generated in {', '.join(missing)}: no such row")
-        jobs += [("ours", f, s, t) for s in formats if s in have for t in targets if t in TARGETS[s]]
+        sets = list(sensors) if f in imu else [None]
+        if f not in imu and "9d" not in sensors:
+            notes.append(f"{f} takes a joint-angle series (no sensor set): its rows are measured "
+                         f"as without --sensors")
+        jobs += [("ours", f, s, t, x) for x in sets for s in formats if s in have
+                 for t in targets if t in TARGETS[s]]
     if competitors and "f32" in formats:
-        jobs += [("competitor", c, "f32", t) for c in COMPETITOR_CASES for t in targets]
+        jobs += [("competitor", c, "f32", t, competitor_sensors(c))
+                 for c in COMPETITOR_CASES for t in targets]
         if k != 1000:
             notes.append(f"--k {k} counts our updates; Fusion and VQF rows count 1000 (see each "
                          f"row's k)")
@@ -236,19 +262,19 @@ def print_table(rows: list[dict]) -> None:
 
     t = Table(title="Cost per update (instructions exact under QEMU; cycles/µs estimated at 64 MHz; "
                     "bytes added, -Os)")
-    for col in ("impl", "filter", "format", "target", "instr/update", "est. cycles", "est. µs",
+    for col in ("impl", "filter", "sensors", "format", "target", "instr/update", "est. cycles", "est. µs",
                 "flash", "own flash", "RAM", "own RAM", "goal"):
         t.add_column(col, justify="right")
     for r in rows:
         if r.get("error"):
-            t.add_row(r["impl"], r["filter"], r["format"], r["target"], f"error: {r['error']}",
-                      *[""] * 7)
+            t.add_row(r["impl"], r["filter"], r.get("sensors") or "", r["format"], r["target"],
+                      f"error: {r['error']}", *[""] * 7)
             continue
         goal = ""
         if "goal_instructions" in r:
             goal = f"≤{r['goal_instructions']} {'met' if r['goal_met'] else 'MISSED'}"
         cyc = r.get("est_cycles_per_update")
-        t.add_row(r["impl"], r["filter"], r["format"], r["target"],
+        t.add_row(r["impl"], r["filter"], r.get("sensors") or "", r["format"], r["target"],
                   f"{r['instructions_per_update']:,.1f}",
                   f"{cyc:,.0f}" if cyc is not None else "-",
                   f"{r['est_us_at_64mhz']:.1f}" if cyc is not None else "-",
@@ -266,7 +292,8 @@ def print_profiles(rows: list[dict]) -> None:
         prof = r.get("profile")
         if not prof:
             continue
-        head = (f"{r['filter']} {r['format']} {r['target']}: {prof['traced_instructions_per_update']:,.0f} "
+        head = (f"{r['filter']} {r.get('sensors') or ''} {r['format']} {r['target']}: "
+                f"{prof['traced_instructions_per_update']:,.0f} "
                 f"instructions per update ({prof['traced_updates']} updates traced)")
         t = Table(title=head + ", by function")
         for col in ("function", "instr/update", "calls/update"):
