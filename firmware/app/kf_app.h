@@ -153,6 +153,8 @@ typedef struct kf_app {
     uint32_t sensor_timeout_us;    /* SENSOR_FAULT after this long without a sample (0: no sensor) */
     uint8_t sensor_fault;          /* a watched sensor is silent now (kf_app.c) */
     uint8_t sensor_fault_seen;     /* ... or was at some time since the previous 1 Hz status */
+    uint8_t low_battery;           /* the 1 Hz battery reading fell below KF_BATT_LOW_MV (kf_status.c) */
+    uint8_t low_battery_told;      /* ... and its STATUSTEXT went out */
     kf_counters cnt;
     kf_rates rates;
     uint64_t next_status_us;

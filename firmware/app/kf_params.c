@@ -30,6 +30,7 @@ const kf_param_desc kf_param_table[KF_PARAM_COUNT] = {
     KF_APP_ROW("KF_SIGNING", KF_PT_UINT8, 0u, 0u, 1u, KF_PF_READONLY),
     KF_APP_ROW("KF_JOINT_ID", KF_PT_UINT8, 0u, 0u, 14u, 0u),
     KF_APP_ROW("KF_EFF_RATE_HZ", KF_PT_UINT16, 0u, 0u, 1000u, 0u),
+    KF_APP_ROW("KF_BATT_LOW_MV", KF_PT_UINT16, 3400u, 0u, 5000u, 0u),
 #include "kf_params_gen.inc"
 };
 

@@ -70,6 +70,9 @@ enum {
     KF_P_JOINT_ID,         /* KF_JOINT of a two-sensor unit (0: one sensor, no KF_JOINT_ANGLE) */
     KF_P_EFF_RATE_HZ,      /* KF_EFFORTS rate, Hz; 0 (default): the leg EKF does not run.  Two-sensor
                             * mode only; values other than 0 are refused where it is not built */
+    KF_P_BATT_LOW_MV,      /* battery warning threshold, mV: KF_UNIT_STATUS LOW_BATTERY while the
+                            * 1 Hz reading is below it, cleared 100 mV above it (0: off; default:
+                            * a single Li-ion/LiPo cell near empty under load) */
     KF_P_APP_COUNT
 };
 

@@ -86,7 +86,8 @@ static uint32_t status_flags(const kf_app *app)
     f |= app->hil ? KF_UNIT_STATUS_FLAGS_HIL : 0u;
     f |= app->calibrated ? KF_UNIT_STATUS_FLAGS_CALIBRATED : 0u;
     f |= app->mag_present ? KF_UNIT_STATUS_FLAGS_MAG_PRESENT : 0u;
-    /* LOW_BATTERY is never set: the unit has no warning threshold (battery_voltage is sent) */
+    /* this second's battery reading below KF_BATT_LOW_MV (kf_status.c; battery_voltage is sent) */
+    f |= app->low_battery ? KF_UNIT_STATUS_FLAGS_LOW_BATTERY : 0u;
     /* "since the previous status": frames_dropped itself counts since boot */
     f |= app->tx.frames_dropped != app->rates.frames_dropped0 ? KF_UNIT_STATUS_FLAGS_TX_OVERFLOW : 0u;
     /* storage errors are not a sensor fault: their own flag (and a STATUSTEXT, kf_status.c) */
@@ -143,8 +144,15 @@ int kf_send_sys_status(kf_app *app)
     /* health: a silent sensor (SENSOR_FAULT in the KF_UNIT_STATUS of the same second) takes
      * all three of its sensors out (one chip delivers them) */
     uint32_t health = app->sensor_fault_seen ? 0u : sensors;
+    /* the battery where the board measures it: unhealthy while LOW_BATTERY */
+    uint16_t mv = kf_hal_battery_mv();
+    if (mv != UINT16_MAX) {
+        sensors |= MAV_SYS_STATUS_SENSOR_BATTERY;
+        enabled |= MAV_SYS_STATUS_SENSOR_BATTERY;
+        health |= app->low_battery ? 0u : (uint32_t)MAV_SYS_STATUS_SENSOR_BATTERY;
+    }
     mavlink_msg_sys_status_pack_status(kf_sysid(app), KF_COMPONENT_ID, &app->tx_status, &msg,
-                                       sensors, enabled, health, app->rates.load, kf_hal_battery_mv(),
+                                       sensors, enabled, health, app->rates.load, mv,
                                        -1, -1, 0u, s[0], s[1], s[2], s[3], s[4], 0u, 0u, 0u);
     return kf_send(app, &msg);
 }

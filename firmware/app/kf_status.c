@@ -1,14 +1,34 @@
 /*
  * kf_status.c - once per second: HEARTBEAT, KF_UNIT_STATUS and SYS_STATUS, with the rates
  * achieved and the processor load measured over the second that ended (flags TX_OVERFLOW,
- * STORAGE_ERROR and SENSOR_FAULT: since the previous status); a STATUSTEXT when the
- * parameter storage failed, or a stored value was refused at load, since the previous one.
+ * STORAGE_ERROR and SENSOR_FAULT: since the previous status; LOW_BATTERY from this second's
+ * reading); a STATUSTEXT when the parameter storage failed, or a stored value was refused at
+ * load, since the previous one, and when the battery went low.
  */
 #include <stdint.h>
 
 #include "kf_app_internal.h"
 
 #define KF_STATUS_PERIOD_US 1000000u
+/* LOW_BATTERY clears only this far above KF_BATT_LOW_MV: a cell's voltage sags and recovers
+ * with the load (radio bursts), which would otherwise toggle the flag near the threshold */
+#define KF_BATT_HYSTERESIS_MV 100u
+
+static void battery_check(kf_app *app)
+{
+    uint32_t mv = kf_hal_battery_mv();
+    uint32_t low_mv = app->values[KF_P_BATT_LOW_MV].u;
+    if (mv == UINT16_MAX || low_mv == 0u) {
+        app->low_battery = 0u;             /* not measured, or the warning is off */
+    } else if (mv < low_mv) {
+        app->low_battery = 1u;
+    } else if (mv >= low_mv + KF_BATT_HYSTERESIS_MV) {
+        app->low_battery = 0u;
+    }
+    if (!app->low_battery) {
+        app->low_battery_told = 0u;        /* the next fall is told again */
+    }
+}
 
 void kf_status_tick(kf_app *app, uint64_t now)
 {
@@ -26,6 +46,7 @@ void kf_status_tick(kf_app *app, uint64_t now)
     r->busy_us = 0u;
     r->t0 = now;
     app->cnt.samples_dropped = kf_hal_sensor_dropped();
+    battery_check(app);
     (void)kf_send_heartbeat(app);
     (void)kf_send_unit_status(app);
     (void)kf_send_sys_status(app);
@@ -44,6 +65,13 @@ void kf_status_tick(kf_app *app, uint64_t now)
          * the defaults run instead, which the user must know */
         if (kf_send_statustext(app, MAV_SEVERITY_WARNING, "stored parameter out of range: default used")) {
             r->stored_rejects0 = app->cnt.stored_rejects;
+        }
+    }
+    if (app->low_battery && !app->low_battery_told) {
+        /* once per fall below the threshold (retried while the link is full): a recording
+         * stops when the cell is empty */
+        if (kf_send_statustext(app, MAV_SEVERITY_WARNING, "battery low: recharge the unit")) {
+            app->low_battery_told = 1u;
         }
     }
     /* next second on the device clock; after a stall, skip what was missed */

@@ -43,6 +43,7 @@ DEFAULT_PARAMS = {
     "KF_MAG_ENABLE": (1, 1, 0, 1),
     "KF_ACC_TAU_S": (9, 3.0, 0.01, 100.0),
     "KF_SERIAL_NO": (5, 0x4B460001, 0, 0xFFFFFFFF),
+    "KF_BATT_LOW_MV": (3, 3400, 0, 5000),
 }
 
 
@@ -316,11 +317,13 @@ class FakeUnit:
             orientation_rate_requested=float(self.params["KF_ORI_RATE_HZ"] if self.streaming else 0),
             orientation_rate_achieved=float(self.params["KF_ORI_RATE_HZ"] if self.streaming else 0),
             battery_voltage=3900, cpu_load=123,
-            # as the firmware: MAG_PRESENT once a magnetometer reading arrived, never LOW_BATTERY
-            # (no threshold), STORAGE_ERROR after a failed load or save since the previous status
+            # as the firmware: MAG_PRESENT once a magnetometer reading arrived, LOW_BATTERY below
+            # KF_BATT_LOW_MV (its cell reads 3,900 mV: only with a threshold set above that),
+            # STORAGE_ERROR after a failed load or save since the previous status
             status_flags=(1 if self.streaming else 0) | (2 if self.mag_present else 0) | 32
             | (8 if self.hil else 0) | (128 if self.store_errors != self.store_errors_status else 0)
-            | (4 if self._sensor_fault(now_us) else 0),
+            | (4 if self._sensor_fault(now_us) else 0)
+            | (16 if 3900 < self.params["KF_BATT_LOW_MV"] else 0),
             battery_remaining=80, unit_id=self.params["KF_UNIT_ID"], filter_id=self.params["KF_FILTER"],
             numeric_format=1, earth_frame=1,
             # extensions: a strapdown integration never resets, one sensor (no sensor 1 rejections)

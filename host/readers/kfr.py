@@ -45,7 +45,7 @@ STATUSTEXT carries no time), ``severity``, ``severity_name`` and ``text``; WARNI
 as a warning.  ``metadata["status_flags"]``: per message (KF_UNIT_STATUS ``status_flags``,
 KF_ORIENTATION ``status``) how many frames had each bit set, e.g. ``{"KF_UNIT_STATUS":
 {"STREAMING": 60, "STORAGE_ERROR": 1}, "KF_ORIENTATION": {"INPUT_CLIPPED": 3, ...}}``; a
-SENSOR_FAULT, TX_OVERFLOW or STORAGE_ERROR status adds a warning.
+SENSOR_FAULT, TX_OVERFLOW, STORAGE_ERROR or LOW_BATTERY status adds a warning.
 
 **Magnetometer.** Present when the unit flags new magnetometer values
 (KF_RAW_SAMPLE_FLAGS_MAG_UPDATED) in at least one sample, else ``mag`` is ``None``.  The
@@ -212,7 +212,8 @@ def _unwrap(cnt: np.ndarray) -> np.ndarray:
 
 
 STATUS_FIELDS = {MSG_STATUS: ("KF_UNIT_STATUS", "status_flags"), MSG_ORI: ("KF_ORIENTATION", "status")}
-PROBLEM_FLAGS = ("SENSOR_FAULT", "TX_OVERFLOW", "STORAGE_ERROR")   # KF_UNIT_STATUS bits worth a warning
+# KF_UNIT_STATUS bits worth a warning (LOW_BATTERY: the recording may end with the cell)
+PROBLEM_FLAGS = ("SENSOR_FAULT", "TX_OVERFLOW", "STORAGE_ERROR", "LOW_BATTERY")
 
 
 def _unit_reports(ds, sysid: int, raw, start_ns: int | None) -> dict:

@@ -63,3 +63,15 @@ def test_sensor_gap_option():
         assert c.unit.sensor_gap == (200, 150)
     finally:
         c.close()
+
+
+def test_low_battery_follows_the_threshold_as_on_the_firmware():
+    # the fake unit's cell reads 3,900 mV: above KF_BATT_LOW_MV's default (3,400), below 4,000
+    u = FakeUnit(None, rate_hz=100)
+    flags = []
+    for low_mv in (3400, 4000, 0):
+        u.params["KF_BATT_LOW_MV"] = low_mv
+        f, = StreamDecoder().feed(u._status(0))
+        assert f.msg.battery_voltage == 3900
+        flags.append(bool(f.msg.status_flags & 16))       # KF_UNIT_STATUS_FLAGS_LOW_BATTERY
+    assert flags == [False, True, False]

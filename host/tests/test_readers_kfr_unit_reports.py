@@ -18,7 +18,8 @@ AT = {150: ("STATUSTEXT", 3, STORAGE), 300: ("STATUSTEXT", 6, "calibration loade
 
 
 def _unit_file(path):
-    """Unit 1 at 200 Hz for 3 s with three statuses (STORAGE_ERROR in the second), five
+    """Unit 1 at 200 Hz for 3 s with three statuses (STORAGE_ERROR in the second, LOW_BATTERY in
+    the third), five
     orientations (two INPUT_CLIPPED) and three STATUSTEXTs; unit 9 (no samples) says something
     and reports a SENSOR_FAULT on the same link."""
     t, acc, gyr, mag = _motion(600)
@@ -31,7 +32,7 @@ def _unit_file(path):
             _, sev, text = AT[k]
             items.append((t[k], enc.encode("STATUSTEXT", severity=sev, text=text, id=0, chunk_seq=0)))
         if k % 200 == 10:
-            flags = 1 | 32 | (128 if k == 210 else 0)
+            flags = 1 | 32 | (128 if k == 210 else 0) | (16 if k == 410 else 0)
             items.append((t[k], enc.encode("KF_UNIT_STATUS", time_boot_us=int(dev[k]), status_flags=flags,
                                            unit_id=1)))
             items.append((t[k], other.encode("KF_UNIT_STATUS", time_boot_us=5, status_flags=4, unit_id=9)))
@@ -56,12 +57,14 @@ def test_statustexts_and_status_flags_in_the_metadata(tmp_path):
     k_t = np.array([r.t[k] for k in ks])
     assert np.all(np.array([m["t"] for m in msgs]) >= k_t - 1e-4)
     assert np.abs(np.array([m["t"] for m in msgs]) - (t[ks] + MIN_LATENCY)).max() < 0.03
-    assert r.metadata["status_flags"] == {"KF_UNIT_STATUS": {"STREAMING": 3, "CALIBRATED": 3, "STORAGE_ERROR": 1},
+    assert r.metadata["status_flags"] == {"KF_UNIT_STATUS": {"STREAMING": 3, "CALIBRATED": 3, "STORAGE_ERROR": 1,
+                                                             "LOW_BATTERY": 1},
                                           "KF_ORIENTATION": {"INITIALISED": 5, "INPUT_CLIPPED": 2}}
     assert any(f"unit 1 said ERROR: {STORAGE}" in w for w in r.warnings), r.warnings
     assert any(f"unit 1 said WARNING: {RANGE}" in w for w in r.warnings)
     assert not any("calibration loaded" in w or "not unit 1" in w for w in r.warnings)   # INFO; unit 9
-    assert any("STORAGE_ERROR in 1 of 3 status message(s)" in w for w in r.warnings)
+    assert any("STORAGE_ERROR in 1 of 3, LOW_BATTERY in 1 of 3 status message(s)" in w
+               for w in r.warnings), r.warnings
 
 
 def test_a_raw_capture_gives_the_device_time(tmp_path):

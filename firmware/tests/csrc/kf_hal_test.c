@@ -32,6 +32,7 @@ static sensor_fifo g_sensor[2];
 static int g_reboots;
 static int32_t g_grant = -1;            /* kf_hal_sensor_configure: -1 no sensor, 0 as asked, else this */
 static uint32_t g_asked;                /* the rate last asked for */
+static uint16_t g_battery_mv = UINT16_MAX;   /* kf_hal_battery_mv (UINT16_MAX: not measured) */
 
 void kf_hal_init(void) {}
 
@@ -148,6 +149,17 @@ void kft_reset(uint32_t storage_size)
     g_reboots = 0;
     g_grant = -1;
     g_asked = 0u;
+    g_battery_mv = UINT16_MAX;
+}
+
+uint16_t kf_hal_battery_mv(void)
+{
+    return g_battery_mv;
+}
+
+void kft_set_battery_mv(uint16_t mv)
+{
+    g_battery_mv = mv;
 }
 
 uint32_t kft_feed(const uint8_t *data, uint32_t len)

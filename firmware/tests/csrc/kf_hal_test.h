@@ -21,6 +21,7 @@ int kft_sensor_push(const kf_raw_sample *s);
 int kft_sensor2_push(const kf_raw_sample *s);
 int kft_reboots(void);
 void kft_sensor_grant(int32_t hz);
+void kft_set_battery_mv(uint16_t mv);
 uint32_t kft_sensor_asked(void);
 void kft_rejected(const void *app, uint32_t out[4]);
 void kft_reset_filter2(void *app);

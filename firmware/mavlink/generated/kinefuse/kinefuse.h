@@ -201,9 +201,9 @@ typedef enum KF_UNIT_STATUS_FLAGS
 {
    KF_UNIT_STATUS_FLAGS_STREAMING=1, /* Sample streaming is on (MAV_CMD_KF_STREAM). | */
    KF_UNIT_STATUS_FLAGS_MAG_PRESENT=2, /* A magnetometer was detected: a magnetometer reading of sensor 0 (from the sensor or HIL_SENSOR) has arrived since boot. | */
-   KF_UNIT_STATUS_FLAGS_SENSOR_FAULT=4, /* Sensor 0, granted a rate, delivered no sample for 4 sample periods (at least 100 ms) at some time since the previous status. | */
+   KF_UNIT_STATUS_FLAGS_SENSOR_FAULT=4, /* Sensor 0, granted a rate, delivered no sample for 4 sample periods (at least 100 ms) at some time since the previous status; in two-sensor mode outside HIL mode, sensor 1 too. | */
    KF_UNIT_STATUS_FLAGS_HIL=8, /* Sensor input comes from HIL_SENSOR messages (simulation), not from the sensors. | */
-   KF_UNIT_STATUS_FLAGS_LOW_BATTERY=16, /* Battery below its warning threshold. Not set by the kinefuse firmware: it has no battery warning threshold (battery_voltage tells the measured voltage where the board measures it). | */
+   KF_UNIT_STATUS_FLAGS_LOW_BATTERY=16, /* The battery reading of this second is below the parameter KF_BATT_LOW_MV (cleared again 100 mV above it; never set where the board does not measure the battery or KF_BATT_LOW_MV is 0). A STATUSTEXT (severity WARNING) tells it once per fall. | */
    KF_UNIT_STATUS_FLAGS_CALIBRATED=32, /* A sensor calibration is stored on the unit and applied. | */
    KF_UNIT_STATUS_FLAGS_TX_OVERFLOW=64, /* The transmit buffer overflowed since the previous status (see frames_dropped). | */
    KF_UNIT_STATUS_FLAGS_STORAGE_ERROR=128, /* Loading or saving the stored configuration failed since the previous status (at boot: the load); parameter changes may be lost. A STATUSTEXT (severity ERROR) tells it too. | */
