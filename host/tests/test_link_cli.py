@@ -129,7 +129,7 @@ def test_params_command(run):
     assert code == 0, err
     assert json.loads(stdout) == {"unit": 5, "params": {"KF_UNIT_ID": 5, "KF_RATE_HZ": 100, "KF_ORI_RATE_HZ": 100,
                                                         "KF_FILTER": 1, "KF_MAG_ENABLE": 1, "KF_ACC_TAU_S": 3.0,
-                                                        "KF_SERIAL_NO": 0x4B460001}}
+                                                        "KF_SERIAL_NO": 0x4B460001, "KF_BATT_LOW_MV": 3400}}
     code, stdout, _ = run("params", "--port", "fake:unit=5", "--set", "KF_ACC_TAU_S=1.5", "--get", "KF_FILTER",
                           "--json")
     assert json.loads(stdout) == {"unit": 5, "set": {"KF_ACC_TAU_S": 1.5}, "get": {"KF_FILTER": 1}}
